@@ -1,0 +1,197 @@
+#include "body/procedural_body.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace t2imu {
+
+using namespace smpl22;
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+
+namespace {
+
+// Fractions of stature (see the header). Trunk joint heights are SMPL's mean shape divided by its stature.
+constexpr double kAnkleHeight = 0.039, kKneeHeight = 0.285, kHipHeight = 0.530, kShoulderHeight = 0.818;
+constexpr double kUpperArm = 0.186, kForearm = 0.146, kFootLength = 0.152;
+constexpr double kPelvisHeight = 0.575, kSpine1Height = 0.640, kSpine2Height = 0.720, kSpine3Height = 0.755;
+constexpr double kNeckHeight = 0.860, kHeadHeight = 0.920, kCollarHeight = 0.820;
+// The ball of the foot (SMPL's foot joint) lies 2/3 of the foot length ahead of the ankle's vertical, 1.2 % of
+// stature above the floor.
+constexpr double kBallForward = 0.66 * kFootLength, kBallHeight = 0.012;
+
+struct SexFractions {
+    double hip_separation, shoulder_separation, collar_offset;  // fractions of stature
+    // de Leva (1996) Table 4, % of body mass.
+    double head, upper_trunk, middle_trunk, lower_trunk, upper_arm, forearm, hand, thigh, shank, foot;
+};
+constexpr SexFractions kMale = {0.100, 0.220, 0.035, 6.94, 15.96, 16.33, 11.17, 2.71, 1.62, 0.61, 14.16, 4.33, 1.37};
+constexpr SexFractions kFemale = {0.110, 0.200, 0.033, 6.68, 15.45, 14.65, 12.47, 2.55, 1.38, 0.56, 14.78, 4.81, 1.29};
+
+// Depth/width ratio and distal/proximal taper of each limb's frustum.
+struct Form { double depth_over_width, taper; };
+Form limb_form(int s) {
+    switch (s) {
+        case left_hip: case right_hip: return {1.0, 0.65};        // thigh
+        case left_knee: case right_knee: return {1.0, 0.55};      // shank
+        case left_ankle: case right_ankle: return {0.55, 0.85};   // foot: flat
+        case left_shoulder: case right_shoulder: return {1.0, 0.80};
+        default: return {0.75, 0.70};                             // forearm: flatter at the wrist
+    }
+}
+
+double limb_mass_percent(int s, const SexFractions& m) {
+    switch (s) {
+        case left_hip: case right_hip: return m.thigh;
+        case left_knee: case right_knee: return m.shank;
+        case left_ankle: case right_ankle: return m.foot;
+        case left_shoulder: case right_shoulder: return m.upper_arm;
+        case left_elbow: case right_elbow: return m.forearm + m.hand;
+        default: return 0;
+    }
+}
+
+// Trunk and head sections (half-width, half-depth as fractions of stature) of a body with BMI 22: the trunk
+// holds organs of irregular density, so its size is set from typical adult breadths and depths (rounded
+// survey-scale magnitudes: hip breadth ~0.19 H, waist depth ~0.12 H, chest depth ~0.14 H) rather than from
+// its mass; section areas then grow in proportion to BMI / 22.
+struct Section { double half_width, half_depth, taper; };
+Section trunk_section(int s, Sex sex) {
+    const bool f = sex == Sex::female;
+    switch (s) {
+        case pelvis: return {f ? 0.1025 : 0.0955, 0.065, 1.0};
+        case spine1: return {f ? 0.080 : 0.0825, 0.060, 1.05};
+        case spine2: return {f ? 0.085 : 0.0875, 0.0675, 1.05};
+        case spine3: return {f ? 0.0875 : 0.095, 0.070, 0.85};
+        case neck: return {0.045, 0.055, 1.0};  // head and neck; the head's size does not follow BMI
+        default: return {0.026, 0.026, 1.0};   // collars: a shoulder's thickness
+    }
+}
+
+Joints22 rest_skeleton(double H, const SexFractions& m) {
+    Joints22 x;
+    const double hip = m.hip_separation * H / 2, shoulder = m.shoulder_separation * H / 2;
+    const double collar = m.collar_offset * H;
+    x[pelvis] = {0, kPelvisHeight * H, 0};
+    x[spine1] = {0, kSpine1Height * H, 0};
+    x[spine2] = {0, kSpine2Height * H, 0};
+    x[spine3] = {0, kSpine3Height * H, 0};
+    x[neck] = {0, kNeckHeight * H, 0};
+    x[head] = {0, kHeadHeight * H, 0};
+    for (int side = 0; side < 2; ++side) {
+        const double sx = side == 0 ? 1.0 : -1.0;  // left is +X
+        const int h = side == 0 ? left_hip : right_hip, k = side == 0 ? left_knee : right_knee;
+        const int a = side == 0 ? left_ankle : right_ankle, f = side == 0 ? left_foot : right_foot;
+        const int c = side == 0 ? left_collar : right_collar, s = side == 0 ? left_shoulder : right_shoulder;
+        const int e = side == 0 ? left_elbow : right_elbow, w = side == 0 ? left_wrist : right_wrist;
+        x[static_cast<size_t>(h)] = {sx * hip, kHipHeight * H, 0};
+        x[static_cast<size_t>(k)] = {sx * hip, kKneeHeight * H, 0};
+        x[static_cast<size_t>(a)] = {sx * hip, kAnkleHeight * H, 0};
+        x[static_cast<size_t>(f)] = {sx * hip, kBallHeight * H, kBallForward * H};
+        x[static_cast<size_t>(c)] = {sx * collar, kCollarHeight * H, 0};
+        x[static_cast<size_t>(s)] = {sx * shoulder, kShoulderHeight * H, 0};
+        x[static_cast<size_t>(e)] = {sx * shoulder, (kShoulderHeight - kUpperArm) * H, 0};
+        x[static_cast<size_t>(w)] = {sx * shoulder, (kShoulderHeight - kUpperArm - kForearm) * H, 0};
+    }
+    return x;
+}
+
+// Cross-section axes of a segment in rest coordinates: front (u) and the second axis (v: left, or up for a
+// segment that runs sideways).
+void section_axes(const Vector3d& l, Vector3d* u, Vector3d* v) {
+    *u = (Vector3d::UnitZ() - Vector3d::UnitZ().dot(l) * l).normalized();
+    Vector3d side = Vector3d::UnitX() - Vector3d::UnitX().dot(l) * l - Vector3d::UnitX().dot(*u) * *u;
+    if (side.norm() < 0.3) side = Vector3d::UnitY() - Vector3d::UnitY().dot(l) * l - Vector3d::UnitY().dot(*u) * *u;
+    *v = side.normalized();
+}
+
+}  // namespace
+
+ProceduralBody::ProceduralBody(const BodySpec& spec) : spec_(spec) {
+    if (!(spec.height_m > 0.5 && spec.height_m < 2.5)) throw Error("body " + spec.name, "height", "0.5 to 2.5 m", std::to_string(spec.height_m));
+    if (!(spec.mass_kg > 10 && spec.mass_kg < 300)) throw Error("body " + spec.name, "mass", "10 to 300 kg", std::to_string(spec.mass_kg));
+    const double H = spec.height_m;
+    const SexFractions& m = spec.sex == Sex::male ? kMale : kFemale;
+    rest_ = rest_skeleton(H, m);
+    axes_ = rest_axes(rest_);
+    double percent_sum = 0;  // de Leva's columns sum to 100 +- 0.01 after rounding
+    for (int k = 0; k < kNumJoints; ++k) percent_sum += limb_mass_percent(k, m);
+    percent_sum += m.head + m.upper_trunk + m.middle_trunk + m.lower_trunk;
+    const double bmi_area = spec.mass_kg / (H * H) / 22.0;
+    for (int s = 0; s < kNumJoints; ++s) {
+        SegmentShape& shape = shapes_[static_cast<size_t>(s)];
+        const SegmentDef& d = kSegments[static_cast<size_t>(s)];
+        if (d.rule == TwistRule::leaf) continue;
+        shape.length = s == neck ? H - rest_[neck].y() : (rest_[static_cast<size_t>(d.distal)] - rest_[static_cast<size_t>(s)]).norm();
+        const double percent = limb_mass_percent(s, m);
+        if (percent > 0) {
+            // Frustum volume pi a b L (1 + k + k^2) / 3 with a = r b holds the limb's mass at kDensity.
+            const Form form = limb_form(s);
+            const double k = form.taper, frustum = (1 + k + k * k) / 3.0;
+            shape.mass_kg = spec.mass_kg * percent / percent_sum;
+            shape.taper = k;
+            shape.half_width = std::sqrt(shape.mass_kg / kDensity / (M_PI * form.depth_over_width * shape.length * frustum));
+            shape.half_depth = form.depth_over_width * shape.half_width;
+        } else {
+            const Section sec = trunk_section(s, spec.sex);
+            const double grow = (s == neck || s == left_collar || s == right_collar) ? 1.0 : std::sqrt(bmi_area);
+            shape.taper = sec.taper;
+            shape.half_width = sec.half_width * H * grow;
+            shape.half_depth = sec.half_depth * H * grow;
+        }
+    }
+}
+
+double ProceduralBody::vertex_height() const { return rest_[neck].y() + shapes_[neck].length; }
+
+double ProceduralBody::limb_volume_m3() const {
+    double v = 0;
+    for (int s = 0; s < kNumJoints; ++s) {
+        const SegmentShape& sh = shapes_[static_cast<size_t>(s)];
+        if (sh.mass_kg <= 0) continue;  // trunk, head, collars and leaves
+        const double k = sh.taper;
+        v += M_PI * sh.half_depth * sh.half_width * sh.length * (1 + k + k * k) / 3.0;
+    }
+    return v;
+}
+
+SurfacePoint ProceduralBody::surface_point(int segment, double along, double around) const {
+    if (segment < 0 || segment >= kNumJoints) throw Error("body " + spec_.name, "segment", "0..21", std::to_string(segment));
+    // Leaves carry no surface of their own: a point on a leaf is a point on its parent's frustum.
+    if (kSegments[static_cast<size_t>(segment)].rule == TwistRule::leaf) segment = kSegments[static_cast<size_t>(segment)].parent;
+    const size_t s = static_cast<size_t>(segment);
+    const SegmentShape& sh = shapes_[s];
+    const Vector3d l = axes_.long_axis[s];
+    Vector3d u, v;
+    section_axes(l, &u, &v);
+    const double scale = 1 + (sh.taper - 1) * std::clamp(along, 0.0, 1.0);
+    const double a = sh.half_depth * scale, b = sh.half_width * scale;
+    const double c = std::cos(around), sn = std::sin(around);
+    const double length = s == neck ? sh.length : (rest_[static_cast<size_t>(kSegments[s].distal)] - rest_[s]).norm();
+    SurfacePoint p;
+    p.position = rest_[s] + along * length * l + a * c * u + b * sn * v;
+    p.normal = (c / a * u + sn / b * v).normalized();  // gradient of the ellipse; the taper's slope is ignored
+    return p;
+}
+
+SurfacePoint ProceduralBody::vertex_point(int vertex) const {
+    throw Error("body " + spec_.name, "vertex " + std::to_string(vertex), "an SMPL body (procedural bodies have no vertices)");
+}
+
+BodyAnchor ProceduralBody::anchor(int segment, const SurfacePoint& p) const {
+    BodyAnchor a;
+    a.segment = segment;
+    a.rest_position = p.position;
+    return a;
+}
+
+void ProceduralBody::pose_anchor(const BodyAnchor& a, const PosedFrame& frame, Vector3d* position, Matrix3d* rotation) const {
+    const size_t s = static_cast<size_t>(a.segment);
+    const Matrix3d& r = frame.rotation[s];
+    *position = frame.joints[s] + r * (a.rest_position - rest_[s]);
+    *rotation = r;
+}
+
+}  // namespace t2imu

@@ -1,0 +1,209 @@
+#include "imu/placement.hpp"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <random>
+#include <set>
+#include <toml++/toml.h>
+
+#include "core/error.hpp"
+
+namespace t2imu {
+
+using namespace smpl22;
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+
+namespace {
+
+SensorPlacement place(const char* position, int segment, double along, double around, const char* x, const char* y,
+                      const char* z, const char* note) {
+    SensorPlacement p;
+    p.position = position;
+    p.segment = segment;
+    p.along = along;
+    p.around_deg = around;
+    p.axis[0] = x;
+    p.axis[1] = y;
+    p.axis[2] = z;
+    p.note = note;
+    return p;
+}
+
+const char* kPhone = "smartphone upright, screen out (Android axes); placement per RealWorld's position name";
+const char* kEstimated = "up axis estimated from the real data's mean gravity while walking; z out of the skin assumed";
+
+std::vector<SensorPlacement> realworld_set() {
+    return {
+        place("chest", spine3, 0.3, 0, "", "up", "out", kPhone),
+        place("left_forearm", left_elbow, 0.85, 90, "distal", "", "out", "watch on the back of the wrist; side not given by the release"),
+        place("head", neck, 1.25, 90, "", "up", "out", "strapped to the side of the head; side not given by the release"),
+        place("left_shin", left_knee, 0.4, 90, "", "proximal", "out", kPhone),
+        place("left_thigh", left_hip, 0.4, 90, "", "proximal", "out", kPhone),
+        place("left_upperarm", left_shoulder, 0.45, 90, "", "proximal", "out", kPhone),
+        place("waist", pelvis, 0.3, 0, "", "up", "out", kPhone),
+    };
+}
+
+std::vector<SensorPlacement> builtin(const std::string& name) {
+    if (name == "realworld") return realworld_set();
+    if (name == "sisfall")
+        return {place("waist", pelvis, 0.3, 0, "", "down", "front", "belt, front; -y up estimated from mean gravity (0.98 g)")};
+    if (name == "umafall")
+        return {
+            place("ankle", right_knee, 0.9, -90, "proximal", "", "out", kEstimated),
+            place("waist", pelvis, 0.3, 0, "up", "", "out", kEstimated),
+            place("chest", spine3, 0.4, 0, "up", "", "out", kEstimated),
+            place("wrist", left_elbow, 0.9, 90, "distal", "", "out", "x along the forearm and z out of the skin assumed: the data's mean gravity is inconsistent across subjects"),
+        };
+    if (name == "hugadb") {
+        std::vector<SensorPlacement> s;
+        const int segs[3][2] = {{left_ankle, right_ankle}, {left_knee, right_knee}, {left_hip, right_hip}};
+        const char* names[3][2] = {{"left_foot", "right_foot"}, {"left_shin", "right_shin"}, {"left_thigh", "right_thigh"}};
+        for (int k = 0; k < 3; ++k)
+            for (int side = 0; side < 2; ++side)
+                s.push_back(place(names[k][side], segs[k][side], 0.5, 0, "distal", "", "out", "front of the segment (top of the foot); -x up estimated from mean gravity"));
+        return s;
+    }
+    return {};
+}
+
+int joint_index(const std::string& name, const std::string& file) {
+    for (int j = 0; j < kNumJoints; ++j)
+        if (name == kJointNames[static_cast<size_t>(j)]) return j;
+    throw Error(file, "segment", "an SMPL-22 joint name (pelvis, left_hip, ..., right_wrist)", name);
+}
+
+const std::set<std::string> kAxisWords = {"up", "down", "left", "right", "front", "back", "out", "in", "distal", "proximal"};
+
+void check_axes(const SensorPlacement& p, const std::string& file) {
+    int given = 0;
+    for (const std::string& a : p.axis) {
+        if (a.empty()) continue;
+        ++given;
+        if (!kAxisWords.count(a)) throw Error(file, p.position + " axis", "up|down|left|right|front|back|out|in|distal|proximal", a);
+    }
+    if (given != 2) throw Error(file, p.position + " axes", "exactly two of x, y, z", std::to_string(given));
+}
+
+Vector3d axis_direction(const std::string& word, const Vector3d& normal, const Vector3d& distal) {
+    if (word == "up") return Vector3d::UnitY();
+    if (word == "down") return -Vector3d::UnitY();
+    if (word == "left") return Vector3d::UnitX();
+    if (word == "right") return -Vector3d::UnitX();
+    if (word == "front") return Vector3d::UnitZ();
+    if (word == "back") return -Vector3d::UnitZ();
+    if (word == "out") return normal;
+    if (word == "in") return -normal;
+    if (word == "distal") return distal;
+    return -distal;  // proximal
+}
+
+}  // namespace
+
+const std::vector<std::string>& builtin_placement_set_names() {
+    static const std::vector<std::string> names = {"realworld", "sisfall", "umafall", "hugadb"};
+    return names;
+}
+
+PlacementSet builtin_placement_set(const std::string& name) {
+    PlacementSet set{name, builtin(name)};
+    if (set.sensors.empty()) throw Error("--sensors", "set", "realworld, sisfall, umafall, hugadb or a .toml file", name);
+    for (const SensorPlacement& p : set.sensors) check_axes(p, name);
+    return set;
+}
+
+PlacementSet read_placement_toml(const std::string& path) {
+    toml::table doc;
+    try {
+        doc = toml::parse_file(path);
+    } catch (const toml::parse_error& e) {
+        throw Error(path, "toml", "a valid TOML file", std::string(e.description()));
+    }
+    PlacementSet set;
+    set.name = doc["name"].value_or(std::string("custom"));
+    const toml::array* sensors = doc["sensor"].as_array();
+    if (!sensors || sensors->empty()) throw Error(path, "sensor", "at least one [[sensor]] table");
+    for (const toml::node& node : *sensors) {
+        const toml::table* t = node.as_table();
+        if (!t) throw Error(path, "sensor", "tables ([[sensor]])");
+        SensorPlacement p;
+        p.position = (*t)["position"].value_or(std::string());
+        if (p.position.empty()) throw Error(path, "position", "a position name in every [[sensor]]");
+        const std::string segment = (*t)["segment"].value_or(std::string());
+        p.segment = joint_index(segment, path);
+        p.along = (*t)["along"].value_or(0.5);
+        p.around_deg = (*t)["around"].value_or(0.0);
+        p.vertex = static_cast<int>((*t)["vertex"].value_or(int64_t{-1}));
+        p.note = (*t)["note"].value_or(std::string("custom placement from ") + path);
+        const char* keys[3] = {"x", "y", "z"};
+        for (int a = 0; a < 3; ++a) p.axis[a] = (*t)[keys[a]].value_or(std::string());
+        if (!std::isfinite(p.along) || p.along < -0.5 || p.along > 2.0) throw Error(path, p.position + " along", "-0.5 to 2", std::to_string(p.along));
+        if (!std::isfinite(p.around_deg)) throw Error(path, p.position + " around", "degrees");
+        check_axes(p, path);
+        set.sensors.push_back(p);
+    }
+    return set;
+}
+
+std::vector<SensorPlacement> parse_sensor_sets(const std::string& text) {
+    std::vector<SensorPlacement> out;
+    std::set<std::string> seen;
+    size_t start = 0;
+    while (start <= text.size()) {
+        const size_t comma = text.find(',', start);
+        const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        const bool toml = item.size() > 5 && item.compare(item.size() - 5, 5, ".toml") == 0;
+        const PlacementSet set = toml ? read_placement_toml(item) : builtin_placement_set(item);
+        for (const SensorPlacement& p : set.sensors) {
+            if (!seen.insert(p.position).second) throw Error("--sensors", "position", "distinct positions across the sets", p.position + " twice");
+            out.push_back(p);
+        }
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return out;
+}
+
+SensorMount mount_sensor(const BodyModel& body, const SensorPlacement& placement, const Matrix3d& mounting_error) {
+    SensorMount m;
+    m.placement = placement;
+    SurfacePoint surface;
+    if (placement.vertex >= 0) {
+        if (body.spec().kind != BodySpec::Kind::smpl) throw Error("--sensors", placement.position + " vertex", "an SMPL body (--body smpl:FILE)");
+        surface = body.vertex_point(placement.vertex);
+    } else {
+        surface = body.surface_point(placement.segment, placement.along, placement.around_deg * M_PI / 180);
+    }
+    m.anchor = body.anchor(placement.segment, surface);
+    const RestAxes axes = rest_axes(body.rest_joints());
+    const Vector3d distal = axes.long_axis[static_cast<size_t>(placement.segment)];
+    int first = -1, second = -1;
+    for (int a = 0; a < 3; ++a)
+        if (!placement.axis[a].empty()) (first < 0 ? first : second) = a;
+    const Vector3d u = axis_direction(placement.axis[first], surface.normal, distal).normalized();
+    Vector3d v = axis_direction(placement.axis[second], surface.normal, distal);
+    v = (v - v.dot(u) * u);
+    if (v.norm() < 1e-6) throw Error("--sensors", placement.position + " axes", "two axes that are not parallel on this body");
+    v.normalize();
+    Matrix3d r;
+    r.col(first) = u;
+    r.col(second) = v;
+    const int third = 3 - first - second;
+    // Right-handed: x = y x z, y = z x x, z = x x y.
+    r.col(third) = r.col((third + 1) % 3).cross(r.col((third + 2) % 3));
+    m.rest_from_sensor = r * mounting_error;
+    return m;
+}
+
+Matrix3d random_mounting_error(double max_deg, uint64_t seed) {
+    if (max_deg <= 0) return Matrix3d::Identity();
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> normal;
+    Vector3d axis(normal(rng), normal(rng), normal(rng));
+    axis.normalize();
+    std::uniform_real_distribution<double> angle(-max_deg, max_deg);
+    return Eigen::AngleAxisd(angle(rng) * M_PI / 180, axis).toRotationMatrix();
+}
+
+}  // namespace t2imu

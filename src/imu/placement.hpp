@@ -1,0 +1,69 @@
+// Where virtual sensors sit on a body and how their axes lie: the placement sets of the real data sets we
+// compare with, and custom sets from TOML.
+//
+// A placement names a segment (by its proximal joint, segments.hpp), a height along it (0 = proximal joint,
+// 1 = distal joint), an angle around it (degrees; 0 = front, +90 = the body's left, see procedural_body.hpp)
+// and two of the sensor's axes in words; the third completes a right-handed frame. Axis words:
+//   up, down, left, right, front, back   rest body directions (standing, facing +Z, left = +X)
+//   out, in                              the skin's outward / inward normal at the sensor
+//   distal, proximal                     along the segment, away from / towards the trunk
+// The first named axis is taken exactly, the second is made perpendicular to it.
+//
+// Built-in sets and their sources (each sensor's `note` says what is documented and what is estimated):
+//   realworld  RealWorld HAR (Sztyler & Stuckenschmidt 2016): smartphones (Android axes: x right across the
+//              screen, y up along it, z out of the screen) upright with the screen facing out, and a watch on
+//              the forearm. The release does not give the side of the limb sensors: placed on the left.
+//   sisfall    SisFall: one board at the waist on the belt, front. Axes not documented: y points down and z
+//              forwards, estimated from the data's mean gravity direction while walking (-y: 0.98 of g).
+//   umafall    UMAFall: SensorTags at ankle, waist, chest, wrist; side not given (right ankle, left wrist
+//              assumed). x points up along the body, estimated from the mean gravity while walking (ankle,
+//              chest, waist: +x 0.97-1.00 of g); z out of the skin assumed (a tag lies flat on the skin).
+//   hugadb     HuGaDB: left/right foot, shin, thigh, on the front of each segment (top of the foot). x points
+//              distally, estimated from the mean gravity while walking (-x 0.94-1.00 of g on thighs and
+//              shins); z out of the skin assumed.
+#pragma once
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "body/body_model.hpp"
+
+namespace t2imu {
+
+struct SensorPlacement {
+    std::string position;  // the canonical position name the output uses: "left_shin", "waist"
+    int segment = 0;       // proximal joint of the segment
+    double along = 0.5;
+    double around_deg = 0;
+    std::string axis[3];   // words for x, y, z; exactly one is empty
+    int vertex = -1;       // SMPL bodies only: this skin vertex instead of along/around
+    std::string note;      // where the mounting comes from
+};
+
+struct PlacementSet {
+    std::string name;
+    std::vector<SensorPlacement> sensors;
+};
+
+const std::vector<std::string>& builtin_placement_set_names();
+PlacementSet builtin_placement_set(const std::string& name);
+// A custom set: `name = "..."` and [[sensor]] tables with position, segment (a joint name), along, around
+// (degrees), two of x/y/z, optional vertex and note. Errors name the file and the field.
+PlacementSet read_placement_toml(const std::string& path);
+// "--sensors realworld,hugadb" or a .toml path (or a mix); positions must be distinct across the sets.
+std::vector<SensorPlacement> parse_sensor_sets(const std::string& text);
+
+// A placement resolved on one body: its anchor on the skin and the sensor's axes in rest body coordinates
+// (columns x, y, z), optionally turned by a mounting error.
+struct SensorMount {
+    SensorPlacement placement;
+    BodyAnchor anchor;
+    Eigen::Matrix3d rest_from_sensor;
+};
+SensorMount mount_sensor(const BodyModel& body, const SensorPlacement& placement,
+                         const Eigen::Matrix3d& mounting_error = Eigen::Matrix3d::Identity());
+
+// A random rotation about a uniformly distributed axis by an angle uniform in [-max_deg, max_deg].
+Eigen::Matrix3d random_mounting_error(double max_deg, uint64_t seed);
+
+}  // namespace t2imu

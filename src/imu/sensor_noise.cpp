@@ -1,0 +1,126 @@
+#include "imu/sensor_noise.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <sstream>
+#include <vector>
+
+#include "core/error.hpp"
+
+namespace t2imu {
+
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+
+namespace {
+
+constexpr double kG = 9.80665, kDeg = M_PI / 180;
+
+SensorNoiseModel preset(const std::string& name) {
+    SensorNoiseModel m;
+    m.name = name;
+    if (name == "none") return m;
+    if (name != "smartphone" && name != "hugadb") throw Error("--noise", "model", "none, smartphone or hugadb", name);
+    m.acc_noise_density = 180e-6 * kG;
+    m.gyr_noise_density = 0.007 * kDeg;
+    m.acc_bias_sd = 0.040 * kG;
+    m.gyr_bias_sd = 1.0 * kDeg;
+    m.acc_bias_walk = 1e-4;
+    m.gyr_bias_walk = 1e-5;
+    m.scale_sd = 0.01;
+    m.misalignment_sd_rad = 0.5 * kDeg;
+    m.acc_range = (name == "hugadb" ? 2 : 8) * kG;
+    m.gyr_range = 2000 * kDeg;
+    m.bits = 16;
+    return m;
+}
+
+void set_field(SensorNoiseModel& m, const std::string& key, double v) {
+    if (key == "acc_noise_density") m.acc_noise_density = v;
+    else if (key == "gyr_noise_density") m.gyr_noise_density = v;
+    else if (key == "acc_bias_sd") m.acc_bias_sd = v;
+    else if (key == "gyr_bias_sd") m.gyr_bias_sd = v;
+    else if (key == "acc_bias_walk") m.acc_bias_walk = v;
+    else if (key == "gyr_bias_walk") m.gyr_bias_walk = v;
+    else if (key == "scale_sd") m.scale_sd = v;
+    else if (key == "misalignment_deg") m.misalignment_sd_rad = v * kDeg;
+    else if (key == "acc_range_g") m.acc_range = v * kG;
+    else if (key == "gyr_range_dps") m.gyr_range = v * kDeg;
+    else if (key == "bits") m.bits = static_cast<int>(v);
+    else throw Error("--noise", key, "a field of the noise model (acc_noise_density, gyr_noise_density, acc_bias_sd, "
+                     "gyr_bias_sd, acc_bias_walk, gyr_bias_walk, scale_sd, misalignment_deg, acc_range_g, gyr_range_dps, bits)");
+}
+
+struct AxisErrors {
+    Matrix3d gain;  // (I + scale)(I + misalignment)
+    Vector3d bias;
+};
+
+AxisErrors draw_axis_errors(const SensorNoiseModel& m, double bias_sd, std::mt19937_64& rng) {
+    std::normal_distribution<double> n;
+    Matrix3d scale = Matrix3d::Identity(), mis = Matrix3d::Identity();
+    for (int a = 0; a < 3; ++a) scale(a, a) += m.scale_sd * n(rng);
+    for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b)
+            if (a != b) mis(a, b) = m.misalignment_sd_rad * n(rng);  // small angles: sin(x) ~ x
+    Vector3d bias(n(rng), n(rng), n(rng));
+    return {scale * mis, bias_sd * bias};
+}
+
+double quantise_clip(double v, double range, int bits) {
+    if (range > 0) v = std::clamp(v, -range, range);
+    if (bits > 0 && range > 0) {
+        const double lsb = 2 * range / std::ldexp(1.0, bits);
+        v = std::round(v / lsb) * lsb;
+    }
+    return v;
+}
+
+void corrupt(std::vector<Vector3d>& x, const AxisErrors& e, double density, double walk, double range, int bits,
+             double rate, std::mt19937_64& rng) {
+    std::normal_distribution<double> n;
+    const double white_sd = density * std::sqrt(rate), walk_sd = walk / std::sqrt(rate);
+    Vector3d bias = e.bias;
+    for (Vector3d& v : x) {
+        v = e.gain * v + bias + white_sd * Vector3d(n(rng), n(rng), n(rng));
+        for (int a = 0; a < 3; ++a) v[a] = quantise_clip(v[a], range, bits);
+        bias += walk_sd * Vector3d(n(rng), n(rng), n(rng));
+    }
+}
+
+}  // namespace
+
+SensorNoiseModel parse_noise_model(const std::string& text) {
+    std::stringstream in(text);
+    std::string part;
+    std::getline(in, part, ',');
+    SensorNoiseModel m = preset(part);
+    while (std::getline(in, part, ',')) {
+        const size_t eq = part.find('=');
+        if (eq == std::string::npos) throw Error("--noise", part, "key=value");
+        size_t used = 0;
+        double v = 0;
+        try {
+            v = std::stod(part.substr(eq + 1), &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used == 0 || used != part.size() - eq - 1 || !std::isfinite(v) || v < 0)
+            throw Error("--noise", part.substr(0, eq), "a non-negative number", part.substr(eq + 1));
+        set_field(m, part.substr(0, eq), v);
+    }
+    if (m.name == "none" && text != "none") throw Error("--noise", "none", "no overrides");
+    return m;
+}
+
+void apply_sensor_noise(const SensorNoiseModel& m, uint64_t seed, ImuSignals* s) {
+    if (!m.enabled()) return;
+    std::mt19937_64 rng(seed);
+    const AxisErrors acc = draw_axis_errors(m, m.acc_bias_sd, rng);
+    const AxisErrors gyr = draw_axis_errors(m, m.gyr_bias_sd, rng);
+    corrupt(s->acc, acc, m.acc_noise_density, m.acc_bias_walk, m.acc_range, m.bits, s->rate_hz, rng);
+    corrupt(s->gyr, gyr, m.gyr_noise_density, m.gyr_bias_walk, m.gyr_range, m.bits, s->rate_hz, rng);
+}
+
+}  // namespace t2imu

@@ -1,0 +1,43 @@
+// An optional, seeded error model of a MEMS IMU, applied to ideal signals (off by default).
+//
+// Per recording, in this order (a real sensor's signal chain): the true vector is multiplied by
+// (I + scale) (I + misalignment) (per-axis scale errors, small cross-axis coupling), a bias is added (a constant
+// drawn once plus a random walk), white noise is added, the result is clipped to the range and rounded to
+// the resolution (LSB). Noise densities are in the datasheet units' SI equivalents: m/s^2/sqrt(Hz) and
+// rad/s/sqrt(Hz); at sample rate fs the white noise has standard deviation density * sqrt(fs) (the bandwidth of
+// an unfiltered output is fs/2 and the density is one-sided).
+//
+// Presets:
+//   smartphone  a consumer 6-axis IMU as in the phones of RealWorld (datasheet-typical values of the
+//               BMI160/LSM6DS3 class): acc 180 ug/sqrt(Hz), gyro 0.007 deg/s/sqrt(Hz), acc bias sd 40 mg, gyro
+//               bias sd 1 deg/s, scale sd 1 %, misalignment sd 0.5 deg, +-8 g, +-2000 deg/s, 16 bit.
+//   hugadb      the HuGaDB setting: the smartphone chip at +-2 g (clips fast walking at the feet).
+// `--noise smartphone,acc_range_g=16,seed=3` overrides single fields.
+#pragma once
+#include <cstdint>
+#include <string>
+
+#include "imu/imu_synthesis.hpp"
+
+namespace t2imu {
+
+struct SensorNoiseModel {
+    std::string name = "none";
+    double acc_noise_density = 0, gyr_noise_density = 0;  // m/s^2/sqrt(Hz), rad/s/sqrt(Hz)
+    double acc_bias_sd = 0, gyr_bias_sd = 0;              // m/s^2, rad/s (constant per recording)
+    double acc_bias_walk = 0, gyr_bias_walk = 0;          // m/s^3/sqrt(Hz), rad/s^2/sqrt(Hz)
+    double scale_sd = 0, misalignment_sd_rad = 0;
+    double acc_range = 0, gyr_range = 0;                  // +- full scale, m/s^2 and rad/s; 0 = unlimited
+    int bits = 0;                                         // resolution over the full range; 0 = none
+
+    bool enabled() const { return name != "none"; }
+};
+
+// "none", a preset name, or a preset followed by ,key=value overrides (keys as the fields, with acc_range_g
+// and gyr_range_dps in g and deg/s). Errors name "--noise".
+SensorNoiseModel parse_noise_model(const std::string& text);
+
+// Applies the model in place. Deterministic in `seed`.
+void apply_sensor_noise(const SensorNoiseModel& model, uint64_t seed, ImuSignals* signals);
+
+}  // namespace t2imu

@@ -1,0 +1,137 @@
+#include "imu/virtual_imu.hpp"
+
+#include <Eigen/Geometry>
+
+#include "body/procedural_body.hpp"
+#include "core/error.hpp"
+
+namespace t2imu {
+
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+
+namespace {
+
+// Stable per-(seed, body, sensor) seeds: FNV-1a of the names mixed with the user's seed.
+uint64_t derived_seed(uint64_t seed, const std::string& body, const std::string& position, const char* purpose) {
+    uint64_t h = 1469598103934665603ull ^ seed;
+    for (const std::string& s : {body, position, std::string(purpose)}) {
+        for (unsigned char c : s) h = (h ^ c) * 1099511628211ull;
+        h = (h ^ 0xff) * 1099511628211ull;
+    }
+    return h;
+}
+
+nlohmann::json vec(const Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+}  // namespace
+
+void check_motion_for_imu(const JointSequence& motion, const std::string& source) {
+    if (motion.num_joints != smpl22::kNumJoints) throw Error(source, "shape", "[F,22,3] joints", std::to_string(motion.num_joints) + " joints");
+    if (motion.num_frames < 4) throw Error(source, "frames", "at least 4 frames", std::to_string(motion.num_frames));
+    if (!(motion.fps > 0)) throw Error(source, "fps", "a positive frame rate", std::to_string(motion.fps));
+}
+
+BodySpec size_body_to_motion(const JointSequence& motion) {
+    const std::vector<Joints22> frames = joints22_frames(motion);
+    double leg = 0;
+    for (const Joints22& x : frames) leg += leg_length(x);
+    leg /= static_cast<double>(frames.size());
+    BodySpec b;
+    b.kind = BodySpec::Kind::none;
+    b.name = "none";
+    // Hip-knee-ankle is (0.530 - 0.039) of stature in the procedural body's table.
+    b.height_m = std::clamp(leg / (0.530 - 0.039), 0.6, 2.4);
+    b.mass_kg = 22.0 * b.height_m * b.height_m;
+    return b;
+}
+
+void sensor_track(const BodyModel& body, const FittedMotion& motion, const SensorMount& mount,
+                  std::vector<Vector3d>* position, std::vector<Quat>* orientation) {
+    position->resize(motion.frames.size());
+    orientation->resize(motion.frames.size());
+    for (size_t f = 0; f < motion.frames.size(); ++f) {
+        Matrix3d r;
+        body.pose_anchor(mount.anchor, motion.frames[f], &(*position)[f], &r);
+        (*orientation)[f] = Quat(Matrix3d(r * mount.rest_from_sensor));
+    }
+}
+
+BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& spec, const std::vector<SensorPlacement>& sensors,
+                            const VirtualImuOptions& options) {
+    BodyImu out;
+    const bool none = spec.kind == BodySpec::Kind::none;
+    out.body = none ? size_body_to_motion(motion) : spec;
+    BodySpec build = out.body;
+    if (none) build.kind = BodySpec::Kind::procedural;
+    const std::unique_ptr<BodyModel> body = make_body(build);
+    FitOptions fit;
+    fit.keep_input_joints = none;
+    fit.twist_smoothing_frames = options.twist_smoothing_frames;
+    const FittedMotion fitted = fit_body(motion, *body, fit);
+    out.leg_scale = fitted.leg_scale;
+    out.mean_error_mm = fitted.mean_error_mm;
+    out.max_error_mm = fitted.max_error_mm;
+    std::vector<Vector3d> p;
+    std::vector<Quat> q;
+    for (const SensorPlacement& placement : sensors) {
+        const Matrix3d jitter = random_mounting_error(options.mount_jitter_deg, derived_seed(options.seed, out.body.name, placement.position, "mount"));
+        out.mounts.push_back(mount_sensor(*body, placement, jitter));
+        sensor_track(*body, fitted, out.mounts.back(), &p, &q);
+        ImuSignals s = synthesize_imu(p, q, motion.fps, options.rate_hz);
+        apply_sensor_noise(options.noise, derived_seed(options.seed, out.body.name, placement.position, "noise"), &s);
+        out.signals.push_back(std::move(s));
+    }
+    return out;
+}
+
+nlohmann::json virtual_imu_meta(const std::vector<BodyImu>& bodies, const JointSequence& motion, const VirtualImuOptions& options,
+                                const std::string& input) {
+    nlohmann::json meta;
+    meta["input"] = input;
+    meta["frames"] = motion.num_frames;
+    meta["fps"] = motion.fps;
+    meta["rate_hz"] = options.rate_hz;
+    meta["samples"] = bodies.empty() || bodies[0].signals.empty() ? 0 : bodies[0].signals[0].t.size();
+    meta["frames_note"] = "world Y up, body facing +Z; acc = specific force in the sensor frame (m/s^2), gyr in rad/s";
+    meta["interpolant"] = "not-a-knot cubic spline of positions and of sign-continuous quaternions";
+    meta["mount_jitter_deg"] = options.mount_jitter_deg;
+    meta["seed"] = options.seed;
+    meta["noise"] = {{"model", options.noise.name}, {"acc_noise_density", options.noise.acc_noise_density},
+                     {"gyr_noise_density", options.noise.gyr_noise_density}, {"acc_bias_sd", options.noise.acc_bias_sd},
+                     {"gyr_bias_sd", options.noise.gyr_bias_sd}, {"acc_range", options.noise.acc_range},
+                     {"gyr_range", options.noise.gyr_range}, {"bits", options.noise.bits}};
+    meta["bodies"] = nlohmann::json::array();
+    for (const BodyImu& b : bodies) {
+        nlohmann::json body = {{"name", b.body.name}, {"height_m", b.body.height_m}, {"mass_kg", b.body.mass_kg},
+                               {"sex", sex_name(b.body.sex)}, {"leg_scale", b.leg_scale}};
+        body["kind"] = b.body.kind == BodySpec::Kind::smpl ? "smpl" : b.body.kind == BodySpec::Kind::none ? "none" : "procedural";
+        if (b.body.kind == BodySpec::Kind::smpl) body["smpl"] = {{"path", b.body.smpl_path}, {"betas", b.body.betas}};
+        nlohmann::json fit;
+        double mean_all = 0;
+        for (int j = 0; j < smpl22::kNumJoints; ++j) {
+            fit[smpl22::kJointNames[static_cast<size_t>(j)]] = {{"mean_mm", b.mean_error_mm[static_cast<size_t>(j)]},
+                                                                {"max_mm", b.max_error_mm[static_cast<size_t>(j)]}};
+            mean_all += b.mean_error_mm[static_cast<size_t>(j)] / smpl22::kNumJoints;
+        }
+        body["fit_error_mm"] = fit;
+        body["fit_error_mean_mm"] = mean_all;
+        nlohmann::json placements = nlohmann::json::array();
+        for (const SensorMount& m : b.mounts) {
+            const SensorPlacement& p = m.placement;
+            nlohmann::json pj = {{"position", p.position}, {"segment", smpl22::kJointNames[static_cast<size_t>(p.segment)]},
+                                 {"along", p.along}, {"around_deg", p.around_deg}, {"note", p.note},
+                                 {"axes_words", {p.axis[0], p.axis[1], p.axis[2]}},
+                                 {"rest_position_m", vec(m.anchor.rest_position)},
+                                 {"rest_axes", {{"x", vec(m.rest_from_sensor.col(0))}, {"y", vec(m.rest_from_sensor.col(1))},
+                                                {"z", vec(m.rest_from_sensor.col(2))}}}};
+            if (m.anchor.vertex >= 0) pj["vertex"] = m.anchor.vertex;
+            placements.push_back(pj);
+        }
+        body["placements"] = placements;
+        meta["bodies"].push_back(body);
+    }
+    return meta;
+}
+
+}  // namespace t2imu

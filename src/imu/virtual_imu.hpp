@@ -1,0 +1,53 @@
+// Joints -> bodies -> virtual sensors: the whole bodies/IMU stage for one motion.
+//
+// For each body: fit the body to the joints (fitting.hpp), mount every placement on its skin
+// (placement.hpp), follow each sensor's position and orientation through the motion, and turn those into
+// accelerometer and gyroscope signals at the output rate (imu_synthesis.hpp), optionally corrupted by the
+// sensor error model (sensor_noise.hpp). Random parts (mounting errors, noise) are seeded per body and sensor
+// from one seed, so the output does not depend on which other bodies or sensors were asked for.
+#pragma once
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "body/fitting.hpp"
+#include "imu/placement.hpp"
+#include "imu/sensor_noise.hpp"
+
+namespace t2imu {
+
+struct VirtualImuOptions {
+    double rate_hz = 50;
+    double mount_jitter_deg = 0;
+    uint64_t seed = 0;
+    SensorNoiseModel noise;
+    double twist_smoothing_frames = 0;
+};
+
+struct BodyImu {
+    BodySpec body;  // as used: --body none is given the height and mass it was sized to
+    double leg_scale = 1;
+    std::array<double, smpl22::kNumJoints> mean_error_mm{}, max_error_mm{};
+    std::vector<SensorMount> mounts;
+    std::vector<ImuSignals> signals;  // one per mount
+};
+
+// The procedural body `--body none` stands for: the input's own proportions decide its height (leg length over
+// the leg's share of stature); mass at BMI 22.
+BodySpec size_body_to_motion(const JointSequence& motion);
+
+// Refuses what the synthesis cannot use, naming `source`: a joint count other than 22, fewer than 4 frames.
+void check_motion_for_imu(const JointSequence& motion, const std::string& source);
+
+BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& body, const std::vector<SensorPlacement>& sensors,
+                            const VirtualImuOptions& options);
+
+// Sensor position (world, m) and orientation (world from sensor) in every frame of a fitted motion.
+void sensor_track(const BodyModel& body, const FittedMotion& motion, const SensorMount& mount,
+                  std::vector<Eigen::Vector3d>* position, std::vector<Quat>* orientation);
+
+// meta.json: bodies (height, mass, sex, fit error), placements with mountings, frames and rates, noise, seed.
+nlohmann::json virtual_imu_meta(const std::vector<BodyImu>& bodies, const JointSequence& motion, const VirtualImuOptions& options,
+                                const std::string& input);
+
+}  // namespace t2imu

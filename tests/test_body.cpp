@@ -1,0 +1,109 @@
+// Procedural bodies: the paper's presets, anthropometric construction, skin points; body specs.
+#include <gtest/gtest.h>
+
+#include "body/body_spec.hpp"
+#include "body/procedural_body.hpp"
+#include "core/error.hpp"
+
+using namespace t2imu;
+using namespace t2imu::smpl22;
+using Eigen::Vector3d;
+
+TEST(BodySpec, PaperEightMatchTable1) {
+    const std::vector<BodySpec> b = parse_body_specs("paper8");
+    ASSERT_EQ(b.size(), 8u);
+    EXPECT_EQ(b[0].name, "male_tall");
+    EXPECT_DOUBLE_EQ(b[0].height_m, 2.00);
+    EXPECT_DOUBLE_EQ(b[3].mass_kg, 111);
+    EXPECT_DOUBLE_EQ(b[6].height_m, 1.658);
+    EXPECT_DOUBLE_EQ(b[6].mass_kg, 69.2);
+    EXPECT_EQ(b[7].sex, Sex::female);
+    for (const BodySpec& s : b) {  // the table's range: 150-200 cm, 50-111 kg
+        EXPECT_GE(s.height_m, 1.50);
+        EXPECT_LE(s.height_m, 2.00);
+        EXPECT_GE(s.mass_kg, 50);
+        EXPECT_LE(s.mass_kg, 111);
+    }
+}
+
+TEST(BodySpec, ParsesMeasurementsPresetsAndRefusesNonsense) {
+    const std::vector<BodySpec> b = parse_body_specs("height=172,mass=70,sex=f+preset:male_short+none");
+    ASSERT_EQ(b.size(), 3u);
+    EXPECT_EQ(b[0].name, "h172_m70_f");
+    EXPECT_DOUBLE_EQ(b[0].height_m, 1.72);
+    EXPECT_EQ(b[0].sex, Sex::female);
+    EXPECT_EQ(b[1].name, "male_short");
+    EXPECT_EQ(b[2].kind, BodySpec::Kind::none);
+    const BodySpec smpl = parse_body_specs("smpl:/x/model.npz,betas=0.5;-1")[0];
+    EXPECT_EQ(smpl.smpl_path, "/x/model.npz");
+    EXPECT_EQ(smpl.betas, (std::vector<double>{0.5, -1}));
+    for (const char* bad : {"preset:giant", "height=172,mass=70", "height=abc,mass=70,sex=m", "height=900,mass=70,sex=m",
+                            "tall", "smpl:", "preset:male_tall+preset:male_tall"})
+        EXPECT_THROW(parse_body_specs(bad), Error) << bad;
+}
+
+TEST(ProceduralBody, PresetsHaveTheTablesHeightsAndMasses) {
+    for (const BodySpec& spec : paper_bodies()) {
+        const ProceduralBody body(spec);
+        EXPECT_NEAR(body.vertex_height(), spec.height_m, 1e-12) << spec.name;
+        double lowest = 1e9;
+        for (const Vector3d& j : body.rest_joints()) lowest = std::min(lowest, j.y());
+        EXPECT_GT(lowest, 0.0) << spec.name;                          // every joint above the floor
+        EXPECT_NEAR(body.rest_joints()[left_ankle].y(), 0.039 * spec.height_m, 1e-12);
+        // The limb frusta hold de Leva's limb mass shares at the model's density (hands in the forearms):
+        // male 2 x 24.80 %, female 2 x 25.37 % of 99.99 %.
+        const double share = spec.sex == Sex::male ? 2 * 24.80 / 100.0 : 2 * 25.37 / 99.99;
+        EXPECT_NEAR(body.limb_volume_m3() * ProceduralBody::kDensity, share * spec.mass_kg, 1e-9 * spec.mass_kg) << spec.name;
+    }
+}
+
+TEST(ProceduralBody, HeavierBodyOfTheSameHeightIsThicker) {
+    const ProceduralBody average(parse_body_specs("preset:male_average")[0]);
+    const ProceduralBody adipose(parse_body_specs("preset:male_adipose")[0]);
+    for (int s : {int(pelvis), int(spine2), int(left_hip), int(left_knee), int(left_shoulder)}) {
+        // Same length, cross-section area scaled by the mass ratio 111 / 85.8 (limbs: mass share; trunk: BMI).
+        EXPECT_DOUBLE_EQ(average.shape(s).length, adipose.shape(s).length);
+        const double area_ratio = adipose.shape(s).half_width * adipose.shape(s).half_depth /
+                                  (average.shape(s).half_width * average.shape(s).half_depth);
+        EXPECT_NEAR(area_ratio, 111 / 85.8, 1e-12);
+    }
+    // Plausible sizes for an average man: mid-thigh circumference 45-62 cm, hip depth 20-30 cm.
+    const SegmentShape& thigh = average.shape(left_hip);
+    const double mid = (1 + thigh.taper) / 2, a = thigh.half_depth * mid, b = thigh.half_width * mid;
+    const double circumference = M_PI * (3 * (a + b) - std::sqrt((3 * a + b) * (a + 3 * b)));  // Ramanujan
+    EXPECT_GT(circumference, 0.45);
+    EXPECT_LT(circumference, 0.62);
+    EXPECT_GT(2 * average.shape(pelvis).half_depth, 0.20);
+    EXPECT_LT(2 * average.shape(pelvis).half_depth, 0.30);
+}
+
+TEST(ProceduralBody, SkinPointsLieOnTheFrustumWithOutwardNormals) {
+    const ProceduralBody body(parse_body_specs("preset:female_average")[0]);
+    const SegmentShape& shin = body.shape(left_knee);
+    // Front of the left shin halfway down: straight in front of the bone (+Z) by the half-depth there.
+    const SurfacePoint front = body.surface_point(left_knee, 0.5, 0);
+    const Vector3d mid = (body.rest_joints()[left_knee] + body.rest_joints()[left_ankle]) / 2;
+    const double scale = 1 + (shin.taper - 1) * 0.5;
+    EXPECT_LT((front.position - (mid + Vector3d(0, 0, shin.half_depth * scale))).norm(), 1e-12);
+    EXPECT_LT((front.normal - Vector3d::UnitZ()).norm(), 1e-12);
+    // Lateral side of the left thigh: +X (the body's left); of the right thigh at -90 degrees: -X.
+    EXPECT_LT((body.surface_point(left_hip, 0.4, M_PI / 2).normal - Vector3d::UnitX()).norm(), 1e-12);
+    EXPECT_LT((body.surface_point(right_hip, 0.4, -M_PI / 2).normal + Vector3d::UnitX()).norm(), 1e-12);
+    // An oblique point of an elliptic section: the normal is the ellipse's gradient, not the radial direction.
+    const SurfacePoint oblique = body.surface_point(spine2, 0.5, M_PI / 4);
+    const SegmentShape& s = body.shape(spine2);
+    const double scale2 = 1 + (s.taper - 1) * 0.5;
+    const double a = s.half_depth * scale2, b = s.half_width * scale2;
+    const Vector3d expected_normal = Vector3d(std::sqrt(0.5) / b, 0, std::sqrt(0.5) / a).normalized();
+    EXPECT_LT((oblique.normal - expected_normal).norm(), 1e-12);
+    EXPECT_THROW(body.vertex_point(3), Error);
+}
+
+TEST(ProceduralBody, SexChangesBreadthsNotStature) {
+    BodySpec m = parse_body_specs("height=170,mass=65,sex=m")[0], f = parse_body_specs("height=170,mass=65,sex=f")[0];
+    const ProceduralBody male(m), female(f);
+    EXPECT_DOUBLE_EQ(male.vertex_height(), female.vertex_height());
+    const auto width = [](const ProceduralBody& b, int l, int r) { return (b.rest_joints()[l] - b.rest_joints()[r]).norm(); };
+    EXPECT_GT(width(female, left_hip, right_hip), width(male, left_hip, right_hip));
+    EXPECT_LT(width(female, left_shoulder, right_shoulder), width(male, left_shoulder, right_shoulder));
+}
