@@ -13,22 +13,20 @@ using Eigen::Vector3d;
 
 namespace {
 
-// Fractions of stature (see the header). Trunk joint heights are SMPL's mean shape divided by its stature.
-constexpr double kAnkleHeight = 0.039, kKneeHeight = 0.285, kHipHeight = 0.530, kShoulderHeight = 0.818;
-constexpr double kUpperArm = 0.186, kForearm = 0.146, kFootLength = 0.152;
-constexpr double kPelvisHeight = 0.575, kSpine1Height = 0.640, kSpine2Height = 0.720, kSpine3Height = 0.755;
-constexpr double kNeckHeight = 0.860, kHeadHeight = 0.920, kCollarHeight = 0.820;
-// The ball of the foot (SMPL's foot joint) lies 2/3 of the foot length ahead of the ankle's vertical, 1.2 % of
-// stature above the floor.
-constexpr double kBallForward = 0.66 * kFootLength, kBallHeight = 0.012;
+// The skeleton is HumanML3D's target skeleton (smpl22::kTargetOffsets, the SMPL subject every HumanML3D motion
+// is retargeted to) scaled to stature: its leg (hip-knee-ankle 0.826 m) with Winter's ankle height 0.039 H puts
+// the hip joints at 0.525 H for a 1.70 m person, Winter's 0.530 H within 1 %, so 1.70 m is its stature.
+constexpr double kReferenceStature = 1.70;
+constexpr double kAnkleHeight = 0.039, kBallHeight = 0.012;  // fractions of stature (Winter 2009, Fig. 4.1)
 
 struct SexFractions {
-    double hip_separation, shoulder_separation, collar_offset;  // fractions of stature
+    double hip_width, shoulder_width;  // breadth factors on the reference skeleton's hip and shoulder spans
     // de Leva (1996) Table 4, % of body mass.
     double head, upper_trunk, middle_trunk, lower_trunk, upper_arm, forearm, hand, thigh, shank, foot;
 };
-constexpr SexFractions kMale = {0.100, 0.220, 0.035, 6.94, 15.96, 16.33, 11.17, 2.71, 1.62, 0.61, 14.16, 4.33, 1.37};
-constexpr SexFractions kFemale = {0.110, 0.200, 0.033, 6.68, 15.45, 14.65, 12.47, 2.55, 1.38, 0.56, 14.78, 4.81, 1.29};
+// Women's pelvis is relatively wider and their shoulders narrower than men's (about 5 % each way).
+constexpr SexFractions kMale = {0.97, 1.03, 6.94, 15.96, 16.33, 11.17, 2.71, 1.62, 0.61, 14.16, 4.33, 1.37};
+constexpr SexFractions kFemale = {1.05, 0.95, 6.68, 15.45, 14.65, 12.47, 2.55, 1.38, 0.56, 14.78, 4.81, 1.29};
 
 // Depth/width ratio and distal/proximal taper of each limb's frustum.
 struct Form { double depth_over_width, taper; };
@@ -70,30 +68,38 @@ Section trunk_section(int s, Sex sex) {
     }
 }
 
+double bone(int j) { return kTargetOffsets[static_cast<size_t>(j)].norm(); }
+double mean_bone(int left, int right) { return (bone(left) + bone(right)) / 2; }
+
+// Standing, facing +Z, arms hanging; bone lengths are the reference's times H / 1.70 and laid out in
+// anatomical directions (the reference's own rest directions are HumanML3D's axis-aligned raw offsets).
 Joints22 rest_skeleton(double H, const SexFractions& m) {
+    const double s = H / kReferenceStature;
+    const Vector3d up = Vector3d::UnitY();
     Joints22 x;
-    const double hip = m.hip_separation * H / 2, shoulder = m.shoulder_separation * H / 2;
-    const double collar = m.collar_offset * H;
-    x[pelvis] = {0, kPelvisHeight * H, 0};
-    x[spine1] = {0, kSpine1Height * H, 0};
-    x[spine2] = {0, kSpine2Height * H, 0};
-    x[spine3] = {0, kSpine3Height * H, 0};
-    x[neck] = {0, kNeckHeight * H, 0};
-    x[head] = {0, kHeadHeight * H, 0};
+    const double leg = mean_bone(left_knee, right_knee) + mean_bone(left_ankle, right_ankle);
+    x[pelvis] = {0, kAnkleHeight * H + leg * s, 0};
+    x[spine1] = x[pelvis] + bone(spine1) * s * up;
+    x[spine2] = x[spine1] + bone(spine2) * s * up;
+    x[spine3] = x[spine2] + bone(spine3) * s * up;
+    x[neck] = x[spine3] + bone(neck) * s * up;
+    x[head] = x[neck] + bone(head) * s * up;
     for (int side = 0; side < 2; ++side) {
         const double sx = side == 0 ? 1.0 : -1.0;  // left is +X
         const int h = side == 0 ? left_hip : right_hip, k = side == 0 ? left_knee : right_knee;
         const int a = side == 0 ? left_ankle : right_ankle, f = side == 0 ? left_foot : right_foot;
-        const int c = side == 0 ? left_collar : right_collar, s = side == 0 ? left_shoulder : right_shoulder;
+        const int c = side == 0 ? left_collar : right_collar, sh = side == 0 ? left_shoulder : right_shoulder;
         const int e = side == 0 ? left_elbow : right_elbow, w = side == 0 ? left_wrist : right_wrist;
-        x[static_cast<size_t>(h)] = {sx * hip, kHipHeight * H, 0};
-        x[static_cast<size_t>(k)] = {sx * hip, kKneeHeight * H, 0};
-        x[static_cast<size_t>(a)] = {sx * hip, kAnkleHeight * H, 0};
-        x[static_cast<size_t>(f)] = {sx * hip, kBallHeight * H, kBallForward * H};
-        x[static_cast<size_t>(c)] = {sx * collar, kCollarHeight * H, 0};
-        x[static_cast<size_t>(s)] = {sx * shoulder, kShoulderHeight * H, 0};
-        x[static_cast<size_t>(e)] = {sx * shoulder, (kShoulderHeight - kUpperArm) * H, 0};
-        x[static_cast<size_t>(w)] = {sx * shoulder, (kShoulderHeight - kUpperArm - kForearm) * H, 0};
+        x[h] = x[pelvis] + sx * mean_bone(left_hip, right_hip) * s * m.hip_width * Vector3d::UnitX();
+        x[k] = x[h] - mean_bone(left_knee, right_knee) * s * up;
+        x[a] = x[k] - mean_bone(left_ankle, right_ankle) * s * up;
+        const double foot = mean_bone(left_foot, right_foot) * s, drop = (kAnkleHeight - kBallHeight) * H;
+        x[f] = x[a] + Vector3d(0, -drop, std::sqrt(std::max(foot * foot - drop * drop, 0.0)));
+        // The collar bone rises towards the shoulder; the shoulder joint lies out to the side and a little lower.
+        x[c] = x[spine3] + mean_bone(left_collar, right_collar) * s * Vector3d(sx * 0.45, 0.89, 0).normalized();
+        x[sh] = x[c] + mean_bone(left_shoulder, right_shoulder) * s * m.shoulder_width * Vector3d(sx, -0.15, 0).normalized();
+        x[e] = x[sh] - mean_bone(left_elbow, right_elbow) * s * up;
+        x[w] = x[e] - mean_bone(left_wrist, right_wrist) * s * up;
     }
     return x;
 }
@@ -115,6 +121,7 @@ ProceduralBody::ProceduralBody(const BodySpec& spec) : spec_(spec) {
     const double H = spec.height_m;
     const SexFractions& m = spec.sex == Sex::male ? kMale : kFemale;
     rest_ = rest_skeleton(H, m);
+    if (rest_[head].y() >= H) throw Error("body " + spec.name, "height", "a head joint below the vertex");
     axes_ = rest_axes(rest_);
     double percent_sum = 0;  // de Leva's columns sum to 100 +- 0.01 after rounding
     for (int k = 0; k < kNumJoints; ++k) percent_sum += limb_mass_percent(k, m);
@@ -142,6 +149,11 @@ ProceduralBody::ProceduralBody(const BodySpec& spec) : spec_(spec) {
             shape.half_depth = sec.half_depth * H * grow;
         }
     }
+}
+
+double ProceduralBody::stature_for_leg_length(double leg_m) {
+    const double leg = mean_bone(left_knee, right_knee) + mean_bone(left_ankle, right_ankle);
+    return leg_m / leg * kReferenceStature;
 }
 
 double ProceduralBody::vertex_height() const { return rest_[neck].y() + shapes_[neck].length; }

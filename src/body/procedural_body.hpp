@@ -1,10 +1,11 @@
 // The embedded default body: an anthropometric model built from height, mass and sex alone, no external files.
 //
-// Skeleton: joint heights and limb lengths as fractions of stature H from the Drillis & Contini table in
-// Winter, "Biomechanics and Motor Control of Human Movement" (4th ed., 2009, Fig. 4.1): ankle 0.039 H,
-// knee 0.285 H, hip 0.530 H, shoulder 0.818 H, upper arm 0.186 H, forearm 0.146 H, foot length 0.152 H.
-// Trunk joints sit where SMPL's mean shape puts them, as fractions of its stature. Hip and shoulder joint
-// separations are narrower for women and men respectively (wider female pelvis, broader male shoulders).
+// Skeleton: HumanML3D's target skeleton (the SMPL subject every HumanML3D motion is retargeted to, 1.70 m tall)
+// scaled to the stature H, laid out standing with the arms hanging; ankles at 0.039 H and the ball of the foot at
+// 0.012 H (Winter, "Biomechanics and Motor Control of Human Movement", 4th ed., 2009, Fig. 4.1). Women's hip
+// span is 5 % wider and shoulder span 5 % narrower than the reference, men's the reverse. Keeping HumanML3D's
+// proportions means a HumanML3D motion retargets onto every body without distortion: only size, breadths and
+// girths differ between bodies, as between the paper's eight SMPL shapes.
 //
 // Surface: every segment is an elliptic frustum around its bone: half-depth a (front-back) and half-width b
 // (left-right) at the proximal end, both scaled by a taper factor at the distal end. Limbs follow the person's
@@ -44,6 +45,8 @@ public:
 
     const SegmentShape& shape(int segment) const { return shapes_[static_cast<size_t>(segment)]; }
     double vertex_height() const;  // top of the head in the rest pose, m (= the spec's height)
+    // The stature whose skeleton has this hip-knee-ankle length (m): sizes a body to a motion.
+    static double stature_for_leg_length(double leg_m);
     double limb_volume_m3() const; // the limb frusta together (they hold their de Leva mass shares)
     static constexpr double kDensity = 1050.0;  // kg/m^3
 

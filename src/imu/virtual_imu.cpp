@@ -40,8 +40,7 @@ BodySpec size_body_to_motion(const JointSequence& motion) {
     BodySpec b;
     b.kind = BodySpec::Kind::none;
     b.name = "none";
-    // Hip-knee-ankle is (0.530 - 0.039) of stature in the procedural body's table.
-    b.height_m = std::clamp(leg / (0.530 - 0.039), 0.6, 2.4);
+    b.height_m = std::clamp(ProceduralBody::stature_for_leg_length(leg), 0.6, 2.4);
     b.mass_kg = 22.0 * b.height_m * b.height_m;
     return b;
 }
