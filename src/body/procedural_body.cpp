@@ -104,15 +104,6 @@ Joints22 rest_skeleton(double H, const SexFractions& m) {
     return x;
 }
 
-// Cross-section axes of a segment in rest coordinates: front (u) and the second axis (v: left, or up for a
-// segment that runs sideways).
-void section_axes(const Vector3d& l, Vector3d* u, Vector3d* v) {
-    *u = (Vector3d::UnitZ() - Vector3d::UnitZ().dot(l) * l).normalized();
-    Vector3d side = Vector3d::UnitX() - Vector3d::UnitX().dot(l) * l - Vector3d::UnitX().dot(*u) * *u;
-    if (side.norm() < 0.3) side = Vector3d::UnitY() - Vector3d::UnitY().dot(l) * l - Vector3d::UnitY().dot(*u) * *u;
-    *v = side.normalized();
-}
-
 }  // namespace
 
 ProceduralBody::ProceduralBody(const BodySpec& spec) : spec_(spec) {
@@ -177,7 +168,7 @@ SurfacePoint ProceduralBody::surface_point(int segment, double along, double aro
     const SegmentShape& sh = shapes_[s];
     const Vector3d l = axes_.long_axis[s];
     Vector3d u, v;
-    section_axes(l, &u, &v);
+    cross_section_axes(l, &u, &v);
     const double scale = 1 + (sh.taper - 1) * std::clamp(along, 0.0, 1.0);
     const double a = sh.half_depth * scale, b = sh.half_width * scale;
     const double c = std::cos(around), sn = std::sin(around);

@@ -82,6 +82,13 @@ Vector3d twist_reference(int s, const Joints22& x, const Vector3d& l, const Matr
 
 }  // namespace
 
+void cross_section_axes(const Vector3d& l, Vector3d* front, Vector3d* side) {
+    *front = perpendicular(Vector3d::UnitZ(), l).normalized();
+    Vector3d v = perpendicular(perpendicular(Vector3d::UnitX(), l), *front);
+    if (v.norm() < 0.3) v = perpendicular(perpendicular(Vector3d::UnitY(), l), *front);
+    *side = v.normalized();
+}
+
 Matrix3d axis_frame(const Vector3d& l, const Vector3d& a) {
     Matrix3d f;
     const Vector3d e1 = l.normalized();

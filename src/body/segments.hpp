@@ -53,6 +53,11 @@ RestAxes rest_axes(const Joints22& rest);
 std::vector<Rotations22> segment_rotations(const std::vector<Joints22>& frames, const RestAxes& rest,
                                            double twist_smoothing_frames = 0);
 
+// Directions across a segment whose long axis is the unit vector l (rest coordinates): `front` is +Z made
+// perpendicular to l; `side` is +X (the body's left) made perpendicular to both, or +Y (up) for a segment that
+// runs sideways (the collars). Angles about a segment are measured from front towards side.
+void cross_section_axes(const Eigen::Vector3d& l, Eigen::Vector3d* front, Eigen::Vector3d* side);
+
 // The frame [l, a_perp, l x a_perp] (columns); a must not be parallel to l.
 Eigen::Matrix3d axis_frame(const Eigen::Vector3d& l, const Eigen::Vector3d& a);
 

@@ -103,10 +103,8 @@ SurfacePoint SmplBody::surface_point(int segment, double along, double around) c
     const int s = d.rule == TwistRule::leaf ? d.parent : segment;
     const Vector3d j0 = rest22_[static_cast<size_t>(s)], l = axes_.long_axis[static_cast<size_t>(s)];
     const double length = (rest22_[static_cast<size_t>(kSegments[static_cast<size_t>(s)].distal)] - j0).norm();
-    Vector3d u = (Vector3d::UnitZ() - Vector3d::UnitZ().dot(l) * l).normalized();
-    Vector3d v = Vector3d::UnitX() - Vector3d::UnitX().dot(l) * l - Vector3d::UnitX().dot(u) * u;
-    if (v.norm() < 0.3) v = Vector3d::UnitY() - Vector3d::UnitY().dot(l) * l - Vector3d::UnitY().dot(u) * u;
-    v.normalize();
+    Vector3d u, v;
+    cross_section_axes(l, &u, &v);
     const Vector3d dir = std::cos(around) * u + std::sin(around) * v;
     // The segment's skin vertex closest to the wanted height along the bone and the wanted direction around it.
     double best = 1e300;
