@@ -1,0 +1,156 @@
+// HAR evaluation: metrics with hand-computed answers, windowing and class maps, resampling, DeepConvLSTM's
+// shape, and training that must separate classes a child could tell apart.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <random>
+
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "har/class_map.hpp"
+#include "har/har_metrics.hpp"
+#include "har/nn/deepconvlstm.hpp"
+#include "har/nn/har_training.hpp"
+#include "har/windowing.hpp"
+#include "test_util.hpp"
+
+using namespace t2imu;
+
+namespace {
+
+// A recording whose acc_x is a sine of `hz` (amplitude 3 m/s^2) over gravity on y, plus noise.
+ImuRecording sine_recording(const std::string& subject, const std::string& activity, const std::string& position,
+                            double hz, double seconds, double rate, std::mt19937_64& rng, const std::string& trial = "1") {
+    ImuRecording r;
+    r.dataset = "test";
+    r.subject = subject;
+    r.activity = activity;
+    r.position = position;
+    r.rate_hz = rate;
+    r.path = "test/" + subject + "/" + activity + "_" + trial + "_" + position + ".csv";
+    std::normal_distribution<double> noise(0, 0.3);
+    std::uniform_real_distribution<double> phase(0, 2 * M_PI);
+    const double p = phase(rng);
+    for (int k = 0; k < static_cast<int>(seconds * rate); ++k) {
+        const double t = k / rate;
+        r.t.push_back(t);
+        r.samples.push_back({3 * std::sin(2 * M_PI * hz * t + p) + noise(rng), 9.81 + noise(rng), noise(rng), 0, 0, 0});
+    }
+    return r;
+}
+
+}  // namespace
+
+TEST(HarMetrics, HandComputedConfusion) {
+    // truth: 0 0 0 0 1 1 2 2 ; predicted: 0 0 1 0 1 0 2 1
+    const Confusion c = confusion_matrix({0, 0, 0, 0, 1, 1, 2, 2}, {0, 0, 1, 0, 1, 0, 2, 1}, 4);
+    EXPECT_EQ(c[0], (std::vector<long>{3, 1, 0, 0}));
+    const std::vector<double> recall = per_class_recall(c);
+    EXPECT_DOUBLE_EQ(recall[0], 0.75);
+    EXPECT_DOUBLE_EQ(recall[1], 0.5);
+    EXPECT_TRUE(std::isnan(recall[3]));  // class 3 absent: left out of the averages
+    EXPECT_DOUBLE_EQ(balanced_accuracy(c), (0.75 + 0.5 + 0.5) / 3);
+    // F1: class 0 = 2*3/(4+4) = 0.75; class 1 = 2*1/(2+3) = 0.4; class 2 = 2*1/(2+1) = 2/3.
+    EXPECT_DOUBLE_EQ(macro_f1(c), (0.75 + 0.4 + 2.0 / 3.0) / 3);
+    EXPECT_THROW(confusion_matrix({0, 5}, {0, 1}, 4), Error);
+}
+
+TEST(HarClassMap, DocumentedMapsAndStairsCoarsening) {
+    EXPECT_EQ(map_activity("sisfall", "jogging"), "running");
+    EXPECT_EQ(map_activity("sisfall", "stairs_up_down"), "stairs");
+    EXPECT_EQ(map_activity("sisfall", "jump_reach"), "");
+    EXPECT_EQ(map_activity("umafall", "jumping"), "jumping");
+    EXPECT_EQ(map_activity("t2imu", "stairs_up"), "stairs_up");
+    EXPECT_EQ(coarsen_for("stairs_up", {"stairs_up", "walking"}, {"stairs", "walking"}), "stairs");
+    EXPECT_EQ(coarsen_for("stairs_up", {"stairs_up"}, {"stairs_up"}), "stairs_up");
+}
+
+TEST(HarWindowing, CountsPositionsAndRates) {
+    std::mt19937_64 rng(1);
+    std::vector<ImuRecording> recs = {sine_recording("s1", "walking", "left_shin", 1, 10, 50, rng),
+                                      sine_recording("s1", "walking", "waist", 1, 10, 50, rng),
+                                      sine_recording("s1", "jogging", "waist", 2, 6, 50, rng)};
+    recs[2].dataset = "sisfall";  // jogging -> running
+    WindowOptions o;
+    o.positions = {"waist"};
+    WindowSet w = make_windows(recs, o);
+    // 10 s at 50 Hz -> 500 samples -> 200 at 20 Hz: windows of 40 every 20: (200 - 40) / 20 + 1 = 9; 6 s -> 5.
+    EXPECT_EQ(w.size(), 14u);
+    EXPECT_EQ(w.length, 40);
+    EXPECT_EQ(w.channels, 3);
+    EXPECT_EQ(std::count(w.labels.begin(), w.labels.end(), "running"), 5);
+    o.positions = {"shin", "waist"};  // "shin" matches left_shin; only the walking trial has both
+    o.gyro = true;
+    w = make_windows(recs, o);
+    EXPECT_EQ(w.size(), 9u);
+    EXPECT_EQ(w.channels, 12);
+    o.positions.clear();
+    EXPECT_THROW(make_windows(recs, o), Error);  // two positions: the caller must choose
+}
+
+TEST(HarWindowing, ResamplingKeepsASlowSineIntact) {
+    for (double rate_in : {50.0, 58.82, 200.0}) {
+        std::vector<double> x;
+        for (int k = 0; k < static_cast<int>(10 * rate_in); ++k) x.push_back(std::sin(2 * M_PI * 1.0 * k / rate_in));
+        const std::vector<double> y = resample_channel(x, rate_in, 20);
+        double worst = 0;
+        for (size_t k = 20; k + 20 < y.size(); ++k) worst = std::max(worst, std::fabs(y[k] - std::sin(2 * M_PI * k / 20.0)));
+        EXPECT_LT(worst, 0.02) << rate_in;  // a 1 Hz sine is far below the 10 Hz Nyquist frequency of 20 Hz
+    }
+}
+
+TEST(DeepConvLstm, ShapesAndParameterCountAsPublished) {
+    DeepConvLstm model(6, 4);
+    const torch::Tensor y = model->forward(torch::randn({5, 40, 6}));
+    EXPECT_EQ(y.sizes(), (std::vector<int64_t>{5, 4}));
+    int64_t n = 0;
+    for (const torch::Tensor& p : model->parameters()) n += p.numel();
+    const int64_t conv = (1 * 64 * 5 + 64) + 3 * (64 * 64 * 5 + 64);
+    const int64_t lstm = 4 * 128 * (64 * 6 + 128) + 8 * 128 + 4 * 128 * (128 + 128) + 8 * 128;  // two bias vectors per layer
+    EXPECT_EQ(n, conv + lstm + 128 * 4 + 4);
+}
+
+TEST(HarTraining, SeparatesSinesOfDifferentFrequencyAcrossDataSets) {
+    torch::set_num_threads(1);
+    std::mt19937_64 rng(7);
+    std::vector<ImuRecording> train, test;
+    const std::vector<std::pair<std::string, double>> classes = {{"walking", 0.8}, {"running", 2.5}, {"stairs_up", 5.0}};
+    for (const auto& [name, hz] : classes)
+        for (int s = 0; s < 4; ++s) train.push_back(sine_recording("s" + std::to_string(s), name, "waist", hz, 12, 50, rng));
+    for (const auto& [name, hz] : classes) test.push_back(sine_recording("t", name == "stairs_up" ? "stairs" : name, "waist", hz, 12, 50, rng));
+    const WindowSet tr = make_windows(train, {}), te = make_windows(test, {});
+    HarOptions o;
+    o.repeats = 2;
+    o.max_epochs = 15;
+    const HarResult r = train_and_test(tr, te, o);
+    EXPECT_EQ(r.classes, (std::vector<std::string>{"running", "stairs", "walking"}));  // stairs_up coarsened
+    ASSERT_EQ(r.runs.size(), 2u);
+    for (const HarRun& run : r.runs) EXPECT_GT(run.balanced_accuracy, 0.9);
+    const nlohmann::json j = nlohmann::json::parse(har_result_json(r, "sines"));
+    EXPECT_EQ(j["balanced_accuracy"]["runs"].size(), 2u);
+    EXPECT_TRUE(j["per_class_recall"].contains("stairs"));
+    long total = 0;
+    for (const auto& row : j["confusion"])
+        for (const auto& v : row) total += v.get<long>();
+    EXPECT_EQ(total, static_cast<long>(2 * r.test_windows));  // summed over the two runs
+}
+
+TEST(HarTraining, CliLeaveOneSubjectOut) {
+    std::mt19937_64 rng(9);
+    std::vector<ImuRecording> recs;
+    for (int s = 0; s < 3; ++s)
+        for (const auto& [name, hz] : std::vector<std::pair<std::string, double>>{{"walking", 0.8}, {"jumping", 4.0}})
+            recs.push_back(sine_recording("s" + std::to_string(s), name, "chest", hz, 12, 20, rng));
+    const std::string dir = test::scratch_dir("har_cli");
+    write_imu_dataset(dir + "/data", recs);
+    const auto r = test::run_cli("--threads 1 har run --train " + dir + "/data --loso --epochs 8 --out " + dir + "/r.json");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const nlohmann::json j = nlohmann::json::parse(read_file_text(dir + "/r.json"));
+    EXPECT_EQ(j["classes"], (std::vector<std::string>{"jumping", "walking"}));
+    EXPECT_EQ(j["balanced_accuracy"]["runs"].size(), 3u);  // one per subject
+    EXPECT_GT(j["balanced_accuracy"]["mean"].get<double>(), 0.85);
+    const auto bad = test::run_cli("har run --train " + dir + "/data --out " + dir + "/x.json");  // neither --test nor --loso
+    EXPECT_EQ(bad.exit_code, 1) << bad.output;
+}
