@@ -1,5 +1,6 @@
 // t2imu har run: DeepConvLSTM trained on one IMU dataset, tested on another (or leave-one-subject-out).
 #include <cstdio>
+#include <map>
 #include <sstream>
 
 #include "cli/command.hpp"
@@ -13,7 +14,8 @@ namespace t2imu::cli {
 namespace {
 
 struct HarArgs {
-    std::string train, test, positions, test_positions, channels = "acc", out;
+    std::string train, test, positions, test_positions, channels = "acc", classes, out;
+    int folds = 0;
     double rate = 20, window = 2, overlap = 0.5;
     bool loso = false;
     HarOptions options;
@@ -38,12 +40,17 @@ void run(HarArgs a) {
     w.gyro = a.channels == "acc,gyr";
     w.positions = split_list(a.positions);
     a.options.verbose = global_options().verbose;
-    const WindowSet train = make_windows(read_imu_dataset(a.train), w);
+    WindowSet train = make_windows(read_imu_dataset(a.train), w);
+    if (!a.classes.empty()) {
+        std::map<std::string, std::string> keep;
+        for (const std::string& c : split_list(a.classes)) keep[c] = c;
+        train = relabel(train, keep);
+    }
     HarResult result;
     std::string description;
     if (a.loso) {
-        result = leave_one_subject_out(train, a.options);
-        description = "leave-one-subject-out on " + a.train;
+        result = leave_one_subject_out(train, a.options, a.folds);
+        description = (a.folds > 0 ? std::to_string(a.folds) + "-fold leave-subjects-out on " : "leave-one-subject-out on ") + a.train;
     } else {
         WindowOptions wt = w;
         if (!a.test_positions.empty()) wt.positions = split_list(a.test_positions);
@@ -74,6 +81,8 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--rate", a.rate, "evaluation rate, Hz (default 20)");
     cmd->add_option("--window", a.window, "window length, s (default 2)");
     cmd->add_option("--overlap", a.overlap, "window overlap, 0..1 (default 0.5)");
+    cmd->add_option("--folds", a.folds, "with --loso: subjects dealt into this many folds (default: one per subject)");
+    cmd->add_option("--classes", a.classes, "keep only these training classes (after the data set's class map)");
     cmd->add_option("--repeats", a.options.repeats, "trainings with consecutive seeds (default 10)");
     cmd->add_option("--epochs", a.options.max_epochs, "most epochs per training (early stopping, patience 5)");
     cmd->add_option("--seed", a.options.seed, "first seed");

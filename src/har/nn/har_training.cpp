@@ -172,11 +172,12 @@ std::vector<std::string> shared_classes(const WindowSet& a, const WindowSet& b, 
     return shared;
 }
 
+// The windows whose class is one of `classes`; with `held_out`, only those of (or, with exclude, not of) those subjects.
 Labelled labelled(const WindowSet& w, const std::vector<std::string>& classes, const std::map<std::string, std::string>& rename,
-                  const std::string* only_subject = nullptr, bool exclude = false) {
+                  const std::set<std::string>* held_out = nullptr, bool exclude = false) {
     Labelled d{&w, {}, {}};
     for (size_t i = 0; i < w.size(); ++i) {
-        if (only_subject && ((w.subjects[i] == *only_subject) == exclude)) continue;
+        if (held_out && (held_out->count(w.subjects[i]) > 0) == exclude) continue;
         const auto it = std::find(classes.begin(), classes.end(), rename.at(w.labels[i]));
         if (it == classes.end()) continue;
         d.index.push_back(i);
@@ -206,7 +207,7 @@ HarResult train_and_test(const WindowSet& train, const WindowSet& test, const Ha
     return r;
 }
 
-HarResult leave_one_subject_out(const WindowSet& data, const HarOptions& o) {
+HarResult leave_one_subject_out(const WindowSet& data, const HarOptions& o, int folds) {
     std::map<std::string, std::string> rename;
     for (const std::string& l : data.labels) rename[l] = l;
     const std::set<std::string> labels(data.labels.begin(), data.labels.end());
@@ -214,12 +215,17 @@ HarResult leave_one_subject_out(const WindowSet& data, const HarOptions& o) {
     r.classes.assign(labels.begin(), labels.end());
     const std::set<std::string> subjects(data.subjects.begin(), data.subjects.end());
     if (subjects.size() < 2) throw Error("har", "subjects", "at least two subjects for --loso", std::to_string(subjects.size()));
-    uint64_t fold = 0;
-    for (const std::string& s : subjects) {
-        const Labelled tr = labelled(data, r.classes, rename, &s, true), te = labelled(data, r.classes, rename, &s, false);
-        if (o.verbose) std::fprintf(stderr, "fold %s: %zu train, %zu test windows\n", s.c_str(), tr.index.size(), te.index.size());
-        r.runs.push_back(fit_and_test(tr, te, static_cast<int>(r.classes.size()), o, o.seed + fold++));
-        r.run_names.push_back(s);
+    const size_t k = folds > 0 ? std::min(static_cast<size_t>(folds), subjects.size()) : subjects.size();
+    std::vector<std::set<std::string>> held_out(k);
+    size_t i = 0;
+    for (const std::string& s : subjects) held_out[i++ % k].insert(s);
+    for (size_t fold = 0; fold < k; ++fold) {
+        std::string name;
+        for (const std::string& s : held_out[fold]) name += (name.empty() ? "" : "+") + s;
+        const Labelled tr = labelled(data, r.classes, rename, &held_out[fold], true), te = labelled(data, r.classes, rename, &held_out[fold], false);
+        if (o.verbose) std::fprintf(stderr, "fold %s: %zu train, %zu test windows\n", name.c_str(), tr.index.size(), te.index.size());
+        r.runs.push_back(fit_and_test(tr, te, static_cast<int>(r.classes.size()), o, o.seed + fold));
+        r.run_names.push_back(name);
         r.train_windows += tr.index.size();
         r.test_windows += te.index.size();
     }

@@ -41,8 +41,10 @@ struct HarResult {
 
 // The classes both sets share (class_map.hpp rules), then `repeats` trainings with seeds seed, seed+1, ...
 HarResult train_and_test(const WindowSet& train, const WindowSet& test, const HarOptions& options);
-// One fold per subject: train on the others, test on that subject (each fold trained once).
-HarResult leave_one_subject_out(const WindowSet& data, const HarOptions& options);
+// One fold per subject: train on the others, test on that subject (each fold trained once). With folds > 0,
+// subjects are dealt (sorted by name, round robin) into that many folds instead: leave-k-subjects-out, for
+// data sets with many subjects where one training per subject costs too much.
+HarResult leave_one_subject_out(const WindowSet& data, const HarOptions& options, int folds = 0);
 
 // RESULT.json: classes, balanced_accuracy {mean, sd, runs}, macro_f1 {...}, per_class_recall (mean over runs),
 // confusion (summed over runs, rows = true class), plus counts and timings.
