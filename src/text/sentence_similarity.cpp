@@ -1,0 +1,44 @@
+#include "text/sentence_similarity.hpp"
+
+#include <Eigen/Eigenvalues>
+
+#include "text/word_tokenizer.hpp"
+
+namespace t2imu {
+
+SifEncoder::SifEncoder(const WordVectors& vectors, double a) : vectors_(vectors), a_(a) {}
+
+Eigen::VectorXd SifEncoder::weighted_mean(const std::string& sentence) const {
+    Eigen::VectorXd sum = Eigen::VectorXd::Zero(WordVectors::kDims);
+    int known = 0;
+    for (int i : word_indices(sentence, vectors_)) {
+        if (i < 0) continue;
+        const double w = a_ / (a_ + vectors_.probability(i));
+        sum += w * Eigen::Map<const Eigen::VectorXf>(vectors_.vector(i), WordVectors::kDims).cast<double>();
+        ++known;
+    }
+    return known ? Eigen::VectorXd(sum / known) : sum;
+}
+
+Eigen::VectorXd SifEncoder::embed(const std::string& sentence) const {
+    Eigen::VectorXd v = weighted_mean(sentence);
+    if (common_.size() == v.size()) v -= common_.dot(v) * common_;
+    return v;
+}
+
+void SifEncoder::fit_common_component(const std::vector<std::string>& corpus) {
+    Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(WordVectors::kDims, WordVectors::kDims);
+    for (const std::string& s : corpus) {
+        const Eigen::VectorXd v = weighted_mean(s);
+        gram += v * v.transpose();  // uncentred, as the paper's TruncatedSVD
+    }
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(gram);
+    common_ = eig.eigenvectors().col(WordVectors::kDims - 1);
+}
+
+double cosine_similarity(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+    const double n = a.norm() * b.norm();
+    return n > 0 ? a.dot(b) / n : 0.0;
+}
+
+}  // namespace t2imu
