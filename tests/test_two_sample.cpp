@@ -1,0 +1,67 @@
+// Real-vs-synthetic distances: the classifier two-sample test and per-feature distribution distances.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "analysis/domain_gap.hpp"
+#include "analysis/two_sample.hpp"
+#include "core/error.hpp"
+
+using namespace t2imu;
+
+namespace {
+PointMatrix gaussian(int n, int d, double shift, uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> g;
+    PointMatrix x(n, d);
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < d; ++j) x(i, j) = g(rng) + (j == 0 ? shift : 0.0);
+    return x;
+}
+}  // namespace
+
+TEST(TwoSample, SameDistributionIsIndistinguishableShiftedIsNot) {
+    const TwoSampleResult same = classifier_two_sample_test(gaussian(400, 10, 0, 1), gaussian(300, 10, 0, 2));
+    EXPECT_NEAR(same.balanced_accuracy, 0.5, 0.06);
+    EXPECT_EQ(same.fold_accuracy.size(), 5u);
+    // A 3-sigma shift in one feature: Bayes-optimal balanced accuracy Phi(1.5) = 0.933.
+    const TwoSampleResult apart = classifier_two_sample_test(gaussian(400, 10, 0, 3), gaussian(300, 10, 3, 4));
+    EXPECT_NEAR(apart.balanced_accuracy, 0.933, 0.03);
+    // NaN columns (a constant channel's catch22) are dropped, not fatal.
+    PointMatrix with_nan = gaussian(300, 10, 3, 5);
+    with_nan.col(4).setConstant(std::nan(""));
+    EXPECT_NEAR(classifier_two_sample_test(gaussian(400, 10, 0, 6), with_nan).balanced_accuracy, 0.933, 0.03);
+    EXPECT_THROW(classifier_two_sample_test(gaussian(10, 3, 0, 1), gaussian(10, 4, 0, 1)), Error);
+}
+
+TEST(TwoSample, WassersteinAndKolmogorovSmirnovKnownAnswers) {
+    // W1 of two point sets of equal size = mean |sorted a - sorted b|: (|0-1| + |1-3| + |5-5|) / 3 = 1.
+    EXPECT_NEAR(wasserstein_1d({5, 0, 1}, {3, 1, 5}), 1.0, 1e-12);
+    EXPECT_NEAR(wasserstein_1d({0, 0}, {2, 2, 2}), 2.0, 1e-12);  // a shift of 2
+    EXPECT_DOUBLE_EQ(ks_statistic({1, 2, 3}, {1, 2, 3}), 0.0);
+    EXPECT_DOUBLE_EQ(ks_statistic({1, 2}, {3, 4}), 1.0);
+    EXPECT_DOUBLE_EQ(ks_statistic({1, 2, 3, 4}, {3, 4, 5, 6}), 0.5);
+    EXPECT_DOUBLE_EQ(wasserstein_1d({1, std::nan(""), 2}, {1, 2}), 0.0);  // NaN dropped
+}
+
+TEST(TwoSample, DomainGapOnFeatureTables) {
+    // Two tables with activity labels; "walking" differs between them in f1, "running" does not.
+    std::mt19937_64 rng(9);
+    std::normal_distribution<double> g;
+    const auto table = [&](double walking_shift) {
+        CsvTable t;
+        t.source = "t";
+        t.header = {"subject", "activity", "f1", "f2"};
+        for (int i = 0; i < 200; ++i) {
+            const bool walking = i % 2 == 0;
+            t.rows.push_back({"s", walking ? "walking" : "running", std::to_string(g(rng) + (walking ? walking_shift : 0.0)), std::to_string(g(rng))});
+        }
+        return t;
+    };
+    const nlohmann::json gap = domain_gap(table(0), table(4));
+    EXPECT_EQ(gap["features"], 2);
+    EXPECT_GT(gap["per_activity"]["walking"]["balanced_accuracy"].get<double>(), 0.95);
+    EXPECT_NEAR(gap["per_activity"]["running"]["balanced_accuracy"].get<double>(), 0.5, 0.12);
+    EXPECT_EQ(gap["per_feature"][0]["feature"], "f1");  // the most different feature first
+    EXPECT_GT(gap["per_feature"][0]["ks"].get<double>(), 0.4);
+}
