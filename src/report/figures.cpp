@@ -1,0 +1,120 @@
+#include "report/figures.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+
+#include "core/error.hpp"
+#include "report/gnuplot.hpp"
+
+namespace t2imu {
+
+namespace {
+
+std::string number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+}
+
+}  // namespace
+
+void plot_lacc_change(const CsvTable& lacc, const std::string& png) {
+    GnuplotData d{"bars", {}};
+    const size_t g = lacc.column("group"), c = lacc.column("change_percent"), n = lacc.column("samples");
+    double lo = 0, hi = 0;  // bars grow from zero, so the range must hold it
+    for (size_t r = 0; r < lacc.rows.size(); ++r) {
+        lo = std::min(lo, lacc.number(r, c));
+        hi = std::max(hi, lacc.number(r, c));
+    }
+    const double pad = 0.1 * std::max(hi - lo, 1.0);
+    for (size_t r = 0; r < lacc.rows.size(); ++r) {
+        const std::string& name = lacc.rows[r][g];
+        const bool aggregate = name == "high_dynamic" || name == "low_dynamic" || name == "all";
+        d.rows.push_back({std::to_string(r), gnuplot_label(name + " (" + lacc.rows[r][n] + ")"), lacc.rows[r][c], aggregate ? "2" : "1"});
+    }
+    render_png(png, {d},
+               "set title 'Change of L_{acc} after fine-tuning, per activity category (samples)'\n"
+               "set ylabel 'L_{acc} change (%)'\nset yrange [" + number(lo - pad) + ":" + number(hi + pad) + "]\n"
+               "set style fill solid 0.8 border -1\nset boxwidth 0.7\n"
+               "set xtics rotate by -35 left\nset grid ytics\nset xzeroaxis lt -1\nunset key\n"
+               "set palette defined (1 '#3b75af', 2 '#e08a2c')\nunset colorbox\n"
+               "plot $bars using 1:3:4:xtic(2) with boxes lc palette");
+}
+
+void plot_tsne(const CsvTable& t, const std::string& colour_column, const std::string& png, const std::string& title,
+               const std::string& filter_column, const std::vector<std::string>& keep) {
+    const size_t x = t.column("tsne_x"), y = t.column("tsne_y"), c = t.column(colour_column);
+    const size_t f = filter_column.empty() ? 0 : t.column(filter_column);
+    std::map<std::string, GnuplotData> groups;
+    for (const auto& row : t.rows) {
+        if (!keep.empty() && std::find(keep.begin(), keep.end(), row[f]) == keep.end()) continue;
+        GnuplotData& d = groups[row[c]];
+        d.rows.push_back({row[x], row[y]});
+    }
+    if (groups.empty()) throw Error(png, "points", "at least one point to plot");
+    std::vector<GnuplotData> data;
+    std::string plot = "plot ";
+    int k = 0;
+    for (auto& [name, d] : groups) {
+        d.name = "g" + std::to_string(k);
+        plot += std::string(k ? ", " : "") + "$" + d.name + " using 1:2 with points pt 7 ps 0.5 title " + gnuplot_label(name);
+        data.push_back(d);
+        ++k;
+    }
+    render_png(png, data, "set title " + gnuplot_label(title) + "\nset xlabel 't-SNE 1'\nset ylabel 't-SNE 2'\nset key outside right\n" + plot, 900, 700);
+}
+
+void plot_balanced_accuracy(const std::vector<std::pair<std::string, nlohmann::json>>& results, const std::string& png) {
+    GnuplotData d{"acc", {}};
+    for (size_t i = 0; i < results.size(); ++i) {
+        const auto& ba = results[i].second.at("balanced_accuracy");
+        d.rows.push_back({std::to_string(i), gnuplot_label(results[i].first), number(100 * ba.at("mean").get<double>()),
+                          number(100 * ba.at("sd").get<double>())});
+    }
+    render_png(png, {d},
+               "set title 'Balanced accuracy (mean and standard deviation over runs)'\nset ylabel 'balanced accuracy (%)'\n"
+               "set yrange [0:100]\nset style fill solid 0.8 border -1\nset boxwidth 0.6\nset grid ytics\nunset key\n"
+               "set xtics rotate by -25 left\n"
+               "plot $acc using 1:3:xtic(2) with boxes lc rgb '#3b75af', $acc using 1:3:4 with yerrorbars lc rgb 'black' pt -1");
+}
+
+void plot_confusion(const nlohmann::json& result, const std::string& png, const std::string& title) {
+    const std::vector<std::string> classes = result.at("classes");
+    const auto& m = result.at("confusion");
+    GnuplotData d{"cm", {}};
+    std::string xtics;
+    for (size_t i = 0; i < classes.size(); ++i) {
+        long total = 0;
+        for (const auto& v : m[i]) total += v.get<long>();
+        for (size_t j = 0; j < classes.size(); ++j)
+            d.rows.push_back({std::to_string(j), std::to_string(i), number(total ? static_cast<double>(m[i][j].get<long>()) / static_cast<double>(total) : 0.0)});
+        d.rows.push_back({});  // gnuplot's scan separator
+        xtics += std::string(i ? ", " : "") + gnuplot_label(classes[i]) + " " + std::to_string(i);
+    }
+    render_png(png, {d},
+               "set title " + gnuplot_label(title) + "\nset xlabel 'predicted'\nset ylabel 'true'\nset xtics (" + xtics + ") rotate by -35 left\n"
+               "set ytics (" + xtics + ")\nset yrange [] reverse\nset cbrange [0:1]\nset palette defined (0 'white', 1 '#3b75af')\n"
+               "set view map\nplot $cm using 1:2:3 with image notitle, $cm using 1:2:(sprintf('%.2f', $3)) with labels notitle",
+               760, 680);
+}
+
+void plot_imu_trace(const CsvTable& rec, const std::string& png, const std::string& title) {
+    GnuplotData d{"imu", {}};
+    const size_t t = rec.column("t");
+    const std::vector<size_t> cols = {rec.column("acc_x"), rec.column("acc_y"), rec.column("acc_z"),
+                                      rec.column("gyr_x"), rec.column("gyr_y"), rec.column("gyr_z")};
+    for (const auto& row : rec.rows) {
+        std::vector<std::string> r = {row[t]};
+        for (size_t c : cols) r.push_back(row[c]);
+        d.rows.push_back(r);
+    }
+    render_png(png, {d},
+               "set multiplot layout 2,1 title " + gnuplot_label(title) + "\nset grid\nset key outside right\n"
+               "set ylabel 'acc (m/s^2)'\nplot $imu using 1:2 w l t 'x', $imu using 1:3 w l t 'y', $imu using 1:4 w l t 'z'\n"
+               "set xlabel 't (s)'\nset ylabel 'gyr (rad/s)'\nplot $imu using 1:5 w l t 'x', $imu using 1:6 w l t 'y', $imu using 1:7 w l t 'z'\n"
+               "unset multiplot",
+               900, 640);
+}
+
+}  // namespace t2imu

@@ -1,0 +1,27 @@
+// The evaluation's figures (after the paper's): L_acc change per activity category (Fig. 1), t-SNE of real vs
+// synthetic features (Fig. 2), balanced accuracy per model (Fig. 3), confusion matrices, and IMU traces.
+// Each takes the file the producing command wrote, as parsed there, and draws one PNG.
+#pragma once
+#include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/csv.hpp"
+
+namespace t2imu {
+
+// `t2imu analysis lacc` output: bars of change_percent per group.
+void plot_lacc_change(const CsvTable& lacc, const std::string& png);
+// A t-SNE table (tsne_x, tsne_y) coloured by `colour_column` (e.g. source: real / synthetic); rows whose
+// `filter_column` value is not in `keep` are left out when keep is non-empty.
+void plot_tsne(const CsvTable& tsne, const std::string& colour_column, const std::string& png, const std::string& title,
+               const std::string& filter_column = "", const std::vector<std::string>& keep = {});
+// `t2imu har run` results: mean balanced accuracy with the standard deviation over runs, one bar per result.
+void plot_balanced_accuracy(const std::vector<std::pair<std::string, nlohmann::json>>& results, const std::string& png);
+// A result's summed confusion matrix, each row normalised to recall.
+void plot_confusion(const nlohmann::json& result, const std::string& png, const std::string& title);
+// An IMU recording (t, acc_xyz, gyr_xyz): accelerometer above, gyroscope below.
+void plot_imu_trace(const CsvTable& recording, const std::string& png, const std::string& title);
+
+}  // namespace t2imu

@@ -1,0 +1,175 @@
+#include "report/html_report.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "core/atomic_file.hpp"
+#include "core/csv.hpp"
+#include "core/error.hpp"
+#include "report/figures.hpp"
+
+namespace t2imu {
+
+namespace fs = std::filesystem;
+
+std::string base64(const std::vector<uint8_t>& bytes) {
+    static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (size_t i = 0; i < bytes.size(); i += 3) {
+        const uint32_t b = (uint32_t{bytes[i]} << 16) | (i + 1 < bytes.size() ? uint32_t{bytes[i + 1]} << 8 : 0u) |
+                           (i + 2 < bytes.size() ? uint32_t{bytes[i + 2]} : 0u);
+        out += table[(b >> 18) & 63];
+        out += table[(b >> 12) & 63];
+        out += i + 1 < bytes.size() ? table[(b >> 6) & 63] : '=';
+        out += i + 2 < bytes.size() ? table[b & 63] : '=';
+    }
+    return out;
+}
+
+namespace {
+
+std::string escape(const std::string& s) {
+    std::string out;
+    for (char c : s) {
+        if (c == '<') out += "&lt;";
+        else if (c == '>') out += "&gt;";
+        else if (c == '&') out += "&amp;";
+        else out += c;
+    }
+    return out;
+}
+
+struct Page {
+    std::string body;
+    std::string out_dir;
+    int figures = 0;
+
+    void figure(const std::string& png_name, const std::string& caption) {
+        const std::string path = out_dir + "/" + png_name;
+        body += "<figure><img src=\"data:image/png;base64," + base64(read_file_bytes(path)) + "\" alt=\"" + escape(caption) +
+                "\"><figcaption>" + escape(caption) + "</figcaption></figure>\n";
+        ++figures;
+    }
+};
+
+std::string stem(const fs::path& p) { return p.stem().string(); }
+
+bool has(const CsvTable& t, const char* column) { return t.has_column(column); }
+
+void har_section(const std::vector<std::pair<std::string, nlohmann::json>>& results, Page& page) {
+    if (results.empty()) return;
+    page.body += "<h2>Human activity recognition (DeepConvLSTM)</h2>\n<table><tr><th>result</th><th>balanced accuracy (%)</th>"
+                 "<th>macro F1 (%)</th><th>runs</th><th>classes</th></tr>\n";
+    char buf[256];
+    for (const auto& [name, r] : results) {
+        std::snprintf(buf, sizeof buf, "<tr><td>%s</td><td>%.1f &plusmn; %.1f</td><td>%.1f &plusmn; %.1f</td><td>%zu</td><td>%s</td></tr>\n",
+                      escape(name).c_str(), 100 * r["balanced_accuracy"]["mean"].get<double>(), 100 * r["balanced_accuracy"]["sd"].get<double>(),
+                      100 * r["macro_f1"]["mean"].get<double>(), 100 * r["macro_f1"]["sd"].get<double>(), r["balanced_accuracy"]["runs"].size(),
+                      escape(nlohmann::json(r["classes"]).dump()).c_str());
+        page.body += buf;
+    }
+    page.body += "</table>\n";
+    plot_balanced_accuracy(results, page.out_dir + "/balanced_accuracy.png");
+    page.figure("balanced_accuracy.png", "Balanced accuracy per result (Fig. 3)");
+    for (const auto& [name, r] : results) {
+        plot_confusion(r, page.out_dir + "/confusion_" + name + ".png", "Confusion (recall per true class): " + name);
+        page.figure("confusion_" + name + ".png", "Confusion matrix, " + name + " (rows: true class, summed over runs)");
+    }
+}
+
+}  // namespace
+
+ReportSummary write_report(const std::string& results_dir, const std::string& report_dir) {
+    if (!fs::is_directory(results_dir)) throw Error(results_dir, "folder", "a folder of results");
+    fs::create_directories(report_dir);
+    ReportSummary summary;
+    Page page;
+    page.out_dir = report_dir;
+    std::vector<fs::path> files;
+    for (const auto& e : fs::recursive_directory_iterator(results_dir))
+        if (e.is_regular_file()) files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    std::vector<std::pair<std::string, nlohmann::json>> har, gaps;
+    std::vector<std::pair<std::string, CsvTable>> lacc, tsne, traces;
+    for (const fs::path& p : files) {
+        if (p.extension() == ".json") {
+            nlohmann::json j;
+            try {
+                j = nlohmann::json::parse(read_file_text(p.string()));
+            } catch (const std::exception&) {
+                continue;  // not a result of ours
+            }
+            if (j.is_object() && j.contains("balanced_accuracy") && j.contains("confusion")) har.push_back({stem(p), j});
+            else if (j.is_object() && j.contains("classifier_two_sample_test")) gaps.push_back({stem(p), j});
+        } else if (p.extension() == ".csv") {
+            CsvTable t;
+            try {
+                t = read_csv(p.string());
+            } catch (const Error&) {
+                continue;
+            }
+            if (has(t, "group") && has(t, "change_percent")) lacc.push_back({stem(p), t});
+            else if (has(t, "tsne_x") && has(t, "tsne_y")) tsne.push_back({stem(p), t});
+            else if (!t.header.empty() && t.header[0] == "t" && has(t, "acc_x") && traces.size() < 3)
+                traces.push_back({fs::relative(p, results_dir).string(), t});
+        }
+    }
+    har_section(har, page);
+    for (const auto& [name, t] : lacc) {
+        page.body += "<h2>Acceleration loss per activity category</h2>\n";
+        plot_lacc_change(t, report_dir + "/lacc_" + name + ".png");
+        page.figure("lacc_" + name + ".png", "Change of L_acc after fine-tuning per category (Fig. 1): " + name);
+    }
+    for (const auto& [name, t] : tsne) {
+        page.body += "<h2>t-SNE of catch22 features</h2>\n";
+        std::string colour = has(t, "source") ? "source" : "";
+        for (const std::string& h : t.header)
+            if (colour.empty() && h != "tsne_x" && h != "tsne_y") colour = h;
+        plot_tsne(t, colour, report_dir + "/tsne_" + name + ".png", "t-SNE, all windows: " + name);
+        page.figure("tsne_" + name + ".png", "t-SNE of all windows, coloured by " + colour + " (Fig. 2): " + name);
+        if (has(t, "activity")) {
+            const std::vector<std::string> high = {"running", "jogging", "jumping", "dancing"};
+            try {
+                plot_tsne(t, colour, report_dir + "/tsne_high_" + name + ".png", "t-SNE, high-dynamic activities: " + name, "activity", high);
+                page.figure("tsne_high_" + name + ".png", "t-SNE of high-dynamic activities (running, jumping, dancing): " + name);
+            } catch (const Error&) {
+                // no high-dynamic windows in this table
+            }
+        }
+        ++summary.tsne_tables;
+    }
+    if (!gaps.empty()) {
+        page.body += "<h2>Domain gap (real vs synthetic)</h2>\n<table><tr><th>result</th><th>two-sample balanced accuracy</th><th>most different feature (KS)</th></tr>\n";
+        char buf[512];
+        for (const auto& [name, g] : gaps) {
+            const auto& top = g["per_feature"].empty() ? nlohmann::json::object() : g["per_feature"][0];
+            std::snprintf(buf, sizeof buf, "<tr><td>%s</td><td>%.3f</td><td>%s (%.3f)</td></tr>\n", escape(name).c_str(),
+                          g["classifier_two_sample_test"]["balanced_accuracy"].get<double>(),
+                          escape(top.value("feature", std::string("-"))).c_str(), top.value("ks", 0.0));
+            page.body += buf;
+        }
+        page.body += "</table><p>0.5 = a classifier cannot tell real from synthetic windows; 1.0 = fully separable.</p>\n";
+    }
+    for (size_t i = 0; i < traces.size(); ++i) {
+        if (i == 0) page.body += "<h2>IMU traces</h2>\n";
+        const std::string png = "trace_" + std::to_string(i) + ".png";
+        plot_imu_trace(traces[i].second, report_dir + "/" + png, traces[i].first);
+        page.figure(png, "IMU signals: " + traces[i].first);
+    }
+    const std::string html = "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>t2imu report</title><style>"
+                             "body{font-family:sans-serif;max-width:1000px;margin:2em auto;}img{max-width:100%;}"
+                             "table{border-collapse:collapse;}td,th{border:1px solid #ccc;padding:4px 8px;}</style></head><body>\n"
+                             "<h1>t2imu report</h1>\n<p>Results from " + escape(results_dir) + "</p>\n" + page.body + "</body></html>\n";
+    write_file_atomic(report_dir + "/index.html", html);
+    summary.figures = page.figures;
+    summary.har_results = static_cast<int>(har.size());
+    summary.lacc_tables = static_cast<int>(lacc.size());
+    summary.gap_results = static_cast<int>(gaps.size());
+    summary.traces = static_cast<int>(traces.size());
+    return summary;
+}
+
+}  // namespace t2imu

@@ -1,0 +1,26 @@
+// `t2imu report`: every result file found under a folder -> PNG figures and one self-contained HTML page
+// (the figures embedded as base64 data URIs, so the page can be mailed or archived alone).
+//
+// Recognised by content, anywhere under the folder:
+//   HAR results (JSON with balanced_accuracy and confusion)  -> balanced accuracy per result, confusion matrices
+//   L_acc analyses (CSV with group, change_percent)          -> L_acc change per category
+//   t-SNE tables (CSV with tsne_x, tsne_y)                    -> scatter by `source` (or the first label column),
+//                                                               and for high-dynamic activities when labelled
+//   domain-gap results (JSON with classifier_two_sample_test) -> a table
+//   IMU recordings (CSV starting t,acc_x,...)                  -> traces of the first three
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace t2imu {
+
+struct ReportSummary {
+    int figures = 0, har_results = 0, lacc_tables = 0, tsne_tables = 0, gap_results = 0, traces = 0;
+};
+
+ReportSummary write_report(const std::string& results_dir, const std::string& report_dir);
+
+std::string base64(const std::vector<uint8_t>& bytes);
+
+}  // namespace t2imu
