@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "core/error.hpp"
 #include "core/npy.hpp"
@@ -67,6 +68,23 @@ void Hml3dDataset::seed(uint64_t seed) {
     for (size_t i = 0; i < order_.size(); ++i) order_[i] = i;
     std::shuffle(order_.begin(), order_.end(), rng_);
     cursor_ = 0;
+}
+
+std::string Hml3dDataset::state() const {
+    std::ostringstream out;
+    out << rng_ << ' ' << cursor_ << ' ' << order_.size();
+    for (size_t i : order_) out << ' ' << i;
+    return out.str();
+}
+
+void Hml3dDataset::restore_state(const std::string& state) {
+    std::istringstream in(state);
+    size_t n = 0;
+    in >> rng_ >> cursor_ >> n;
+    if (!in || n != clips_.size()) throw Error("dataset state", "clips", std::to_string(clips_.size()), std::to_string(n));
+    order_.resize(n);
+    for (size_t& i : order_) in >> i;
+    if (!in || cursor_ > n) throw Error("dataset state", "order", "a saved draw state");
 }
 
 Batch Hml3dDataset::next_batch(int batch_size) {

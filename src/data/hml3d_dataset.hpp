@@ -51,6 +51,10 @@ public:
     // The next batch of an endless sequence of seeded epochs: each epoch visits every clip once, shuffled.
     Batch next_batch(int batch_size);
     void seed(uint64_t seed);
+    // The draw state (generator, epoch order, position) as text, so a resumed training continues the same
+    // sequence of batches.
+    std::string state() const;
+    void restore_state(const std::string& state);
 
 private:
     std::vector<MotionClip> clips_;

@@ -1,0 +1,39 @@
+// t2imu train | finetune: MDM with the default text encoder on a HumanML3D-layout dataset (trainer.hpp).
+#include <cstdio>
+
+#include "cli/command.hpp"
+#include "diffusion/trainer.hpp"
+
+namespace t2imu::cli {
+
+namespace {
+
+void run(const std::string& config_path, bool resume, const std::string& from, int64_t steps_override) {
+    TrainConfig c = read_train_config(config_path);
+    c.threads = worker_threads();
+    if (steps_override > 0) c.steps = steps_override;
+    const TrainProgress p = train_mdm(c, resume, from);
+    std::printf("%s: step %lld, last loss %.5f\n", c.out.c_str(), static_cast<long long>(p.step), p.loss);
+}
+
+}  // namespace
+
+static CommandRegistrar registrar([](CLI::App& root) {
+    auto* train = root.add_subcommand("train", "train MDM + the GloVe text encoder (TOML config) into a model folder");
+    static std::string config, from;
+    static bool resume = false;
+    static int64_t steps = 0;
+    train->add_option("--config", config, "training configuration (TOML)")->required()->check(CLI::ExistingFile);
+    train->add_flag("--resume", resume, "continue from the model folder's checkpoint.pt");
+    train->add_option("--steps", steps, "override train.steps");
+    train->callback([] { run(config, resume, "", steps); });
+
+    auto* finetune = root.add_subcommand("finetune", "start from a trained model folder (e.g. adding lambda_acc) with a fresh optimiser");
+    finetune->add_option("--from", from, "the model folder to start from")->required()->check(CLI::ExistingDirectory);
+    finetune->add_option("--config", config, "fine-tuning configuration (TOML; its out is the new folder)")->required()->check(CLI::ExistingFile);
+    finetune->add_flag("--resume", resume, "continue an interrupted fine-tuning from its checkpoint");
+    finetune->add_option("--steps", steps, "override train.steps");
+    finetune->callback([] { run(config, resume, resume ? "" : from, steps); });
+});
+
+}  // namespace t2imu::cli

@@ -1,0 +1,61 @@
+// Training and fine-tuning MDM with the default text encoder on a HumanML3D-layout dataset, with the paper's
+// loss: L = L_simple + lambda_pos L_pos + lambda_vel L_vel + lambda_foot L_foot + lambda_acc L_acc.
+//
+// Every step: a batch (MDM's crop and caption rules, hml3d_dataset.hpp), t uniform in [0, T), x_t = q_sample,
+// the captions encoded (each replaced by the empty caption with probability cond_dropout, which encodes to
+// MDM's zero text feature: classifier-free guidance), x0_hat = MDM(x_t, t, text), then, each masked to valid
+// frames: L_simple = MSE(x0_hat, x0) on normalised features; L_pos = MSE of joint positions (metres) from a
+// differentiable recover_from_ric of the de-normalised features; L_vel = MDM's velocity term on the features;
+// L_foot = squared predicted velocity of the four foot joints where the ground truth's contact flag is 1;
+// L_acc = the paper's second-difference loss, on the normalised features or on joint positions (acc_space).
+// AdamW; optional EMA of the weights. Checkpoints (model, optimiser, EMA, step, both random generators'
+// states, the dataset's draw state) are written atomically every save_every steps and at the end, so a run
+// resumed after a kill continues on the same trajectory. Metrics go to metrics.jsonl, one line per log step.
+#pragma once
+#include <cstdint>
+#include <string>
+
+#include "diffusion/glove_text_encoder.hpp"
+#include "diffusion/mdm.hpp"
+
+namespace t2imu {
+
+struct TrainConfig {
+    std::string dataset, out, vocab, split = "train";
+    MdmConfig mdm;                 // latent_dim, ff_size, num_layers, num_heads, dropout (text_dim = text.out_dim)
+    GloveEncoderConfig text;
+    int diffusion_steps = 1000;
+    int batch = 32;
+    int64_t steps = 10000;
+    double learning_rate = 1e-4, weight_decay = 0.0, cond_dropout = 0.1, ema_decay = 0.0;
+    double lambda_pos = 0, lambda_vel = 0, lambda_foot = 0, lambda_acc = 0;
+    std::string acc_space = "features";  // or "joints"
+    int64_t save_every = 1000, log_every = 50;
+    uint64_t seed = 0;
+    int threads = 0;
+};
+
+// TOML: [data] dataset, vocab, split; [model] latent_dim, ff_size, num_layers, num_heads, dropout;
+// [text] model_dim, layers, heads, ff_size; [diffusion] steps; [train] batch, steps, learning_rate,
+// weight_decay, cond_dropout, ema_decay, seed, save_every, log_every; [loss] lambda_pos, lambda_vel,
+// lambda_foot, lambda_acc, acc_space; `out` at the top level (the model folder). Unknown keys are refused.
+TrainConfig read_train_config(const std::string& path);
+
+struct TrainProgress {
+    int64_t step = 0;
+    double loss = 0;  // the last logged total
+};
+
+// Trains into config.out (model.json, weights.safetensors, Mean.npy, Std.npy, checkpoint.pt, metrics.jsonl).
+// resume: continue from config.out/checkpoint.pt. init_from: start from another model folder's weights
+// (fine-tuning), with a fresh optimiser. `stop_after` > 0 ends after that many steps of this call (tests).
+TrainProgress train_mdm(const TrainConfig& config, bool resume, const std::string& init_from = "", int64_t stop_after = 0);
+
+// The per-step loss terms for one batch, exposed for tests: every term averaged over the batch.
+struct LossTerms {
+    torch::Tensor simple, pos, vel, foot, acc, total;
+};
+LossTerms mdm_loss_terms(const torch::Tensor& x0, const torch::Tensor& x0_hat, const torch::Tensor& lengths,
+                         const torch::Tensor& mean, const torch::Tensor& std, const TrainConfig& config);
+
+}  // namespace t2imu

@@ -1,0 +1,151 @@
+// Training MDM: configuration, the loss terms, a run whose loss falls, resume equal to an uninterrupted run,
+// fine-tuning from a model folder, and weights that load by MDM's official names.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "core/npy.hpp"
+#include "core/safetensors.hpp"
+#include "diffusion/trainer.hpp"
+#include "motion/humanml3d.hpp"
+#include "motion/mocap_import.hpp"
+#include "test_util.hpp"
+
+using namespace t2imu;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A HumanML3D-layout dataset of six 60-frame clips cut from the example walk, two captions each, and a tiny
+// word-vector file.
+std::string make_dataset(const std::string& dir) {
+    fs::create_directories(dir + "/new_joint_vecs");
+    fs::create_directories(dir + "/texts");
+    const FeatureMatrix f = joints_to_features(import_motion(test::source_dir() + "/examples/cmu_07_05_slow_walk.bvh"));
+    std::ofstream train(dir + "/train.txt");
+    Eigen::VectorXd mean = Eigen::VectorXd::Zero(263), sq = Eigen::VectorXd::Zero(263);
+    for (int k = 0; k < 6; ++k) {
+        const FeatureMatrix clip = f.middleRows(k * 4, 60);
+        write_npy(dir + "/new_joint_vecs/c" + std::to_string(k) + ".npy", feature_matrix_to_array(clip));
+        std::ofstream(dir + "/texts/c" + std::to_string(k) + ".txt") << "a person walks forward slowly##0.0#0.0\nsomeone walks##0.0#0.0\n";
+        train << "c" << k << "\n";
+        mean += clip.colwise().mean().transpose() / 6;
+        sq += clip.array().square().colwise().mean().matrix().transpose() / 6;
+    }
+    const Eigen::VectorXd sd = (sq - mean.cwiseProduct(mean)).cwiseMax(1e-4).cwiseSqrt();
+    write_npy(dir + "/Mean.npy", NdArray::from(std::vector<double>(mean.data(), mean.data() + 263), {263}));
+    write_npy(dir + "/Std.npy", NdArray::from(std::vector<double>(sd.data(), sd.data() + 263), {263}));
+    const std::vector<std::string> words = {"a", "person", "walks", "forward", "slowly", "someone"};
+    std::vector<float> v(words.size() * 100);
+    for (size_t i = 0; i < v.size(); ++i) v[i] = static_cast<float>(std::cos(0.3 * static_cast<double>(i)));
+    WordVectors(words, v).save(dir + "/vocab.safetensors");
+    return dir;
+}
+
+std::string write_config(const std::string& dir, const std::string& data, const std::string& out, const std::string& extra = "") {
+    const std::string path = dir + "/" + fs::path(out).filename().string() + ".toml";
+    std::ofstream(path) << "out = \"" << out << "\"\n[data]\ndataset = \"" << data << "\"\nvocab = \"" << data << "/vocab.safetensors\"\n"
+                        << "[model]\nlatent_dim = 32\nff_size = 64\nnum_layers = 2\nnum_heads = 2\ndropout = 0.0\n"
+                        << "[text]\nmodel_dim = 16\nlayers = 1\nheads = 2\nff_size = 32\n[diffusion]\nsteps = 50\n"
+                        << "[train]\nbatch = 4\nsteps = 40\nlearning_rate = 1e-3\nseed = 3\nsave_every = 10\nlog_every = 5\n" << extra;
+    return path;
+}
+
+std::vector<float> weights(const std::string& model_dir) {
+    std::vector<float> all;
+    for (const auto& [name, a] : read_safetensors(model_dir + "/weights.safetensors").tensors) {
+        const std::vector<float> v = a.to<float>();
+        all.insert(all.end(), v.begin(), v.end());
+    }
+    return all;
+}
+
+}  // namespace
+
+TEST(Trainer, ConfigIsStrict) {
+    const std::string dir = test::scratch_dir("trainer_config");
+    const std::string good = write_config(dir, "/data", dir + "/m", "[loss]\nlambda_acc = 1.0\nacc_space = \"joints\"\n");
+    const TrainConfig c = read_train_config(good);
+    EXPECT_EQ(c.mdm.latent_dim, 32);
+    EXPECT_DOUBLE_EQ(c.lambda_acc, 1.0);
+    EXPECT_EQ(c.acc_space, "joints");
+    EXPECT_EQ(c.batch, 4);
+    std::ofstream(dir + "/bad.toml") << read_file_text(good) << "learnig_rate = 3\n";  // typo inside [loss]
+    EXPECT_THROW(read_train_config(dir + "/bad.toml"), Error);
+    std::ofstream(dir + "/bad2.toml") << read_file_text(good) << "[loss2]\n";
+    EXPECT_THROW(read_train_config(dir + "/bad2.toml"), Error);
+}
+
+TEST(Trainer, LossTermsVanishForAPerfectPredictionAndMatchTheirDefinitions) {
+    torch::manual_seed(0);
+    const FeatureMatrix f = joints_to_features(import_motion(test::source_dir() + "/examples/cmu_07_05_slow_walk.bvh"));
+    torch::Tensor x = torch::zeros({2, 60, 263});
+    for (int b = 0; b < 2; ++b)
+        for (int t = 0; t < 60; ++t)
+            for (int c = 0; c < 263; ++c) x[b][t][c] = static_cast<float>(f(t + b * 5, c));
+    const torch::Tensor mean = torch::zeros({263}), std = torch::ones({263}), lengths = torch::tensor({60, 48});
+    TrainConfig c;
+    c.lambda_pos = c.lambda_vel = c.lambda_foot = c.lambda_acc = 1;
+    const LossTerms same = mdm_loss_terms(x, x, lengths, mean, std, c);
+    for (const torch::Tensor* term : {&same.simple, &same.pos, &same.vel, &same.acc}) EXPECT_EQ(term->item<double>(), 0.0);
+    // L_foot is no comparison: it penalises the prediction's own foot velocity during ground contact.
+    EXPECT_NEAR(same.total.item<double>(), same.foot.item<double>(), 1e-12);
+    // A constant offset on every feature: L_simple = offset^2, no velocity or acceleration error.
+    const LossTerms shifted = mdm_loss_terms(x, x + 0.1, lengths, mean, std, c);
+    EXPECT_NEAR(shifted.simple.item<double>(), 0.01, 1e-6);
+    EXPECT_NEAR(shifted.acc.item<double>(), 0.0, 1e-9);
+    EXPECT_GT(shifted.pos.item<double>(), 0.0);
+    c.acc_space = "joints";
+    const LossTerms noisy = mdm_loss_terms(x, x + 0.05 * torch::randn_like(x), lengths, mean, std, c);
+    EXPECT_GT(noisy.acc.item<double>(), 0.0);
+    EXPECT_GT(noisy.foot.item<double>(), 0.0);  // feet with contact move in the noisy prediction
+}
+
+TEST(Trainer, LossFallsResumeContinuesExactlyAndFinetuneStartsFromTheWeights) {
+    torch::set_num_threads(1);
+    const std::string dir = test::scratch_dir("trainer_run");
+    const std::string data = make_dataset(dir + "/data");
+    const std::string straight = write_config(dir, data, dir + "/straight", "[loss]\nlambda_vel = 1.0\n");
+    const TrainProgress full = train_mdm(read_train_config(straight), false);
+    EXPECT_EQ(full.step, 40);
+    // The loss falls: first logged total vs the mean of the last three.
+    std::ifstream metrics(dir + "/straight/metrics.jsonl");
+    std::vector<double> losses;
+    for (std::string line; std::getline(metrics, line);) losses.push_back(nlohmann::json::parse(line)["loss"].get<double>());
+    ASSERT_EQ(losses.size(), 8u);
+    EXPECT_LT((losses[5] + losses[6] + losses[7]) / 3, 0.7 * losses[0]);
+    for (const char* f : {"model.json", "weights.safetensors", "text_encoder.safetensors", "Mean.npy", "Std.npy", "checkpoint.pt"})
+        EXPECT_TRUE(fs::exists(dir + "/straight/" + std::string(f))) << f;
+
+    // The same run stopped after 20 steps and resumed: the same weights as the uninterrupted one.
+    const std::string interrupted = write_config(dir, data, dir + "/resumed", "[loss]\nlambda_vel = 1.0\n");
+    train_mdm(read_train_config(interrupted), false, "", 20);
+    const TrainProgress resumed = train_mdm(read_train_config(interrupted), true);
+    EXPECT_EQ(resumed.step, 40);
+    const std::vector<float> a = weights(dir + "/straight"), b = weights(dir + "/resumed");
+    ASSERT_EQ(a.size(), b.size());
+    double worst = 0;
+    for (size_t i = 0; i < a.size(); ++i) worst = std::max(worst, static_cast<double>(std::fabs(a[i] - b[i])));
+    EXPECT_LT(worst, 1e-6);
+
+    // The official MDM loader accepts the weights by name.
+    MdmConfig mc;
+    mc.latent_dim = 32;
+    mc.ff_size = 64;
+    mc.num_layers = 2;
+    mc.num_heads = 2;
+    Mdm mdm(mc);
+    EXPECT_NO_THROW(load_mdm_weights(mdm, dir + "/straight/weights.safetensors"));
+
+    // Fine-tuning with L_acc from the trained model: step count restarts, starting loss already low.
+    const std::string tune = write_config(dir, data, dir + "/tuned", "[loss]\nlambda_acc = 1.0\n");
+    train_mdm(read_train_config(tune), false, dir + "/straight", 5);
+    std::ifstream tuned(dir + "/tuned/metrics.jsonl");
+    std::string first;
+    std::getline(tuned, first);
+    EXPECT_LT(nlohmann::json::parse(first)["l_simple"].get<double>(), losses[0]);
+}
