@@ -1,0 +1,88 @@
+// t2imu sample: prompts -> motions (HumanML3D features and joints .npy) from a trained model folder.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "cli/command.hpp"
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "core/npy.hpp"
+#include "diffusion/text_to_motion.hpp"
+#include "diffusion/torch_threads.hpp"
+#include "motion/humanml3d.hpp"
+
+namespace t2imu::cli {
+
+namespace {
+
+struct SampleArgs {
+    std::string model, prompt, prompts, out;
+    double seconds = 0;
+    int frames = 0;
+    SampleOptions options;
+};
+
+// A prompts file: one prompt per line, or `activity<TAB>prompt` (the activity is recorded); # starts a comment.
+std::vector<std::pair<std::string, std::string>> read_prompts(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw Error(path, "file", "a readable prompts file");
+    std::vector<std::pair<std::string, std::string>> out;
+    for (std::string line; std::getline(in, line);) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (line.empty() || line[0] == '#') continue;
+        const size_t tab = line.find('\t');
+        out.push_back(tab == std::string::npos ? std::make_pair(std::string(), line) : std::make_pair(line.substr(0, tab), line.substr(tab + 1)));
+    }
+    if (out.empty()) throw Error(path, "prompts", "at least one prompt");
+    return out;
+}
+
+void run(SampleArgs a) {
+    if (a.prompt.empty() == a.prompts.empty()) throw Error("sample", "prompt", "either --prompt TEXT or --prompts FILE");
+    if (a.seconds > 0 && a.frames > 0) throw Error("sample", "length", "either --seconds or --frames");
+    a.options.frames = a.frames > 0 ? a.frames : a.seconds > 0 ? static_cast<int>(std::lround(a.seconds * 20)) : 120;
+    set_torch_threads(worker_threads());
+    const auto prompts = a.prompt.empty() ? read_prompts(a.prompts) : std::vector<std::pair<std::string, std::string>>{{"", a.prompt}};
+    std::unique_ptr<MotionModel> model = load_motion_model(a.model);
+    std::vector<std::string> texts;
+    for (const auto& p : prompts) texts.push_back(p.second);
+    const std::vector<FeatureMatrix> motions = sample_motions(*model, texts, a.options);
+    std::filesystem::create_directories(a.out);
+    nlohmann::json record = {{"model", std::filesystem::absolute(a.model).string()}, {"model_training", model->meta.value("training", nlohmann::json{})},
+                             {"sampler", a.options.sampler}, {"steps", a.options.sampler == "ddpm" ? model->schedule.steps : a.options.steps},
+                             {"guidance", a.options.guidance}, {"eta", a.options.eta}, {"frames", a.options.frames}, {"fps", 20},
+                             {"seed", a.options.seed}, {"samples", nlohmann::json::array()}};
+    char name[32];
+    for (size_t i = 0; i < motions.size(); ++i) {
+        std::snprintf(name, sizeof name, "%04zu", i);
+        write_npy(a.out + "/" + name + "_features.npy", feature_matrix_to_array(motions[i]));
+        write_npy(a.out + "/" + name + "_joints.npy", joint_sequence_to_array(recover_from_ric(motions[i])));
+        record["samples"].push_back({{"id", name}, {"prompt", prompts[i].second}, {"activity", prompts[i].first}, {"seed", a.options.seed + i}});
+    }
+    write_file_atomic(a.out + "/samples.json", record.dump(2) + "\n");
+    std::printf("%s: %zu motions of %d frames (%s, guidance %g)\n", a.out.c_str(), motions.size(), a.options.frames, a.options.sampler.c_str(),
+                a.options.guidance);
+}
+
+}  // namespace
+
+static CommandRegistrar registrar([](CLI::App& root) {
+    auto* cmd = root.add_subcommand("sample", "prompts -> motions (features and joints .npy + samples.json) from a model folder");
+    static SampleArgs a;
+    cmd->add_option("--model", a.model, "model folder (t2imu train)")->required()->check(CLI::ExistingDirectory);
+    cmd->add_option("--prompt", a.prompt, "one prompt");
+    cmd->add_option("--prompts", a.prompts, "prompts file: one per line, or activity<TAB>prompt");
+    cmd->add_option("--seconds", a.seconds, "length in seconds (20 fps)");
+    cmd->add_option("--frames", a.frames, "length in frames (at most 196; default 120)");
+    cmd->add_option("--sampler", a.options.sampler, "ddpm (default), ddim or dpmpp")->check(CLI::IsMember({"ddpm", "ddim", "dpmpp"}));
+    cmd->add_option("--steps", a.options.steps, "denoiser evaluations for ddim/dpmpp (default 50)");
+    cmd->add_option("--guidance", a.options.guidance, "classifier-free guidance scale (default 2.5)");
+    cmd->add_option("--eta", a.options.eta, "ddim noise (0 = deterministic)");
+    cmd->add_option("--seed", a.options.seed, "seed of sample 0; sample i uses seed + i");
+    cmd->add_option("--batch", a.options.batch, "prompts per batch (does not change the samples)");
+    cmd->add_option("--out", a.out, "output folder")->required();
+    cmd->callback([] { run(a); });
+});
+
+}  // namespace t2imu::cli

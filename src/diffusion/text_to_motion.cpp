@@ -1,0 +1,102 @@
+#include "diffusion/text_to_motion.hpp"
+
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "core/safetensors.hpp"
+#include "diffusion/samplers.hpp"
+
+namespace t2imu {
+
+namespace {
+
+void load_strict(torch::nn::Module& m, const std::string& path) {
+    const SafeTensors st = read_safetensors(path);
+    torch::NoGradGuard no_grad;
+    size_t used = 0;
+    for (auto& p : m.named_parameters()) {
+        const auto it = st.tensors.find(p.key());
+        if (it == st.tensors.end() || it->second.shape != std::vector<int64_t>(p.value().sizes().begin(), p.value().sizes().end()))
+            throw Error(path, p.key(), "a tensor of shape " + c10::str(p.value().sizes()), it == st.tensors.end() ? "missing" : it->second.shape_str());
+        std::vector<float> v = it->second.to<float>();
+        p.value().copy_(torch::from_blob(v.data(), it->second.shape, torch::kFloat));
+        ++used;
+    }
+    if (used != st.tensors.size()) throw Error(path, "tensors", std::to_string(used) + " parameters", std::to_string(st.tensors.size()));
+}
+
+}  // namespace
+
+std::unique_ptr<MotionModel> load_motion_model(const std::string& dir) {
+    auto model = std::make_unique<MotionModel>();
+    try {
+        model->meta = nlohmann::json::parse(read_file_text(dir + "/model.json"));
+        const auto& m = model->meta.at("mdm");
+        MdmConfig mc;
+        mc.latent_dim = m.at("latent_dim");
+        mc.ff_size = m.at("ff_size");
+        mc.num_layers = m.at("num_layers");
+        mc.num_heads = m.at("num_heads");
+        mc.dropout = m.at("dropout");
+        mc.text_dim = m.at("text_dim");
+        mc.mask_frames = m.at("mask_frames");
+        const auto& t = model->meta.at("text_encoder");
+        if (t.at("kind") != "glove_transformer") throw Error(dir + "/model.json", "text_encoder.kind", "glove_transformer", t.at("kind").dump());
+        GloveEncoderConfig tc;
+        tc.model_dim = t.at("model_dim");
+        tc.layers = t.at("layers");
+        tc.heads = t.at("heads");
+        tc.ff_size = t.at("ff_size");
+        tc.out_dim = t.at("out_dim");
+        model->vocab = std::make_unique<WordVectors>(WordVectors::load(t.at("vocab").get<std::string>()));
+        model->mdm = Mdm(mc);
+        model->text = GloveTextEncoder(*model->vocab, tc);
+        model->schedule = cosine_schedule(model->meta.at("diffusion").at("steps"));
+    } catch (const nlohmann::json::exception& e) {
+        throw Error(dir + "/model.json", "json", "a t2imu model description", e.what());
+    }
+    load_mdm_weights(model->mdm, dir + "/weights.safetensors");
+    load_strict(*model->text, dir + "/text_encoder.safetensors");
+    model->stats = read_feature_stats(dir + "/Mean.npy", dir + "/Std.npy");
+    model->mdm->eval();
+    model->text->eval();
+    return model;
+}
+
+std::vector<FeatureMatrix> sample_motions(MotionModel& model, const std::vector<std::string>& prompts, const SampleOptions& o) {
+    if (o.frames < 4 || o.frames > 196) throw Error("sample", "frames", "4 to 196 (20 fps)", std::to_string(o.frames));
+    if (o.sampler != "ddpm" && o.sampler != "ddim" && o.sampler != "dpmpp") throw Error("sample", "sampler", "ddpm, ddim or dpmpp", o.sampler);
+    torch::NoGradGuard no_grad;
+    const GaussianDiffusion diffusion(model.schedule);
+    std::vector<FeatureMatrix> out;
+    for (size_t start = 0; start < prompts.size(); start += static_cast<size_t>(std::max(o.batch, 1))) {
+        const size_t n = std::min(prompts.size() - start, static_cast<size_t>(std::max(o.batch, 1)));
+        const std::vector<std::string> batch(prompts.begin() + static_cast<std::ptrdiff_t>(start), prompts.begin() + static_cast<std::ptrdiff_t>(start + n));
+        std::vector<torch::Generator> gens;
+        for (size_t i = 0; i < n; ++i) gens.push_back(at::detail::createCPUGenerator(o.seed + start + i));
+        const NoiseSource noise = [&gens](const torch::Tensor& like) {
+            std::vector<torch::Tensor> rows;
+            for (size_t i = 0; i < gens.size(); ++i) rows.push_back(torch::randn(like[0].sizes(), gens[i], like.options()));
+            return torch::stack(rows);
+        };
+        const torch::Tensor x_T = noise(torch::zeros({static_cast<int64_t>(n), 263, 1, o.frames}));
+        const torch::Tensor text = model.text->encode(batch);
+        const torch::Tensor lengths = torch::full({static_cast<int64_t>(n)}, o.frames, torch::kInt64);
+        const X0Predictor denoiser = [&](const torch::Tensor& x, const torch::Tensor& t) {
+            return model.mdm->forward_guided(x, t, text, o.guidance, lengths);
+        };
+        torch::Tensor x0;
+        if (o.sampler == "ddpm") x0 = sample_ddpm(diffusion, denoiser, x_T, noise);
+        else if (o.sampler == "ddim") x0 = sample_ddim(model.schedule, denoiser, x_T, o.steps, o.eta, noise);
+        else x0 = sample_dpmpp_2m(model.schedule, denoiser, x_T, o.steps);
+        const torch::Tensor frames = x0.squeeze(2).permute({0, 2, 1}).contiguous().to(torch::kFloat64);  // [n, F, 263], normalised
+        for (size_t i = 0; i < n; ++i) {
+            FeatureMatrix f(o.frames, 263);
+            std::memcpy(f.data(), frames[static_cast<int64_t>(i)].data_ptr<double>(), sizeof(double) * static_cast<size_t>(o.frames) * 263);
+            for (Eigen::Index c = 0; c < 263; ++c) f.col(c) = (f.col(c).array() * model.stats.std[c] + model.stats.mean[c]).matrix();
+            out.push_back(std::move(f));
+        }
+    }
+    return out;
+}
+
+}  // namespace t2imu

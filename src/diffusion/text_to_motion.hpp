@@ -1,0 +1,47 @@
+// A trained model folder (trainer.hpp's model.json, weights.safetensors, text_encoder.safetensors, Mean.npy,
+// Std.npy) turned into motions for prompts: classifier-free guidance (one batched conditional and
+// unconditional pass per step), any of the samplers (samplers.hpp), de-normalised HumanML3D features.
+//
+// Reproducibility: sample i of a call draws its x_T and every step's noise from its own generator seeded with
+// seed + i, so a sample does not change with the other prompts of the call, nor with the batch size beyond
+// float rounding (batched matrix products round differently); the same call gives the same bytes.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "diffusion/glove_text_encoder.hpp"
+#include "diffusion/mdm.hpp"
+#include "diffusion/noise_schedule.hpp"
+#include "motion/joint_sequence.hpp"
+#include "motion/normalization.hpp"
+
+namespace t2imu {
+
+struct MotionModel {
+    std::unique_ptr<WordVectors> vocab;  // the text encoder keeps a reference: declared first, destroyed last
+    Mdm mdm{nullptr};
+    GloveTextEncoder text{nullptr};
+    NoiseSchedule schedule;
+    FeatureStats stats;
+    nlohmann::json meta;  // model.json
+};
+
+std::unique_ptr<MotionModel> load_motion_model(const std::string& dir);
+
+struct SampleOptions {
+    int frames = 120;              // 20 fps; at most 196 (HumanML3D's longest)
+    std::string sampler = "ddpm";  // ddpm | ddim | dpmpp
+    int steps = 50;                // denoiser evaluations for ddim and dpmpp (ddpm uses every step)
+    double guidance = 2.5;
+    double eta = 0.0;              // ddim only
+    uint64_t seed = 0;
+    int batch = 16;
+};
+
+// One de-normalised feature matrix [frames, 263] per prompt.
+std::vector<FeatureMatrix> sample_motions(MotionModel& model, const std::vector<std::string>& prompts, const SampleOptions& options);
+
+}  // namespace t2imu
