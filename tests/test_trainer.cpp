@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.hpp"
+#include "core/csv.hpp"
 #include "core/error.hpp"
 #include "core/npy.hpp"
 #include "core/safetensors.hpp"
@@ -185,6 +186,20 @@ TEST(Trainer, SampleFromATrainedModelIsSeededAndBatchIndependent) {
     EXPECT_EQ(rec["samples"][1]["seed"], 8);
     EXPECT_EQ(rec["samples"][1]["activity"], "walking");
     for (double v : read_npy(dir + "/d/0000_joints.npy").to<double>()) ASSERT_TRUE(std::isfinite(v));
+    // Per-sample L_acc: identical draws for the same seed, so two models compare on the same noise; the
+    // analysis of a model against itself finds no change.
+    for (const char* name : {"l1.csv", "l2.csv"}) {
+        const auto r = test::run_cli("--threads 1 eval-lacc --model " + dir + "/model --dataset " + data + " --split train --seed 4 --out " + dir + "/" + name);
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+    }
+    EXPECT_EQ(read_file_text(dir + "/l1.csv"), read_file_text(dir + "/l2.csv"));
+    const CsvTable lacc = read_csv(dir + "/l1.csv");
+    ASSERT_EQ(lacc.rows.size(), 6u);
+    for (size_t i = 0; i < lacc.rows.size(); ++i) EXPECT_GE(lacc.number(i, lacc.column("l_acc")), 0.0);
+    const auto analysis = test::run_cli("analysis lacc --before " + dir + "/l1.csv --after " + dir + "/l2.csv --vocab " + data +
+                                        "/vocab.safetensors --tau 0.5 --out " + dir + "/change.csv");
+    ASSERT_EQ(analysis.exit_code, 0) << analysis.output;
+    EXPECT_NE(analysis.output.find("change 0.00 %"), std::string::npos) << analysis.output;
     const auto bad = test::run_cli("sample --model " + dir + "/model --prompt x --frames 500 --out " + dir + "/e");
     EXPECT_EQ(bad.exit_code, 1) << bad.output;
 }

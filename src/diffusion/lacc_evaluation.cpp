@@ -1,0 +1,40 @@
+#include "diffusion/lacc_evaluation.hpp"
+
+#include <cstdio>
+
+#include "data/hml3d_dataset.hpp"
+#include "diffusion/gaussian_diffusion.hpp"
+#include "diffusion/losses.hpp"
+
+namespace t2imu {
+
+CsvTable evaluate_lacc(MotionModel& model, const std::string& dataset, const std::string& split, uint64_t seed) {
+    torch::NoGradGuard no_grad;
+    const Hml3dDataset data(dataset, split);
+    const GaussianDiffusion diffusion(model.schedule);
+    CsvTable out;
+    out.header = {"id", "caption", "t", "l_acc"};
+    char buf[32];
+    for (size_t i = 0; i < data.clips().size(); ++i) {
+        const MotionClip& clip = data.clips()[i];
+        const int64_t frames = std::min<int64_t>(clip.features.rows(), kMaxMotionFrames);
+        // Normalised with the model's statistics: the space the model works in.
+        torch::Tensor x0 = torch::empty({1, frames, 263});
+        for (int64_t f = 0; f < frames; ++f)
+            for (int64_t c = 0; c < 263; ++c)
+                x0[0][f][c] = static_cast<float>((clip.features(f, c) - model.stats.mean[c]) / model.stats.std[c]);
+        torch::Generator gen = at::detail::createCPUGenerator(seed + i);
+        const torch::Tensor t = torch::randint(model.schedule.steps, {1}, gen, torch::kInt64);
+        const torch::Tensor x0_mdm = x0.permute({0, 2, 1}).unsqueeze(2);
+        const torch::Tensor x_t = diffusion.q_sample(x0_mdm, t, torch::randn(x0_mdm.sizes(), gen));
+        const std::string caption = clip.captions.front().caption;
+        const torch::Tensor lengths = torch::full({1}, frames, torch::kInt64);
+        const torch::Tensor x0_hat = model.mdm->forward(x_t, t, model.text->encode({caption}), false, lengths).squeeze(2).permute({0, 2, 1});
+        const double l = acceleration_loss(x0, x0_hat, frame_mask(lengths, frames)).item<double>();
+        std::snprintf(buf, sizeof buf, "%.8g", l);
+        out.rows.push_back({clip.id, caption, std::to_string(t.item<int64_t>()), buf});
+    }
+    return out;
+}
+
+}  // namespace t2imu
