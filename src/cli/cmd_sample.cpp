@@ -1,4 +1,5 @@
 // t2imu sample: prompts -> motions (HumanML3D features and joints .npy) from a trained model folder.
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -45,15 +46,18 @@ void run(SampleArgs a) {
     a.options.frames = a.frames > 0 ? a.frames : a.seconds > 0 ? static_cast<int>(std::lround(a.seconds * 20)) : 120;
     set_torch_threads(worker_threads());
     const auto prompts = a.prompt.empty() ? read_prompts(a.prompts) : std::vector<std::pair<std::string, std::string>>{{"", a.prompt}};
-    std::unique_ptr<MotionModel> model = load_motion_model(a.model);
+    std::unique_ptr<MotionModel> model = load_motion_model(a.model, global_options().device);
     std::vector<std::string> texts;
     for (const auto& p : prompts) texts.push_back(p.second);
+    const auto start = std::chrono::steady_clock::now();
     const std::vector<FeatureMatrix> motions = sample_motions(*model, texts, a.options);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::filesystem::create_directories(a.out);
     nlohmann::json record = {{"model", std::filesystem::absolute(a.model).string()}, {"model_training", model->meta.value("training", nlohmann::json{})},
                              {"sampler", a.options.sampler}, {"steps", a.options.sampler == "ddpm" ? model->schedule.steps : a.options.steps},
                              {"guidance", a.options.guidance}, {"eta", a.options.eta}, {"frames", a.options.frames}, {"fps", 20},
-                             {"seed", a.options.seed}, {"samples", nlohmann::json::array()}};
+                             {"seed", a.options.seed}, {"device", global_options().device}, {"sampling_seconds", seconds},
+                             {"samples", nlohmann::json::array()}};
     char name[32];
     for (size_t i = 0; i < motions.size(); ++i) {
         std::snprintf(name, sizeof name, "%04zu", i);
@@ -62,8 +66,9 @@ void run(SampleArgs a) {
         record["samples"].push_back({{"id", name}, {"prompt", prompts[i].second}, {"activity", prompts[i].first}, {"seed", a.options.seed + i}});
     }
     write_file_atomic(a.out + "/samples.json", record.dump(2) + "\n");
-    std::printf("%s: %zu motions of %d frames (%s, guidance %g)\n", a.out.c_str(), motions.size(), a.options.frames, a.options.sampler.c_str(),
-                a.options.guidance);
+    std::printf("%s: %zu motions of %d frames (%s, guidance %g) in %.2f s on %s (%.2f motions/s)\n", a.out.c_str(), motions.size(),
+                a.options.frames, a.options.sampler.c_str(), a.options.guidance, seconds, global_options().device.c_str(),
+                static_cast<double>(motions.size()) / std::max(seconds, 1e-9));
 }
 
 }  // namespace
@@ -79,7 +84,7 @@ static void add_eval_lacc(CLI::App& root) {
     cmd->add_option("--out", out, "output CSV")->required();
     cmd->callback([] {
         set_torch_threads(worker_threads());
-        std::unique_ptr<MotionModel> m = load_motion_model(model);
+        std::unique_ptr<MotionModel> m = load_motion_model(model, global_options().device);
         const CsvTable table = evaluate_lacc(*m, dataset, split, seed);
         write_csv(out, table);
         double mean = 0;

@@ -1,4 +1,5 @@
 // t2imu train | finetune: MDM with the default text encoder on a HumanML3D-layout dataset (trainer.hpp).
+#include <csignal>
 #include <cstdio>
 
 #include "cli/command.hpp"
@@ -8,9 +9,15 @@ namespace t2imu::cli {
 
 namespace {
 
+void on_stop_signal(int) { request_training_stop(); }
+
 void run(const std::string& config_path, bool resume, const std::string& from, int64_t steps_override) {
     TrainConfig c = read_train_config(config_path);
     c.threads = worker_threads();
+    c.device = global_options().device;
+    // Ctrl-C or a scheduler's SIGTERM: finish the step, save, exit normally (resume with --resume).
+    std::signal(SIGINT, on_stop_signal);
+    std::signal(SIGTERM, on_stop_signal);
     if (steps_override > 0) c.steps = steps_override;
     const TrainProgress p = train_mdm(c, resume, from);
     std::printf("%s: step %lld, last loss %.5f\n", c.out.c_str(), static_cast<long long>(p.step), p.loss);

@@ -44,6 +44,10 @@ int main(int argc, char** argv) {
         ->check(CLI::NonNegativeNumber)
         ->each([](const std::string&) { t2imu::set_torch_threads(worker_threads()); });
     app.add_flag("-v,--verbose", g_options.verbose, "progress and details on stderr");
+    app.add_option("--device", g_options.device, "where the diffusion model trains and samples: cpu, cuda, cuda:N (default cpu)")
+        ->check([](const std::string& d) {
+            return d == "cpu" || d.rfind("cuda", 0) == 0 ? std::string() : std::string("cpu, cuda or cuda:N");
+        });
     app.fallthrough();
     for (const CommandAdder& add : command_adders()) add(app);
     t2imu::set_torch_threads(worker_threads());

@@ -40,14 +40,19 @@ torch::Tensor GloveTextEncoderImpl::forward(const std::vector<std::vector<int>>&
             else index[b][k] = c[static_cast<size_t>(k)];
         }
     }
+    const torch::Device device = glove_.device();
+    index = index.to(device);
+    unknown = unknown.to(device);
+    valid = valid.to(device);
     const torch::Tensor words = glove_.index_select(0, index.flatten()).view({B, L, WordVectors::kDims});
     torch::Tensor h = words * (1 - unknown) + unknown * unknown_;              // [B, L, 100]
     h = project_in_->forward(h) + pe_.unsqueeze(0);                              // [B, L, d]
     const torch::Tensor padding = valid.eq(0);                                   // true = ignore
     // An empty caption would mask every key; give it one visible (zero) slot so attention stays defined.
-    torch::Tensor mask = padding.clone();
+    torch::Tensor empty = torch::zeros({B, L}, torch::kBool);
     for (int64_t b = 0; b < B; ++b)
-        if (captions[static_cast<size_t>(b)].empty()) mask[b][0] = false;
+        if (captions[static_cast<size_t>(b)].empty()) empty[b][0] = true;
+    const torch::Tensor mask = padding & ~empty.to(device);
     h = encoder_->forward(h.transpose(0, 1), {}, mask).transpose(0, 1);          // [B, L, d]
     const torch::Tensor weight = valid.unsqueeze(2);
     const torch::Tensor pooled = (h * weight).sum(1) / weight.sum(1).clamp_min(1.0);

@@ -9,7 +9,9 @@ namespace t2imu {
 
 namespace {
 
-torch::Tensor step_tensor(int t, const torch::Tensor& x) { return torch::full({x.size(0)}, t, torch::kInt64); }
+torch::Tensor step_tensor(int t, const torch::Tensor& x) {
+    return torch::full({x.size(0)}, t, torch::TensorOptions().dtype(torch::kInt64).device(x.device()));
+}
 
 }  // namespace
 

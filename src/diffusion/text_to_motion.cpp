@@ -1,5 +1,8 @@
 #include "diffusion/text_to_motion.hpp"
 
+#include <cstdlib>
+#include <filesystem>
+
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/safetensors.hpp"
@@ -24,9 +27,19 @@ void load_strict(torch::nn::Module& m, const std::string& path) {
     if (used != st.tensors.size()) throw Error(path, "tensors", std::to_string(used) + " parameters", std::to_string(st.tensors.size()));
 }
 
+std::string find_vocab(const std::string& dir, const std::string& written) {
+    namespace fs = std::filesystem;
+    if (fs::exists(written)) return written;
+    if (fs::exists(fs::path(dir) / written)) return (fs::path(dir) / written).string();
+    if (const char* env = std::getenv("T2IMU_VOCAB"); env && fs::exists(env)) return env;
+    throw Error(dir + "/model.json", "text_encoder.vocab",
+                "the GloVe vocabulary (scripts/setup.sh makes cache/text/glove-100k.safetensors; run from the repository root or set T2IMU_VOCAB)",
+                written);
+}
+
 }  // namespace
 
-std::unique_ptr<MotionModel> load_motion_model(const std::string& dir) {
+std::unique_ptr<MotionModel> load_motion_model(const std::string& dir, const std::string& device) {
     auto model = std::make_unique<MotionModel>();
     try {
         model->meta = nlohmann::json::parse(read_file_text(dir + "/model.json"));
@@ -47,7 +60,7 @@ std::unique_ptr<MotionModel> load_motion_model(const std::string& dir) {
         tc.heads = t.at("heads");
         tc.ff_size = t.at("ff_size");
         tc.out_dim = t.at("out_dim");
-        model->vocab = std::make_unique<WordVectors>(WordVectors::load(t.at("vocab").get<std::string>()));
+        model->vocab = std::make_unique<WordVectors>(WordVectors::load(find_vocab(dir, t.at("vocab").get<std::string>())));
         model->mdm = Mdm(mc);
         model->text = GloveTextEncoder(*model->vocab, tc);
         model->schedule = cosine_schedule(model->meta.at("diffusion").at("steps"));
@@ -57,6 +70,9 @@ std::unique_ptr<MotionModel> load_motion_model(const std::string& dir) {
     load_mdm_weights(model->mdm, dir + "/weights.safetensors");
     load_strict(*model->text, dir + "/text_encoder.safetensors");
     model->stats = read_feature_stats(dir + "/Mean.npy", dir + "/Std.npy");
+    model->device = torch::Device(device);
+    model->mdm->to(model->device);
+    model->text->to(model->device);
     model->mdm->eval();
     model->text->eval();
     return model;
@@ -75,12 +91,13 @@ std::vector<FeatureMatrix> sample_motions(MotionModel& model, const std::vector<
         for (size_t i = 0; i < n; ++i) gens.push_back(at::detail::createCPUGenerator(o.seed + start + i));
         const NoiseSource noise = [&gens](const torch::Tensor& like) {
             std::vector<torch::Tensor> rows;
-            for (size_t i = 0; i < gens.size(); ++i) rows.push_back(torch::randn(like[0].sizes(), gens[i], like.options()));
-            return torch::stack(rows);
+            // Drawn on the CPU whatever the device: a seed gives the same noise on every machine.
+            for (size_t i = 0; i < gens.size(); ++i) rows.push_back(torch::randn(like[0].sizes(), gens[i], torch::kFloat32));
+            return torch::stack(rows).to(like.device());
         };
-        const torch::Tensor x_T = noise(torch::zeros({static_cast<int64_t>(n), 263, 1, o.frames}));
+        const torch::Tensor x_T = noise(torch::zeros({static_cast<int64_t>(n), 263, 1, o.frames}, torch::TensorOptions().device(model.device)));
         const torch::Tensor text = model.text->encode(batch);
-        const torch::Tensor lengths = torch::full({static_cast<int64_t>(n)}, o.frames, torch::kInt64);
+        const torch::Tensor lengths = torch::full({static_cast<int64_t>(n)}, o.frames, torch::TensorOptions().dtype(torch::kInt64).device(model.device));
         const X0Predictor denoiser = [&](const torch::Tensor& x, const torch::Tensor& t) {
             return model.mdm->forward_guided(x, t, text, o.guidance, lengths);
         };
@@ -88,7 +105,7 @@ std::vector<FeatureMatrix> sample_motions(MotionModel& model, const std::vector<
         if (o.sampler == "ddpm") x0 = sample_ddpm(diffusion, denoiser, x_T, noise);
         else if (o.sampler == "ddim") x0 = sample_ddim(model.schedule, denoiser, x_T, o.steps, o.eta, noise);
         else x0 = sample_dpmpp_2m(model.schedule, denoiser, x_T, o.steps);
-        const torch::Tensor frames = x0.squeeze(2).permute({0, 2, 1}).contiguous().to(torch::kFloat64);  // [n, F, 263], normalised
+        const torch::Tensor frames = x0.squeeze(2).permute({0, 2, 1}).to(torch::kCPU, torch::kFloat64).contiguous();  // [n, F, 263], normalised
         for (size_t i = 0; i < n; ++i) {
             FeatureMatrix f(o.frames, 263);
             std::memcpy(f.data(), frames[static_cast<int64_t>(i)].data_ptr<double>(), sizeof(double) * static_cast<size_t>(o.frames) * 263);

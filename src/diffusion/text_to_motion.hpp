@@ -27,9 +27,13 @@ struct MotionModel {
     NoiseSchedule schedule;
     FeatureStats stats;
     nlohmann::json meta;  // model.json
+    torch::Device device{torch::kCPU};
 };
 
-std::unique_ptr<MotionModel> load_motion_model(const std::string& dir);
+// The model folder's text_encoder.vocab is a path as the training configuration gave it: tried as written
+// (absolute, or relative to the working directory), then relative to the model folder, then as
+// $T2IMU_VOCAB. `device` is cpu, cuda or cuda:N.
+std::unique_ptr<MotionModel> load_motion_model(const std::string& dir, const std::string& device = "cpu");
 
 struct SampleOptions {
     int frames = 120;              // 20 fps; at most 196 (HumanML3D's longest)

@@ -1,5 +1,6 @@
 #include "diffusion/trainer.hpp"
 
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -126,7 +127,7 @@ LossTerms mdm_loss_terms(const torch::Tensor& x0, const torch::Tensor& x0_hat, c
     if (c.lambda_foot > 0) {
         // Foot joints (left ankle, left foot, right ankle, right foot) and the ground truth's contact flags,
         // the last four feature channels in the same order.
-        const torch::Tensor feet = torch::tensor({7, 10, 8, 11}, torch::kInt64);
+        const torch::Tensor feet = torch::tensor({7, 10, 8, 11}, torch::kInt64).to(x0.device());
         const torch::Tensor j = joints_hat.view({x0.size(0), x0.size(1), 22, 3}).index_select(2, feet);
         const torch::Tensor velocity = j.slice(1, 1) - j.slice(1, 0, -1);                     // [B, F-1, 4, 3]
         const torch::Tensor contact = (x0 * std + mean).slice(2, 259, 263).slice(1, 0, -1).gt(0.5).to(x0.dtype());
@@ -150,7 +151,7 @@ namespace {
 void save_parameters(const torch::nn::Module& m, const std::string& path) {
     SafeTensors st;
     for (const auto& p : m.named_parameters()) {
-        const torch::Tensor v = p.value().detach().contiguous().to(torch::kFloat32);
+        const torch::Tensor v = p.value().detach().to(torch::kCPU, torch::kFloat32).contiguous();
         std::vector<float> data(v.data_ptr<float>(), v.data_ptr<float>() + v.numel());
         st.tensors[p.key()] = NdArray::from(data, std::vector<int64_t>(v.sizes().begin(), v.sizes().end()));
     }
@@ -207,7 +208,7 @@ void save_checkpoint(Training& tr, const Hml3dDataset& data, const std::string& 
     for (size_t i = 0; i < tr.ema.size(); ++i) archive.write("ema." + std::to_string(i), tr.ema[i]);
     archive.write("step", torch::tensor(tr.step));
     archive.write("generator", tr.generator.get_state());
-    archive.write("default_generator", at::detail::getDefaultCPUGenerator().get_state());  // dropout draws
+    archive.write("default_generator", at::detail::getDefaultCPUGenerator().get_state());  // dropout draws on the CPU
     std::ostringstream rng;
     rng << tr.dropout_rng;
     archive.write("dropout_rng", text_tensor(rng.str()));
@@ -217,9 +218,9 @@ void save_checkpoint(Training& tr, const Hml3dDataset& data, const std::string& 
     commit_temporary(tmp, path);
 }
 
-void load_checkpoint(Training& tr, Hml3dDataset& data, const std::string& path) {
+void load_checkpoint(Training& tr, Hml3dDataset& data, const std::string& path, const torch::Device& device) {
     torch::serialize::InputArchive archive;
-    archive.load_from(path);
+    archive.load_from(path, device);  // a checkpoint written on a GPU resumes on the CPU, and back
     torch::NoGradGuard no_grad;
     // A fresh tensor per read: the archive's storage cannot be resized into another shape.
     const auto read = [&](const std::string& key) {
@@ -234,9 +235,9 @@ void load_checkpoint(Training& tr, Hml3dDataset& data, const std::string& path) 
     tr.optimiser->load(optimiser);
     for (size_t i = 0; i < tr.ema.size(); ++i) tr.ema[i].copy_(read("ema." + std::to_string(i)));
     tr.step = read("step").item<int64_t>();
-    tr.generator.set_state(read("generator"));
+    tr.generator.set_state(read("generator").to(torch::kCPU));
     at::Generator global = at::detail::getDefaultCPUGenerator();  // a handle sharing the default generator
-    global.set_state(read("default_generator"));
+    global.set_state(read("default_generator").to(torch::kCPU));
     std::istringstream rng(tensor_text(read("dropout_rng")));
     rng >> tr.dropout_rng;
     data.restore_state(tensor_text(read("dataset")));
@@ -269,7 +270,7 @@ void write_model(const Training& tr, const TrainConfig& c, const Hml3dDataset& d
         {"architecture", "mdm_trans_enc"},
         {"mdm", {{"njoints", m.njoints}, {"latent_dim", m.latent_dim}, {"ff_size", m.ff_size}, {"num_layers", m.num_layers},
                  {"num_heads", m.num_heads}, {"dropout", m.dropout}, {"text_dim", m.text_dim}, {"mask_frames", m.mask_frames}}},
-        {"text_encoder", {{"kind", "glove_transformer"}, {"vocab", fs::absolute(c.vocab).string()}, {"model_dim", c.text.model_dim},
+        {"text_encoder", {{"kind", "glove_transformer"}, {"vocab", c.vocab}, {"model_dim", c.text.model_dim},
                           {"layers", c.text.layers}, {"heads", c.text.heads}, {"ff_size", c.text.ff_size}, {"out_dim", c.text.out_dim}}},
         {"diffusion", {{"schedule", "cosine"}, {"steps", c.diffusion_steps}, {"predict", "x0"}}},
         {"normalisation", {{"mean", "Mean.npy"}, {"std", "Std.npy"}}},
@@ -282,6 +283,23 @@ void write_model(const Training& tr, const TrainConfig& c, const Hml3dDataset& d
 
 // ---------------------------------------------------------------- the loop
 
+namespace {
+
+std::atomic<bool> g_stop_requested{false};
+
+// The draws of t and of the noise. On a GPU they come from the device's default generator, which also drives
+// the model's dropout there, so one saved state covers both; on the CPU from a generator of their own.
+torch::Generator noise_generator(const torch::Device& device, uint64_t seed) {
+    if (device.is_cpu()) return at::detail::createCPUGenerator(seed);
+    at::Generator g = at::globalContext().defaultGenerator(device);
+    g.set_current_seed(seed);
+    return g;
+}
+
+}  // namespace
+
+void request_training_stop() { g_stop_requested = true; }
+
 TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& init_from, int64_t stop_after) {
     if (c.threads > 0) set_torch_threads(c.threads);
     Hml3dDataset data(c.dataset, c.split);
@@ -292,11 +310,14 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
     MdmConfig mc = c.mdm;
     mc.text_dim = c.text.out_dim;
     mc.mask_frames = true;
-    Training tr{Mdm(mc), GloveTextEncoder(vocab, c.text), nullptr, {}, at::detail::createCPUGenerator(c.seed), std::mt19937_64(c.seed + 1), 0};
+    const torch::Device device(c.device);
+    Training tr{Mdm(mc), GloveTextEncoder(vocab, c.text), nullptr, {}, noise_generator(device, c.seed), std::mt19937_64(c.seed + 1), 0};
     if (!init_from.empty()) {
         load_parameters(*tr.mdm, init_from + "/weights.safetensors");
         load_parameters(*tr.text, init_from + "/text_encoder.safetensors");
     }
+    tr.mdm->to(device);
+    tr.text->to(device);
     tr.optimiser = std::make_unique<torch::optim::AdamW>(tr.parameters(), torch::optim::AdamWOptions(c.learning_rate).weight_decay(c.weight_decay));
     if (c.ema_decay > 0)
         for (const torch::Tensor& p : tr.parameters()) tr.ema.push_back(p.detach().clone());
@@ -304,26 +325,28 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
     const std::string checkpoint = c.out + "/checkpoint.pt";
     if (resume) {
         if (!fs::exists(checkpoint)) throw Error(checkpoint, "file", "a checkpoint to resume from");
-        load_checkpoint(tr, data, checkpoint);
+        load_checkpoint(tr, data, checkpoint, device);
     }
     const GaussianDiffusion diffusion(cosine_schedule(c.diffusion_steps));
-    const torch::Tensor mean = torch::from_blob(const_cast<double*>(data.stats().mean.data()), {263}, torch::kFloat64).to(torch::kFloat32);
-    const torch::Tensor std = torch::from_blob(const_cast<double*>(data.stats().std.data()), {263}, torch::kFloat64).to(torch::kFloat32);
+    const torch::Tensor mean = torch::from_blob(const_cast<double*>(data.stats().mean.data()), {263}, torch::kFloat64).to(device, torch::kFloat32);
+    const torch::Tensor std = torch::from_blob(const_cast<double*>(data.stats().std.data()), {263}, torch::kFloat64).to(device, torch::kFloat32);
+    const torch::TensorOptions on_device = torch::TensorOptions().device(device);
     std::string metrics;
     TrainProgress progress;
     const auto start = std::chrono::steady_clock::now();
     const int64_t first = tr.step, last = stop_after > 0 ? std::min(c.steps, tr.step + stop_after) : c.steps;
     std::bernoulli_distribution drop(c.cond_dropout);
-    while (tr.step < last) {
+    g_stop_requested = false;
+    while (tr.step < last && !g_stop_requested) {
         const Batch b = data.next_batch(c.batch);
-        const torch::Tensor x0 = torch::from_blob(const_cast<float*>(b.features.data()), {b.size, b.frames, b.channels}, torch::kFloat32).clone();
-        const torch::Tensor lengths = torch::tensor(std::vector<int64_t>(b.lengths.begin(), b.lengths.end()));
+        const torch::Tensor x0 = torch::from_blob(const_cast<float*>(b.features.data()), {b.size, b.frames, b.channels}, torch::kFloat32).to(device);
+        const torch::Tensor lengths = torch::tensor(std::vector<int64_t>(b.lengths.begin(), b.lengths.end())).to(device);
         std::vector<std::string> captions = b.captions;
         for (std::string& caption : captions)
             if (drop(tr.dropout_rng)) caption.clear();
-        const torch::Tensor t = torch::randint(c.diffusion_steps, {b.size}, tr.generator, torch::kInt64);
+        const torch::Tensor t = torch::randint(c.diffusion_steps, {b.size}, tr.generator, on_device.dtype(torch::kInt64));
         const torch::Tensor x0_mdm = x0.permute({0, 2, 1}).unsqueeze(2);  // [B, 263, 1, F]
-        const torch::Tensor x_t = diffusion.q_sample(x0_mdm, t, torch::randn(x0_mdm.sizes(), tr.generator));
+        const torch::Tensor x_t = diffusion.q_sample(x0_mdm, t, torch::randn(x0_mdm.sizes(), tr.generator, on_device));
         const torch::Tensor x0_hat = tr.mdm->forward(x_t, t, tr.text->encode(captions), false, lengths).squeeze(2).permute({0, 2, 1});
         const LossTerms terms = mdm_loss_terms(x0, x0_hat, lengths, mean, std, c);
         tr.optimiser->zero_grad();
@@ -336,7 +359,7 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
         }
         ++tr.step;
         progress.loss = terms.total.item<double>();
-        if (tr.step % c.log_every == 0 || tr.step == last) {
+        if (tr.step % c.log_every == 0 || tr.step == last || g_stop_requested) {
             const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             const double rate = static_cast<double>(tr.step - first) / std::max(seconds, 1e-9);
             const nlohmann::json line = {{"step", tr.step}, {"loss", progress.loss}, {"l_simple", terms.simple.item<double>()},
@@ -347,7 +370,7 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
                          static_cast<long long>(c.steps), progress.loss, terms.simple.item<double>(), terms.acc.item<double>(), rate,
                          static_cast<double>(c.steps - tr.step) / std::max(rate, 1e-9));
         }
-        if (tr.step % c.save_every == 0 || tr.step == last) {
+        if (tr.step % c.save_every == 0 || tr.step == last || g_stop_requested) {
             std::string previous;
             if (fs::exists(c.out + "/metrics.jsonl")) previous = read_file_text(c.out + "/metrics.jsonl");
             write_file_atomic(c.out + "/metrics.jsonl", previous + metrics);

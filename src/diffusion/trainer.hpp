@@ -33,6 +33,7 @@ struct TrainConfig {
     int64_t save_every = 1000, log_every = 50;
     uint64_t seed = 0;
     int threads = 0;
+    std::string device = "cpu";  // a torch device: cpu, cuda, cuda:1 (not in the TOML: where to train is not what to train)
 };
 
 // TOML: [data] dataset, vocab, split; [model] latent_dim, ff_size, num_layers, num_heads, dropout;
@@ -50,6 +51,10 @@ struct TrainProgress {
 // resume: continue from config.out/checkpoint.pt. init_from: start from another model folder's weights
 // (fine-tuning), with a fresh optimiser. `stop_after` > 0 ends after that many steps of this call (tests).
 TrainProgress train_mdm(const TrainConfig& config, bool resume, const std::string& init_from = "", int64_t stop_after = 0);
+
+// Asks a running train_mdm to finish its step, write its checkpoint and model, and return: safe to call from
+// a signal handler (the CLI calls it on SIGINT and SIGTERM, so `timeout -s INT` ends a run cleanly).
+void request_training_stop();
 
 // The per-step loss terms for one batch, exposed for tests: every term averaged over the batch.
 struct LossTerms {
