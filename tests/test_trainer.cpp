@@ -195,7 +195,10 @@ TEST(Trainer, SampleFromATrainedModelIsSeededAndBatchIndependent) {
     EXPECT_EQ(read_file_text(dir + "/l1.csv"), read_file_text(dir + "/l2.csv"));
     const CsvTable lacc = read_csv(dir + "/l1.csv");
     ASSERT_EQ(lacc.rows.size(), 6u);
-    for (size_t i = 0; i < lacc.rows.size(); ++i) EXPECT_GE(lacc.number(i, lacc.column("l_acc")), 0.0);
+    for (size_t i = 0; i < lacc.rows.size(); ++i) {
+        EXPECT_GE(lacc.number(i, lacc.column("l_acc")), 0.0);
+        EXPECT_GT(lacc.number(i, lacc.column("l_simple")), 0.0);
+    }
     const auto analysis = test::run_cli("analysis lacc --before " + dir + "/l1.csv --after " + dir + "/l2.csv --vocab " + data +
                                         "/vocab.safetensors --tau 0.5 --out " + dir + "/change.csv");
     ASSERT_EQ(analysis.exit_code, 0) << analysis.output;

@@ -74,7 +74,7 @@ void run(SampleArgs a) {
 }  // namespace
 
 static void add_eval_lacc(CLI::App& root) {
-    auto* cmd = root.add_subcommand("eval-lacc", "per-sample L_acc of a model over a dataset split (id,caption,t,l_acc CSV)");
+    auto* cmd = root.add_subcommand("eval-lacc", "per-sample L_acc of a model over a dataset split (id,caption,t,l_acc,l_simple CSV)");
     static std::string model, dataset, split = "test", out;
     static uint64_t seed = 0;
     cmd->add_option("--model", model, "model folder")->required()->check(CLI::ExistingDirectory);

@@ -13,8 +13,8 @@ CsvTable evaluate_lacc(MotionModel& model, const std::string& dataset, const std
     const Hml3dDataset data(dataset, split);
     const GaussianDiffusion diffusion(model.schedule);
     CsvTable out;
-    out.header = {"id", "caption", "t", "l_acc"};
-    char buf[32];
+    out.header = {"id", "caption", "t", "l_acc", "l_simple"};
+    char acc[32], simple[32];
     for (size_t i = 0; i < data.clips().size(); ++i) {
         const MotionClip& clip = data.clips()[i];
         const int64_t frames = std::min<int64_t>(clip.features.rows(), kMaxMotionFrames);
@@ -32,9 +32,10 @@ CsvTable evaluate_lacc(MotionModel& model, const std::string& dataset, const std
         const std::string caption = clip.captions.front().caption;
         const torch::Tensor lengths = torch::full({1}, frames, torch::TensorOptions().dtype(torch::kInt64).device(model.device));
         const torch::Tensor x0_hat = model.mdm->forward(x_t, t, model.text->encode({caption}), false, lengths).squeeze(2).permute({0, 2, 1});
-        const double l = acceleration_loss(x0, x0_hat, frame_mask(lengths, frames)).item<double>();
-        std::snprintf(buf, sizeof buf, "%.8g", l);
-        out.rows.push_back({clip.id, caption, std::to_string(t.item<int64_t>()), buf});
+        const torch::Tensor mask = frame_mask(lengths, frames);
+        std::snprintf(acc, sizeof acc, "%.8g", acceleration_loss(x0, x0_hat, mask).item<double>());
+        std::snprintf(simple, sizeof simple, "%.8g", masked_mse(x0, x0_hat, mask).item<double>());
+        out.rows.push_back({clip.id, caption, std::to_string(t.item<int64_t>()), acc, simple});
     }
     return out;
 }
