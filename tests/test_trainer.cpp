@@ -81,6 +81,16 @@ TEST(Trainer, ConfigIsStrict) {
     EXPECT_THROW(read_train_config(dir + "/bad2.toml"), Error);
 }
 
+TEST(Trainer, EmaDecayWarmsUpSoTheInitialisationIsForgotten) {
+    EXPECT_DOUBLE_EQ(ema_decay_at(0.9999, 0), 0.1);
+    EXPECT_DOUBLE_EQ(ema_decay_at(0.9999, 90), 91.0 / 100.0);
+    EXPECT_DOUBLE_EQ(ema_decay_at(0.9999, 1000000), 0.9999);
+    // What remains of the starting weights after n updates: the product of the decays.
+    double kept = 1;
+    for (int64_t n = 0; n < 12000; ++n) kept *= ema_decay_at(0.9999, n);
+    EXPECT_LT(kept, 1e-3);  // a plain 0.9999 would keep 0.9999^12000 = 0.30
+}
+
 TEST(Trainer, LossTermsVanishForAPerfectPredictionAndMatchTheirDefinitions) {
     torch::manual_seed(0);
     const FeatureMatrix f = joints_to_features(import_motion(test::source_dir() + "/examples/cmu_07_05_slow_walk.bvh"));

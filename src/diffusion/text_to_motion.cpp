@@ -81,6 +81,7 @@ std::unique_ptr<MotionModel> load_motion_model(const std::string& dir, const std
 std::vector<FeatureMatrix> sample_motions(MotionModel& model, const std::vector<std::string>& prompts, const SampleOptions& o) {
     if (o.frames < 4 || o.frames > 196) throw Error("sample", "frames", "4 to 196 (20 fps)", std::to_string(o.frames));
     if (o.sampler != "ddpm" && o.sampler != "ddim" && o.sampler != "dpmpp") throw Error("sample", "sampler", "ddpm, ddim or dpmpp", o.sampler);
+    if (!o.seeds.empty() && o.seeds.size() != prompts.size()) throw Error("sample", "seeds", "one seed per prompt", std::to_string(o.seeds.size()));
     torch::NoGradGuard no_grad;
     const GaussianDiffusion diffusion(model.schedule);
     std::vector<FeatureMatrix> out;
@@ -88,7 +89,7 @@ std::vector<FeatureMatrix> sample_motions(MotionModel& model, const std::vector<
         const size_t n = std::min(prompts.size() - start, static_cast<size_t>(std::max(o.batch, 1)));
         const std::vector<std::string> batch(prompts.begin() + static_cast<std::ptrdiff_t>(start), prompts.begin() + static_cast<std::ptrdiff_t>(start + n));
         std::vector<torch::Generator> gens;
-        for (size_t i = 0; i < n; ++i) gens.push_back(at::detail::createCPUGenerator(o.seed + start + i));
+        for (size_t i = 0; i < n; ++i) gens.push_back(at::detail::createCPUGenerator(o.seeds.empty() ? o.seed + start + i : o.seeds[start + i]));
         const NoiseSource noise = [&gens](const torch::Tensor& like) {
             std::vector<torch::Tensor> rows;
             // Drawn on the CPU whatever the device: a seed gives the same noise on every machine.

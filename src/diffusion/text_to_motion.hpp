@@ -42,6 +42,7 @@ struct SampleOptions {
     double guidance = 2.5;
     double eta = 0.0;              // ddim only
     uint64_t seed = 0;
+    std::vector<uint64_t> seeds;   // when given, one per prompt: sample i draws from seeds[i] instead of seed + i
     int batch = 16;
 };
 

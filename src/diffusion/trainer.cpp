@@ -300,6 +300,10 @@ torch::Generator noise_generator(const torch::Device& device, uint64_t seed) {
 
 void request_training_stop() { g_stop_requested = true; }
 
+double ema_decay_at(double max_decay, int64_t step) {
+    return std::min(max_decay, (1.0 + static_cast<double>(step)) / (10.0 + static_cast<double>(step)));
+}
+
 TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& init_from, int64_t stop_after) {
     if (c.threads > 0) set_torch_threads(c.threads);
     Hml3dDataset data(c.dataset, c.split);
@@ -355,7 +359,8 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
         if (!tr.ema.empty()) {
             torch::NoGradGuard no_grad;
             const std::vector<torch::Tensor> params = tr.parameters();
-            for (size_t i = 0; i < params.size(); ++i) tr.ema[i].mul_(c.ema_decay).add_(params[i].detach(), 1 - c.ema_decay);
+            const double decay = ema_decay_at(c.ema_decay, tr.step);
+            for (size_t i = 0; i < params.size(); ++i) tr.ema[i].mul_(decay).add_(params[i].detach(), 1 - decay);
         }
         ++tr.step;
         progress.loss = terms.total.item<double>();

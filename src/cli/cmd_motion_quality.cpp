@@ -1,0 +1,82 @@
+// t2imu motion quality: plausibility scores of joint motions (motion_quality.hpp) as CSV, with the
+// percentiles over all inputs; how the filter's default thresholds were measured on captured motion.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+#include "cli/command.hpp"
+#include "core/atomic_file.hpp"
+#include "core/npy.hpp"
+#include "motion/motion_quality.hpp"
+
+namespace t2imu::cli {
+
+namespace {
+
+bool ends_with(const std::string& s, const std::string& tail) {
+    return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// A folder gives its *_joints.npy files (`t2imu sample` output, beside *_features.npy) or, with none, all of
+// its .npy files (a dataset's new_joints/).
+std::vector<std::string> joint_files(const std::vector<std::string>& inputs) {
+    std::vector<std::string> out;
+    for (const std::string& in : inputs) {
+        if (!std::filesystem::is_directory(in)) { out.push_back(in); continue; }
+        std::vector<std::string> npy, joints;
+        for (const auto& e : std::filesystem::directory_iterator(in)) {
+            const std::string path = e.path().string();
+            if (ends_with(path, ".npy")) npy.push_back(path);
+            if (ends_with(path, "_joints.npy")) joints.push_back(path);
+        }
+        out.insert(out.end(), joints.empty() ? npy.begin() : joints.begin(), joints.empty() ? npy.end() : joints.end());
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+double percentile(std::vector<double> v, double p) {
+    std::sort(v.begin(), v.end());
+    return v[static_cast<size_t>(std::min<double>(static_cast<double>(v.size() - 1), p / 100.0 * static_cast<double>(v.size())))];
+}
+
+void run(const std::vector<std::string>& inputs, double fps, double p, const std::string& out) {
+    std::string csv = "file,foot_skate_m_s,penetration_m,hover_m,max_speed_m_s,max_acc_m_s2\n";
+    std::vector<std::vector<double>> columns(5);
+    for (const std::string& file : joint_files(inputs)) {
+        const MotionQuality q = score_motion(joint_sequence_from_array(read_npy(file), file, 22, 3, fps));
+        const double v[5] = {q.foot_skate_m_s, q.penetration_m, q.hover_m, q.max_speed_m_s, q.max_acc_m_s2};
+        char row[256];
+        std::snprintf(row, sizeof row, ",%.4f,%.4f,%.4f,%.3f,%.2f\n", v[0], v[1], v[2], v[3], v[4]);
+        csv += file + row;
+        for (int i = 0; i < 5; ++i) columns[static_cast<size_t>(i)].push_back(v[i]);
+    }
+    if (columns[0].empty()) throw Error("motion quality", "inputs", "at least one joints .npy");
+    if (!out.empty()) write_file_atomic(out, csv);
+    const MotionQualityThresholds t = default_quality_thresholds();
+    const double limit[5] = {t.foot_skate_m_s, t.penetration_m, t.hover_m, t.max_speed_m_s, t.max_acc_m_s2};
+    const char* names[5] = {"foot_skate_m_s", "penetration_m", "hover_m", "max_speed_m_s", "max_acc_m_s2"};
+    std::printf("%zu motions: score, %g-th percentile, default threshold, share over it\n", columns[0].size(), p);
+    for (size_t i = 0; i < 5; ++i) {
+        const auto over = std::count_if(columns[i].begin(), columns[i].end(), [&](double v) { return v > limit[i]; });
+        std::printf("  %-15s %10.4f %10.4f %7.2f %%\n", names[i], percentile(columns[i], p), limit[i],
+                    100.0 * static_cast<double>(over) / static_cast<double>(columns[i].size()));
+    }
+}
+
+}  // namespace
+
+static CommandRegistrar registrar([](CLI::App& root) {
+    CLI::App& motion = command_group(root, "motion", "motion files: import, export, HumanML3D features");
+    auto* cmd = motion.add_subcommand("quality", "plausibility scores (foot skating, floor, speed, acceleration) of joints .npy files");
+    static std::vector<std::string> inputs;
+    static double fps = 20, p = 99.5;
+    static std::string out;
+    cmd->add_option("inputs", inputs, "joints .npy [F,22,3] files, or folders of them (*_joints.npy where present)")->required();
+    cmd->add_option("--fps", fps, "frame rate of the joints")->capture_default_str();
+    cmd->add_option("--percentile", p, "percentile to print over the inputs")->capture_default_str();
+    cmd->add_option("--out", out, "per-file scores CSV");
+    cmd->callback([] { run(inputs, fps, p, out); });
+});
+
+}  // namespace t2imu::cli

@@ -1,0 +1,69 @@
+#include "motion/motion_quality.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "core/error.hpp"
+#include "motion/skeleton.hpp"
+
+namespace t2imu {
+
+MotionQualityThresholds default_quality_thresholds() {
+    return {1.3, 0.05, 0.30, 14.0, 350.0};
+}
+
+namespace {
+
+double foot_skate(const JointSequence& m) {
+    double sum = 0;
+    int n = 0;
+    for (int j : {smpl22::left_ankle, smpl22::left_foot, smpl22::right_ankle, smpl22::right_foot})
+        for (int f = 0; f + 1 < m.num_frames; ++f) {
+            const Eigen::Vector3d& a = m.at(f, j);
+            const Eigen::Vector3d& b = m.at(f + 1, j);
+            if (std::max(a.y(), b.y()) > kContactHeight) continue;
+            sum += std::hypot(b.x() - a.x(), b.z() - a.z()) * m.fps;
+            ++n;
+        }
+    return n > 0 ? sum / n : 0.0;
+}
+
+}  // namespace
+
+MotionQuality score_motion(const JointSequence& m) {
+    if (m.num_joints != smpl22::kNumJoints || m.num_frames < 3) throw Error("motion quality", "joints", "22 joints and at least 3 frames");
+    MotionQuality q;
+    q.foot_skate_m_s = foot_skate(m);
+    std::vector<double> lowest(static_cast<size_t>(m.num_frames));
+    for (int f = 0; f < m.num_frames; ++f) {
+        double low = m.at(f, 0).y();
+        for (int j = 0; j < m.num_joints; ++j) {
+            low = std::min(low, m.at(f, j).y());
+            if (f + 1 < m.num_frames) q.max_speed_m_s = std::max(q.max_speed_m_s, (m.at(f + 1, j) - m.at(f, j)).norm() * m.fps);
+            if (f >= 1 && f + 1 < m.num_frames)
+                q.max_acc_m_s2 = std::max(q.max_acc_m_s2, (m.at(f + 1, j) - 2 * m.at(f, j) + m.at(f - 1, j)).norm() * m.fps * m.fps);
+        }
+        lowest[static_cast<size_t>(f)] = low;
+        q.penetration_m = std::max(q.penetration_m, -low);
+    }
+    std::nth_element(lowest.begin(), lowest.begin() + static_cast<std::ptrdiff_t>(lowest.size() / 2), lowest.end());
+    q.hover_m = std::max(0.0, lowest[lowest.size() / 2]);
+    return q;
+}
+
+std::vector<std::string> quality_failures(const MotionQuality& q, const MotionQualityThresholds& t) {
+    std::vector<std::string> out;
+    if (q.foot_skate_m_s > t.foot_skate_m_s) out.push_back("foot_skate");
+    if (q.penetration_m > t.penetration_m) out.push_back("penetration");
+    if (q.hover_m > t.hover_m) out.push_back("hover");
+    if (q.max_speed_m_s > t.max_speed_m_s) out.push_back("max_speed");
+    if (q.max_acc_m_s2 > t.max_acc_m_s2) out.push_back("max_acc");
+    return out;
+}
+
+double quality_badness(const MotionQuality& q, const MotionQualityThresholds& t) {
+    return std::max({q.foot_skate_m_s / t.foot_skate_m_s, q.penetration_m / t.penetration_m, q.hover_m / t.hover_m,
+                     q.max_speed_m_s / t.max_speed_m_s, q.max_acc_m_s2 / t.max_acc_m_s2});
+}
+
+}  // namespace t2imu

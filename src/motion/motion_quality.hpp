@@ -1,0 +1,45 @@
+// Physical plausibility of a motion (joint positions, metres, Y up, floor at y = 0 as HumanML3D's
+// representation puts it): the scores a quality filter uses to drop or regenerate a generated motion.
+//
+//   foot_skate_m_s      mean horizontal speed (m/s) of the feet (ankle and toe joints) over the frames where
+//                       that joint is within kContactHeight of the floor: a planted foot should not slide
+//   penetration_m       deepest any joint goes below the floor (m)
+//   hover_m             median over frames of the lowest joint's height (m): a body floating above the floor
+//   max_speed_m_s       fastest joint, first difference (m/s)
+//   max_acc_m_s2        largest joint acceleration, second difference (m/s^2): jitter and teleports
+//
+// The default thresholds sit at the 99.5th percentile of the captured motions of our dataset (2,524 clips of
+// the shared mocap with mirrors, `t2imu motion quality cache/dataset/new_joints`), rounded up: foot skating
+// 1.28 m/s, hover 0.25 m, joint speed 13.2 m/s, joint acceleration 346 m/s^2 (medians 0.20, 0.014, 4.9, 56).
+// Captured clips never go below the floor (HumanML3D puts the floor at their lowest joint); 5 cm is allowed.
+// So a motion that fails one is less plausible than 199 in 200 captured motions.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "motion/joint_sequence.hpp"
+
+namespace t2imu {
+
+struct MotionQuality {
+    double foot_skate_m_s = 0, penetration_m = 0, hover_m = 0, max_speed_m_s = 0, max_acc_m_s2 = 0;
+};
+
+struct MotionQualityThresholds {
+    double foot_skate_m_s, penetration_m, hover_m, max_speed_m_s, max_acc_m_s2;
+};
+
+constexpr double kContactHeight = 0.05;  // m above the floor
+
+MotionQualityThresholds default_quality_thresholds();
+
+// SMPL-22 joints, at least 3 frames.
+MotionQuality score_motion(const JointSequence& joints);
+
+// Names of the scores over their threshold, empty when the motion passes.
+std::vector<std::string> quality_failures(const MotionQuality& q, const MotionQualityThresholds& t);
+
+// How far past its worst threshold a motion is (max of score/threshold; < 1 passes): ranks failed attempts.
+double quality_badness(const MotionQuality& q, const MotionQualityThresholds& t);
+
+}  // namespace t2imu

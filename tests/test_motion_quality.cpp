@@ -1,0 +1,68 @@
+// Motion quality scores against motions whose answers are known by construction.
+#include <gtest/gtest.h>
+
+#include "motion/motion_quality.hpp"
+#include "motion/skeleton.hpp"
+
+namespace t2imu {
+namespace {
+
+// A standing figure: joints spread from the floor (feet at y = 0) up to 1.7 m, 20 fps.
+JointSequence standing(int frames) {
+    JointSequence m(frames, smpl22::kNumJoints, 20.0);
+    for (int f = 0; f < frames; ++f)
+        for (int j = 0; j < smpl22::kNumJoints; ++j) m.at(f, j) = Eigen::Vector3d(0.01 * j, 1.7 * j / 21.0, 0.0);
+    for (int f = 0; f < frames; ++f)
+        for (int j : {smpl22::left_ankle, smpl22::left_foot, smpl22::right_ankle, smpl22::right_foot}) m.at(f, j).y() = 0.0;
+    return m;
+}
+
+TEST(MotionQuality, StaticPoseScoresZero) {
+    const MotionQuality q = score_motion(standing(40));
+    EXPECT_DOUBLE_EQ(q.foot_skate_m_s, 0.0);
+    EXPECT_DOUBLE_EQ(q.penetration_m, 0.0);
+    EXPECT_DOUBLE_EQ(q.hover_m, 0.0);
+    EXPECT_DOUBLE_EQ(q.max_speed_m_s, 0.0);
+    EXPECT_DOUBLE_EQ(q.max_acc_m_s2, 0.0);
+    EXPECT_TRUE(quality_failures(q, default_quality_thresholds()).empty());
+}
+
+TEST(MotionQuality, SlidingPlantedFeetSkateAtTheSlideSpeed) {
+    // The whole body glides along +X at 2 m/s with its feet on the floor: skating = 2 m/s, no acceleration.
+    JointSequence m = standing(40);
+    for (int f = 0; f < m.num_frames; ++f)
+        for (int j = 0; j < m.num_joints; ++j) m.at(f, j).x() += 2.0 * f / m.fps;
+    const MotionQuality q = score_motion(m);
+    EXPECT_NEAR(q.foot_skate_m_s, 2.0, 1e-9);
+    EXPECT_NEAR(q.max_speed_m_s, 2.0, 1e-9);
+    EXPECT_NEAR(q.max_acc_m_s2, 0.0, 1e-6);
+    EXPECT_EQ(quality_failures(q, default_quality_thresholds()), std::vector<std::string>{"foot_skate"});
+    EXPECT_NEAR(quality_badness(q, default_quality_thresholds()), 2.0 / 1.3, 1e-9);
+}
+
+TEST(MotionQuality, LiftedFeetDoNotCountAsSkating) {
+    // The same glide 0.5 m above the floor is hovering, not skating.
+    JointSequence m = standing(40);
+    for (int f = 0; f < m.num_frames; ++f)
+        for (int j = 0; j < m.num_joints; ++j) m.at(f, j) += Eigen::Vector3d(2.0 * f / m.fps, 0.5, 0.0);
+    const MotionQuality q = score_motion(m);
+    EXPECT_DOUBLE_EQ(q.foot_skate_m_s, 0.0);
+    EXPECT_NEAR(q.hover_m, 0.5, 1e-12);
+    EXPECT_EQ(quality_failures(q, default_quality_thresholds()), std::vector<std::string>{"hover"});
+}
+
+TEST(MotionQuality, PenetrationIsTheDeepestJointBelowTheFloor) {
+    JointSequence m = standing(40);
+    m.at(10, smpl22::left_foot).y() = -0.12;
+    const MotionQuality q = score_motion(m);
+    EXPECT_NEAR(q.penetration_m, 0.12, 1e-12);
+    EXPECT_DOUBLE_EQ(q.hover_m, 0.0);
+    // One frame's dip and return: |Δ²y| = 0.24 m per frame² = 96 m/s²; 0.12 m in one frame = 2.4 m/s.
+    EXPECT_NEAR(q.max_acc_m_s2, 0.24 * 400, 1e-9);
+    EXPECT_NEAR(q.max_speed_m_s, 2.4, 1e-9);
+}
+
+TEST(MotionQuality, RefusesTooFewFrames) { EXPECT_THROW(score_motion(standing(2)), Error); }
+
+}  // namespace
+}  // namespace t2imu
