@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Reproduces the shipped text-to-motion models from the open motion capture:
 #   models/default          MDM (4 layers x 256) + the GloVe text encoder (experiments/train-default.toml)
-#   models/default-lacc     the default model fine-tuned with the paper's L_acc added (finetune-lacc.toml)
+#   models/default-lacc     the default model fine-tuned with the paper's L_acc added, λ_acc = 0.01 (finetune-lacc.toml)
+#   models/default-lacc-1   the same with λ_acc = 1 (finetune-lacc-1.toml), for the comparison in its model card
 #   models/default-control  the default model trained on for as many steps without L_acc (finetune-control.toml)
 # and their per-sample L_acc on the test split (cache/lacc/*.csv; `t2imu analysis lacc` aggregates them).
 # Usage: bash scripts/train-default.sh [--device cuda] [--base-steps N] [--finetune-steps N] [--mocap DIR]
@@ -25,10 +26,10 @@ if [ ! -f cache/dataset/summary.json ]; then
   build/t2imu data build --mocap cache/mocap --mirror --out cache/dataset
 fi
 $t2imu train --config experiments/train-default.toml ${base_steps:+--steps $base_steps}
-for run in lacc control; do
+for run in lacc lacc-1 control; do
   $t2imu finetune --from models/default --config experiments/finetune-$run.toml ${finetune_steps:+--steps $finetune_steps}
 done
 mkdir -p cache/lacc
-for model in default default-lacc default-control; do
+for model in default default-lacc default-lacc-1 default-control; do
   $t2imu eval-lacc --model models/$model --dataset cache/dataset --split test --seed 0 --out cache/lacc/$model.csv
 done
