@@ -1,15 +1,12 @@
 #!/usr/bin/env bash
-# The main job on the shipped defaults. Until the text-to-motion model ships (issue: main job), it runs the
-# motion and IMU stages on a shipped CMU walk: BVH import -> SMPL-22 joints -> HumanML3D 263-dim features ->
-# joints -> BVH export, and the joints on the paper's eight bodies with RealWorld's seven sensors.
+# The main job on the shipped defaults: the RealWorld prompt set (8 activities x 10 prompts) -> models/default
+# (DPM-Solver++, 20 steps, 6 s motions, quality filter on) -> the paper's eight bodies -> RealWorld's seven
+# sensors at 50 Hz -> an IMU dataset in out/main-job/ (manifest.csv, recordings/, motions/ with BVH, report/).
+# Interrupted, it resumes where it stopped. Usage: bash scripts/main-job.sh [OUT] [extra t2imu synth options]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-out/main-job}
-mkdir -p "$out"
-t2imu=build/t2imu
-$t2imu motion import examples/cmu_07_05_slow_walk.bvh --out "$out/joints.npy"
-$t2imu motion features --joints "$out/joints.npy" --out "$out/features.npy"
-$t2imu motion joints --features "$out/features.npy" --out "$out/recovered_joints.npy"
-$t2imu motion export "$out/recovered_joints.npy" --out "$out/recovered.bvh"
-$t2imu imu synth --joints "$out/recovered_joints.npy" --body paper8 --sensors realworld --rate 50 --out "$out/imu"
-echo "main job: wrote $out/{joints.npy,features.npy,recovered_joints.npy,recovered.bvh,imu/}"
+shift || true
+build/t2imu synth --prompts prompts/realworld.tsv --model models/default --bodies paper8 --sensors realworld --rate 50 --out "$out" "$@"
+build/t2imu report --in "$out" --out "$out/report" >/dev/null
+echo "main job: wrote $out (manifest.csv, recordings/, motions/, synth_report.json, report/index.html)"

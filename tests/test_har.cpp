@@ -63,6 +63,9 @@ TEST(HarClassMap, DocumentedMapsAndStairsCoarsening) {
     EXPECT_EQ(map_activity("sisfall", "jump_reach"), "");
     EXPECT_EQ(map_activity("umafall", "jumping"), "jumping");
     EXPECT_EQ(map_activity("t2imu", "stairs_up"), "stairs_up");
+    EXPECT_EQ(map_activity("t2imu", "jogging"), "running");  // a prompt set in SisFall's or UMAFall's own names
+    EXPECT_EQ(map_activity("t2imu", "stairs_up_down"), "stairs");
+    EXPECT_EQ(map_activity("t2imu", "jump_reach"), "jump_reach");
     EXPECT_EQ(coarsen_for("stairs_up", {"stairs_up", "walking"}, {"stairs", "walking"}), "stairs");
     EXPECT_EQ(coarsen_for("stairs_up", {"stairs_up"}, {"stairs_up"}), "stairs_up");
 }

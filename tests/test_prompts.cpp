@@ -3,37 +3,47 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <set>
 
 #include "analysis/activity_categories.hpp"
+#include "har/class_map.hpp"
+#include "pipeline/prompt_set.hpp"
 #include "test_util.hpp"
 
 using namespace t2imu;
 
 namespace {
-std::vector<std::pair<std::string, std::string>> shipped_prompts() {
-    std::ifstream in(test::source_dir() + "/prompts/realworld.tsv");
+std::vector<std::pair<std::string, std::string>> shipped_prompts(const std::string& set = "realworld") {
     std::vector<std::pair<std::string, std::string>> out;
-    for (std::string line; std::getline(in, line);) {
-        if (line.empty() || line[0] == '#') continue;
-        const size_t tab = line.find('\t');
-        out.push_back({line.substr(0, tab), line.substr(tab + 1)});
-    }
+    for (const Prompt& p : read_prompt_set(test::source_dir() + "/prompts/" + set + ".tsv")) out.push_back({p.activity, p.text});
     return out;
+}
+
+// Ten distinct prompts for each of `classes`, and no other class.
+void expect_ten_per_class(const std::string& set, const std::set<std::string>& classes) {
+    std::map<std::string, std::set<std::string>> by_class;
+    for (const auto& [activity, prompt] : shipped_prompts(set)) by_class[activity].insert(prompt);
+    EXPECT_EQ(by_class.size(), classes.size()) << set;
+    for (const auto& [activity, prompts] : by_class) {
+        EXPECT_TRUE(classes.count(activity)) << set << ": " << activity;
+        EXPECT_EQ(prompts.size(), 10u) << set << ": " << activity;
+    }
 }
 }  // namespace
 
 TEST(Prompts, TenDistinctPromptsPerRealWorldClass) {
-    std::map<std::string, std::set<std::string>> by_class;
-    for (const auto& [activity, prompt] : shipped_prompts()) by_class[activity].insert(prompt);
-    const std::set<std::string> classes = {"walking", "running", "jumping", "sitting", "standing", "lying", "stairs_up", "stairs_down"};
-    ASSERT_EQ(by_class.size(), classes.size());
-    for (const auto& [activity, prompts] : by_class) {
-        EXPECT_TRUE(classes.count(activity)) << activity;
-        EXPECT_EQ(prompts.size(), 10u) << activity;
-    }
+    expect_ten_per_class("realworld", {"walking", "running", "jumping", "sitting", "standing", "lying", "stairs_up", "stairs_down"});
+}
+
+// The real data sets' prompt sets use their own class names (as in their manifests), which the class map
+// then treats as it treats the real recordings.
+TEST(Prompts, RealDataSetsPromptSetsUseTheirOwnClassNames) {
+    expect_ten_per_class("sisfall", {"walking", "jogging", "stairs_up_down", "sit_down_stand_up", "lying"});
+    expect_ten_per_class("umafall", {"walking", "jogging", "jumping", "stairs_up", "stairs_down", "sit_down_stand_up",
+                                     "lie_down_get_up_bed", "bending", "hands_up", "applauding"});
+    for (const auto& [activity, prompt] : shipped_prompts("sisfall")) EXPECT_EQ(map_activity("t2imu", activity), map_activity("sisfall", activity));
+    for (const auto& [activity, prompt] : shipped_prompts("umafall")) EXPECT_EQ(map_activity("t2imu", activity), map_activity("umafall", activity));
 }
 
 TEST(Prompts, TheCategoriserReadsTheirActivity) {

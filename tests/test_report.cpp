@@ -38,6 +38,10 @@ TEST(Report, DrawsEveryRecognisedResultIntoOnePage) {
     for (int k = 0; k < 100; ++k) trace += std::to_string(k / 50.0) + ",0.1,9.81," + std::to_string(std::sin(k / 5.0)) + ",0,0.2,0\n";
     write_file_atomic(in + "/imu/chest.csv", trace);
     write_file_atomic(in + "/notes.json", "not json");  // ignored
+    write_file_atomic(in + "/synth/synth_report.json",
+                      R"({"jobs":10,"jobs_done":10,"motions_kept":9,"jobs_regenerated":2,"recordings":63,)"
+                      R"("per_activity":{"walking":{"kept":9,"dropped":1}},)"
+                      R"("this_run":{"jobs_run":10,"total_s":7.5,"motion_generation_s":6.0,"bodies_imu_write_s":1.2,"device":"cpu"}})");
     const auto r = test::run_cli("report --in " + in + " --out " + dir + "/report");
     ASSERT_EQ(r.exit_code, 0) << r.output;
     // balanced accuracy + confusion + L_acc + t-SNE (all, high-dynamic) + one trace.
@@ -47,6 +51,9 @@ TEST(Report, DrawsEveryRecognisedResultIntoOnePage) {
     for (size_t p = html.find("data:image/png;base64,iVBORw0KGgo"); p != std::string::npos; p = html.find("data:image/png;base64,iVBORw0KGgo", p + 1)) ++images;
     EXPECT_EQ(images, 6u);  // every figure embedded, each a PNG (its signature in base64)
     EXPECT_NE(html.find("60.0 &plusmn; 5.0"), std::string::npos);
+    EXPECT_NE(html.find("Synthesis: synth"), std::string::npos);
+    EXPECT_NE(html.find("<td>walking</td><td>9</td><td>1</td>"), std::string::npos);
+    EXPECT_NE(html.find("10 jobs in 7.5 s"), std::string::npos);
     for (const char* png : {"balanced_accuracy.png", "confusion_synthetic_to_real.png", "lacc_lacc_change.png", "tsne_tsne.png", "tsne_high_tsne.png", "trace_0.png"}) {
         const std::vector<uint8_t> bytes = read_file_bytes(dir + "/report/" + png);
         ASSERT_GT(bytes.size(), 1000u) << png;

@@ -15,46 +15,12 @@
 #include "motion/humanml3d.hpp"
 #include "motion/mocap_import.hpp"
 #include "test_util.hpp"
+#include "tiny_model.hpp"
 
 using namespace t2imu;
 namespace fs = std::filesystem;
 
 namespace {
-
-// A HumanML3D-layout dataset of six 60-frame clips cut from the example walk, two captions each, and a tiny
-// word-vector file.
-std::string make_dataset(const std::string& dir) {
-    fs::create_directories(dir + "/new_joint_vecs");
-    fs::create_directories(dir + "/texts");
-    const FeatureMatrix f = joints_to_features(import_motion(test::source_dir() + "/examples/cmu_07_05_slow_walk.bvh"));
-    std::ofstream train(dir + "/train.txt");
-    Eigen::VectorXd mean = Eigen::VectorXd::Zero(263), sq = Eigen::VectorXd::Zero(263);
-    for (int k = 0; k < 6; ++k) {
-        const FeatureMatrix clip = f.middleRows(k * 4, 60);
-        write_npy(dir + "/new_joint_vecs/c" + std::to_string(k) + ".npy", feature_matrix_to_array(clip));
-        std::ofstream(dir + "/texts/c" + std::to_string(k) + ".txt") << "a person walks forward slowly##0.0#0.0\nsomeone walks##0.0#0.0\n";
-        train << "c" << k << "\n";
-        mean += clip.colwise().mean().transpose() / 6;
-        sq += clip.array().square().colwise().mean().matrix().transpose() / 6;
-    }
-    const Eigen::VectorXd sd = (sq - mean.cwiseProduct(mean)).cwiseMax(1e-4).cwiseSqrt();
-    write_npy(dir + "/Mean.npy", NdArray::from(std::vector<double>(mean.data(), mean.data() + 263), {263}));
-    write_npy(dir + "/Std.npy", NdArray::from(std::vector<double>(sd.data(), sd.data() + 263), {263}));
-    const std::vector<std::string> words = {"a", "person", "walks", "forward", "slowly", "someone"};
-    std::vector<float> v(words.size() * 100);
-    for (size_t i = 0; i < v.size(); ++i) v[i] = static_cast<float>(std::cos(0.3 * static_cast<double>(i)));
-    WordVectors(words, v).save(dir + "/vocab.safetensors");
-    return dir;
-}
-
-std::string write_config(const std::string& dir, const std::string& data, const std::string& out, const std::string& extra = "") {
-    const std::string path = dir + "/" + fs::path(out).filename().string() + ".toml";
-    std::ofstream(path) << "out = \"" << out << "\"\n[data]\ndataset = \"" << data << "\"\nvocab = \"" << data << "/vocab.safetensors\"\n"
-                        << "[model]\nlatent_dim = 32\nff_size = 64\nnum_layers = 2\nnum_heads = 2\ndropout = 0.0\n"
-                        << "[text]\nmodel_dim = 16\nlayers = 1\nheads = 2\nff_size = 32\n[diffusion]\nsteps = 50\n"
-                        << "[train]\nbatch = 4\nsteps = 40\nlearning_rate = 1e-3\nseed = 3\nsave_every = 10\nlog_every = 5\n" << extra;
-    return path;
-}
 
 std::vector<float> weights(const std::string& model_dir) {
     std::vector<float> all;
@@ -69,7 +35,7 @@ std::vector<float> weights(const std::string& model_dir) {
 
 TEST(Trainer, ConfigIsStrict) {
     const std::string dir = test::scratch_dir("trainer_config");
-    const std::string good = write_config(dir, "/data", dir + "/m", "[loss]\nlambda_acc = 1.0\nacc_space = \"joints\"\n");
+    const std::string good = test::write_tiny_train_config(dir, "/data", dir + "/m", "[loss]\nlambda_acc = 1.0\nacc_space = \"joints\"\n");
     const TrainConfig c = read_train_config(good);
     EXPECT_EQ(c.mdm.latent_dim, 32);
     EXPECT_DOUBLE_EQ(c.lambda_acc, 1.0);
@@ -119,8 +85,8 @@ TEST(Trainer, LossTermsVanishForAPerfectPredictionAndMatchTheirDefinitions) {
 TEST(Trainer, LossFallsResumeContinuesExactlyAndFinetuneStartsFromTheWeights) {
     torch::set_num_threads(1);
     const std::string dir = test::scratch_dir("trainer_run");
-    const std::string data = make_dataset(dir + "/data");
-    const std::string straight = write_config(dir, data, dir + "/straight", "[loss]\nlambda_vel = 1.0\n");
+    const std::string data = test::make_tiny_motion_dataset(dir + "/data");
+    const std::string straight = test::write_tiny_train_config(dir, data, dir + "/straight", "[loss]\nlambda_vel = 1.0\n");
     const TrainProgress full = train_mdm(read_train_config(straight), false);
     EXPECT_EQ(full.step, 40);
     // The loss falls: first logged total vs the mean of the last three.
@@ -133,7 +99,7 @@ TEST(Trainer, LossFallsResumeContinuesExactlyAndFinetuneStartsFromTheWeights) {
         EXPECT_TRUE(fs::exists(dir + "/straight/" + std::string(f))) << f;
 
     // The same run stopped after 20 steps and resumed: the same weights as the uninterrupted one.
-    const std::string interrupted = write_config(dir, data, dir + "/resumed", "[loss]\nlambda_vel = 1.0\n");
+    const std::string interrupted = test::write_tiny_train_config(dir, data, dir + "/resumed", "[loss]\nlambda_vel = 1.0\n");
     train_mdm(read_train_config(interrupted), false, "", 20);
     const TrainProgress resumed = train_mdm(read_train_config(interrupted), true);
     EXPECT_EQ(resumed.step, 40);
@@ -153,7 +119,7 @@ TEST(Trainer, LossFallsResumeContinuesExactlyAndFinetuneStartsFromTheWeights) {
     EXPECT_NO_THROW(load_mdm_weights(mdm, dir + "/straight/weights.safetensors"));
 
     // Fine-tuning with L_acc from the trained model: step count restarts, starting loss already low.
-    const std::string tune = write_config(dir, data, dir + "/tuned", "[loss]\nlambda_acc = 1.0\n");
+    const std::string tune = test::write_tiny_train_config(dir, data, dir + "/tuned", "[loss]\nlambda_acc = 1.0\n");
     train_mdm(read_train_config(tune), false, dir + "/straight", 5);
     std::ifstream tuned(dir + "/tuned/metrics.jsonl");
     std::string first;
@@ -164,8 +130,8 @@ TEST(Trainer, LossFallsResumeContinuesExactlyAndFinetuneStartsFromTheWeights) {
 TEST(Trainer, SampleFromATrainedModelIsSeededAndBatchIndependent) {
     torch::set_num_threads(1);
     const std::string dir = test::scratch_dir("trainer_sample");
-    const std::string data = make_dataset(dir + "/data");
-    train_mdm(read_train_config(write_config(dir, data, dir + "/model")), false, "", 10);
+    const std::string data = test::make_tiny_motion_dataset(dir + "/data");
+    train_mdm(read_train_config(test::write_tiny_train_config(dir, data, dir + "/model")), false, "", 10);
     std::ofstream(dir + "/prompts.txt") << "# activity<TAB>prompt\nwalking\ta person walks forward slowly\nwalking\tsomeone walks\n";
     const auto run = [&](const std::string& out, const std::string& extra) {
         const auto r = test::run_cli("--threads 1 sample --model " + dir + "/model --prompts " + dir + "/prompts.txt --frames 40 --seed 7 --out " + dir + "/" + out + " " + extra);

@@ -2,7 +2,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "cli/command.hpp"
@@ -13,6 +12,7 @@
 #include "diffusion/text_to_motion.hpp"
 #include "diffusion/torch_threads.hpp"
 #include "motion/humanml3d.hpp"
+#include "pipeline/prompt_set.hpp"
 
 namespace t2imu::cli {
 
@@ -25,30 +25,15 @@ struct SampleArgs {
     SampleOptions options;
 };
 
-// A prompts file: one prompt per line, or `activity<TAB>prompt` (the activity is recorded); # starts a comment.
-std::vector<std::pair<std::string, std::string>> read_prompts(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw Error(path, "file", "a readable prompts file");
-    std::vector<std::pair<std::string, std::string>> out;
-    for (std::string line; std::getline(in, line);) {
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        if (line.empty() || line[0] == '#') continue;
-        const size_t tab = line.find('\t');
-        out.push_back(tab == std::string::npos ? std::make_pair(std::string(), line) : std::make_pair(line.substr(0, tab), line.substr(tab + 1)));
-    }
-    if (out.empty()) throw Error(path, "prompts", "at least one prompt");
-    return out;
-}
-
 void run(SampleArgs a) {
     if (a.prompt.empty() == a.prompts.empty()) throw Error("sample", "prompt", "either --prompt TEXT or --prompts FILE");
     if (a.seconds > 0 && a.frames > 0) throw Error("sample", "length", "either --seconds or --frames");
     a.options.frames = a.frames > 0 ? a.frames : a.seconds > 0 ? static_cast<int>(std::lround(a.seconds * 20)) : 120;
     set_torch_threads(worker_threads());
-    const auto prompts = a.prompt.empty() ? read_prompts(a.prompts) : std::vector<std::pair<std::string, std::string>>{{"", a.prompt}};
+    const std::vector<Prompt> prompts = a.prompt.empty() ? read_prompt_set(a.prompts) : std::vector<Prompt>{{"", a.prompt}};
     std::unique_ptr<MotionModel> model = load_motion_model(a.model, global_options().device);
     std::vector<std::string> texts;
-    for (const auto& p : prompts) texts.push_back(p.second);
+    for (const Prompt& p : prompts) texts.push_back(p.text);
     const auto start = std::chrono::steady_clock::now();
     const std::vector<FeatureMatrix> motions = sample_motions(*model, texts, a.options);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -63,7 +48,7 @@ void run(SampleArgs a) {
         std::snprintf(name, sizeof name, "%04zu", i);
         write_npy(a.out + "/" + name + "_features.npy", feature_matrix_to_array(motions[i]));
         write_npy(a.out + "/" + name + "_joints.npy", joint_sequence_to_array(recover_from_ric(motions[i])));
-        record["samples"].push_back({{"id", name}, {"prompt", prompts[i].second}, {"activity", prompts[i].first}, {"seed", a.options.seed + i}});
+        record["samples"].push_back({{"id", name}, {"prompt", prompts[i].text}, {"activity", prompts[i].activity}, {"seed", a.options.seed + i}});
     }
     write_file_atomic(a.out + "/samples.json", record.dump(2) + "\n");
     std::printf("%s: %zu motions of %d frames (%s, guidance %g) in %.2f s on %s (%.2f motions/s)\n", a.out.c_str(), motions.size(),

@@ -8,6 +8,7 @@ std::string map_activity(const std::string& dataset, const std::string& activity
     static const std::map<std::string, std::map<std::string, std::string>> maps = {
         {"sisfall", {{"jogging", "running"}, {"stairs_up_down", "stairs"}, {"jump_reach", ""}}},
         {"umafall", {{"jogging", "running"}}},
+        {"t2imu", {{"jogging", "running"}, {"stairs_up_down", "stairs"}}},
     };
     const auto d = maps.find(dataset);
     if (d == maps.end()) return activity;

@@ -6,8 +6,10 @@
 //            (up and down in one trial, not separable), jump_reach -> dropped (mostly standing with one to
 //            three jumps: median |gyr| 0.10 rad/s, not the jumping class)
 //   umafall  jogging -> running; "jumping" is UMAFall's Hopping, kept as jumping
-//   hugadb, realworld, t2imu (synthetic): names are already canonical (RealWorld's climbingup/down were mapped
-//            to stairs_up/down by its loader)
+//   t2imu    (synthetic; labels are the prompt set's, which may use a real data set's own names):
+//            jogging -> running, stairs_up_down -> stairs, as for SisFall and UMAFall; nothing is dropped
+//   hugadb, realworld: names are already canonical (RealWorld's climbingup/down were mapped to stairs_up/down
+//            by its loader)
 // Comparing two data sets: where one has `stairs` and the other `stairs_up`/`stairs_down`, both sides use
 // `stairs`; then only the classes both sides have are kept (sorted by name).
 #pragma once

@@ -7,6 +7,7 @@
 //   t-SNE tables (CSV with tsne_x, tsne_y)                    -> scatter by `source` (or the first label column),
 //                                                               and for high-dynamic activities when labelled
 //   domain-gap results (JSON with classifier_two_sample_test) -> a table
+//   synthesis reports (t2imu synth's synth_report.json)      -> kept/dropped motions per activity, time taken
 //   IMU recordings (CSV starting t,acc_x,...)                  -> traces of the first three
 #pragma once
 #include <cstdint>
@@ -16,7 +17,7 @@
 namespace t2imu {
 
 struct ReportSummary {
-    int figures = 0, har_results = 0, lacc_tables = 0, tsne_tables = 0, gap_results = 0, traces = 0;
+    int figures = 0, synth_reports = 0, har_results = 0, lacc_tables = 0, tsne_tables = 0, gap_results = 0, traces = 0;
 };
 
 ReportSummary write_report(const std::string& results_dir, const std::string& report_dir);

@@ -1,0 +1,83 @@
+// t2imu synth: the main job, prompts -> motions -> bodies -> virtual sensors -> an IMU dataset.
+#include <cstdio>
+#include <unistd.h>
+
+#include "cli/command.hpp"
+#include "core/error.hpp"
+#include "diffusion/torch_threads.hpp"
+#include "pipeline/synth.hpp"
+
+namespace t2imu::cli {
+
+namespace {
+
+struct SynthArgs {
+    SynthOptions options;
+    std::string shard = "1/1";
+    bool no_filter = false;
+};
+
+// "I/N", 1-based on the command line.
+void parse_shard(const std::string& text, SynthOptions& o) {
+    int i = 0, n = 0;
+    char tail = 0;
+    if (std::sscanf(text.c_str(), "%d/%d%c", &i, &n, &tail) != 2 || n < 1 || i < 1 || i > n)
+        throw Error("--shard", "shard", "I/N with 1 <= I <= N", text);
+    o.shard = i - 1;
+    o.shards = n;
+}
+
+void run(SynthArgs a) {
+    SynthOptions& o = a.options;
+    parse_shard(a.shard, o);
+    o.filter = !a.no_filter;
+    o.device = global_options().device;
+    o.threads = worker_threads();
+    set_torch_threads(worker_threads());
+    const bool show = global_options().verbose || ::isatty(2);
+    const nlohmann::json r = run_synth(o, [&](const SynthProgress& p) {
+        if (!show) return;
+        const double rate = p.seconds > 0 ? p.done / p.seconds : 0;
+        std::fprintf(stderr, "\rsynth: %d/%d jobs, %.1f s, ETA %.0f s   ", p.done, p.total, p.seconds,
+                     rate > 0 ? (p.total - p.done) / rate : 0.0);
+        std::fflush(stderr);
+    });
+    if (show) std::fprintf(stderr, "\n");
+    const auto& t = r["this_run"];
+    std::printf("%s: %d of %d jobs done (%d motions kept, %d dropped, %d regenerated), %d recordings; this run: %d jobs in %.1f s "
+                "(motions %.1f s, quality %.1f s, bodies+IMU+write %.1f s)\n",
+                o.out.c_str(), r["jobs_done"].get<int>(), r["jobs"].get<int>(), r["motions_kept"].get<int>(), r["motions_dropped"].get<int>(),
+                r["jobs_regenerated"].get<int>(), r["recordings"].get<int>(), t["jobs_run"].get<int>(), t["total_s"].get<double>(),
+                t["motion_generation_s"].get<double>(), t["quality_scoring_s"].get<double>(), t["bodies_imu_write_s"].get<double>());
+}
+
+}  // namespace
+
+static CommandRegistrar registrar([](CLI::App& root) {
+    auto* cmd = root.add_subcommand("synth", "the main job: prompts -> motions -> bodies -> virtual sensors -> an IMU dataset");
+    static SynthArgs a;
+    SynthOptions& o = a.options;
+    o.sampling.sampler = "dpmpp";
+    o.sampling.steps = 20;
+    cmd->add_option("--prompts", o.prompts, "prompt set: activity<TAB>prompt per line (prompts/*.tsv)")->required()->check(CLI::ExistingFile);
+    cmd->add_option("--samples-per-prompt", o.samples_per_prompt, "motions per prompt (default 1)");
+    cmd->add_option("--model", o.model, "model folder (default models/default) or retrieval:DATASET");
+    cmd->add_option("--vocab", o.vocab, "GloVe vocabulary for retrieval (default $T2IMU_VOCAB or cache/text/glove-100k.safetensors)");
+    cmd->add_option("--sampler", o.sampling.sampler, "dpmpp (default), ddim or ddpm")->check(CLI::IsMember({"ddpm", "ddim", "dpmpp"}));
+    cmd->add_option("--steps", o.sampling.steps, "denoiser evaluations for ddim/dpmpp (default 20)");
+    cmd->add_option("--guidance", o.sampling.guidance, "classifier-free guidance scale (default 2.5)");
+    cmd->add_option("--seconds", o.seconds, "motion length, s (default 6; at most 9.8)");
+    cmd->add_option("--seed", o.sampling.seed, "seed of job 0; job k draws from seed + k");
+    cmd->add_option("--batch", o.sampling.batch, "motions per sampling batch (does not change them; default 16)");
+    cmd->add_option("--bodies", o.bodies, "body shapes (default paper8; as imu synth --body)");
+    cmd->add_option("--sensors", o.sensors, "placement sets (default realworld; as imu synth --sensors)");
+    cmd->add_option("--rate", o.rate_hz, "sensor sample rate, Hz (default 50)");
+    cmd->add_option("--noise", o.noise, "sensor error model: none (default), smartphone, hugadb [,key=value...]");
+    cmd->add_flag("--no-filter", a.no_filter, "keep every motion (the quality filter is on by default)");
+    cmd->add_option("--retries", o.max_retries, "draws after the first for a motion the filter rejects (default 2)");
+    cmd->add_option("--shard", a.shard, "I/N: run the I-th of N contiguous blocks of jobs (default 1/1)");
+    cmd->add_option("--out", o.out, "output folder (resumed when it holds the same synthesis)")->required();
+    cmd->callback([] { run(a); });
+});
+
+}  // namespace t2imu::cli

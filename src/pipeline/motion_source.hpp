@@ -1,0 +1,43 @@
+// Where a synthesis gets its motions: a trained text-to-motion model folder (diffusion sampling), or the
+// retrieval baseline `retrieval:DATASET` that answers a prompt with captured training clips.
+//
+// Retrieval (the row that shows what the learned models add; the paper compares with ReMoDiffuse, a
+// retrieval-augmented diffusion model): every clip of DATASET's train split (HumanML3D layout, t2imu data
+// build or the official release) is scored by the best SIF similarity (GloVe, a = 1e-4, as the activity
+// categoriser) between the prompt and its captions; a sample takes one of the kRetrievalTopK best clips at
+// random, time-warps it by a factor in [1 - kRetrievalWarp, 1 + kRetrievalWarp] (the dataset holds the
+// left-right mirrors already) and crops a random window of the asked length (a shorter clip is used whole).
+// Nothing is invented: every frame is captured motion, resampled.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "diffusion/text_to_motion.hpp"
+#include "motion/joint_sequence.hpp"
+
+namespace t2imu {
+
+constexpr int kRetrievalTopK = 5;
+constexpr double kRetrievalWarp = 0.1;
+
+class MotionSource {
+public:
+    virtual ~MotionSource() = default;
+    // One motion per prompt: SMPL-22 joints (m, Y up, floor at y = 0) at 20 fps, `frames` long (retrieval: at
+    // most). Prompt i draws only from seeds[i], so a motion does not depend on the other prompts of the call.
+    virtual std::vector<JointSequence> generate(const std::vector<std::string>& prompts, const std::vector<uint64_t>& seeds,
+                                                int frames) = 0;
+    // What produced the motions, for the synthesis record (model folder, training step, sampler...).
+    virtual nlohmann::json describe() const = 0;
+};
+
+// `spec`: a model folder, or retrieval:DATASET. `sampling` holds the sampler settings of a model (its seed
+// fields are ignored: generate() takes the seeds). `vocab`: the GloVe vocabulary for retrieval ("" = the
+// default: $T2IMU_VOCAB, else cache/text/glove-100k.safetensors).
+std::unique_ptr<MotionSource> open_motion_source(const std::string& spec, const SampleOptions& sampling,
+                                                 const std::string& device, const std::string& vocab = "");
+
+}  // namespace t2imu

@@ -1,0 +1,279 @@
+#include "pipeline/synth.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <thread>
+
+#include "core/atomic_file.hpp"
+#include "core/csv.hpp"
+#include "core/error.hpp"
+#include "core/npy.hpp"
+#include "har/imu_dataset.hpp"
+#include "imu/imu_writer.hpp"
+#include "imu/virtual_imu.hpp"
+#include "motion/bvh_export.hpp"
+#include "motion/normalization.hpp"
+#include "pipeline/motion_source.hpp"
+#include "pipeline/prompt_set.hpp"
+
+namespace t2imu {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+using nlohmann::json;
+
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::string job_name(int k) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "j%05d", k);
+    return buf;
+}
+
+// A job's motion after the quality filter: the attempt kept, or the last one when every attempt failed.
+struct Drawn {
+    JointSequence joints;
+    uint64_t seed = 0;
+    MotionQuality quality;
+    std::vector<std::string> failures;  // of the kept (or last) attempt
+    json attempts = json::array();      // seed and failures of every attempt
+    bool kept = true;
+};
+
+uint64_t attempt_seed(const SynthOptions& o, int job, int attempt) {
+    return o.sampling.seed + static_cast<uint64_t>(job) + static_cast<uint64_t>(attempt) * kSeedStridePerAttempt;
+}
+
+// Draws every job of the batch, then again with the next seed those the filter rejects.
+std::vector<Drawn> draw_filtered(MotionSource& source, const std::vector<int>& jobs, const std::vector<std::string>& texts,
+                                 const SynthOptions& o, double* generate_s, double* score_s) {
+    const int frames = static_cast<int>(std::lround(o.seconds * 20));
+    std::vector<Drawn> out(jobs.size());
+    std::vector<size_t> pending(jobs.size());
+    for (size_t i = 0; i < jobs.size(); ++i) pending[i] = i;
+    for (int attempt = 0; !pending.empty(); ++attempt) {
+        std::vector<std::string> prompts;
+        std::vector<uint64_t> seeds;
+        for (size_t i : pending) {
+            prompts.push_back(texts[i]);
+            seeds.push_back(attempt_seed(o, jobs[i], attempt));
+        }
+        auto t0 = Clock::now();
+        std::vector<JointSequence> motions = source.generate(prompts, seeds, frames);
+        *generate_s += since(t0);
+        t0 = Clock::now();
+        std::vector<size_t> again;
+        for (size_t p = 0; p < pending.size(); ++p) {
+            Drawn& d = out[pending[p]];
+            d.joints = std::move(motions[p]);
+            d.seed = seeds[p];
+            d.quality = score_motion(d.joints);
+            d.failures = quality_failures(d.quality, o.thresholds);
+            d.attempts.push_back({{"seed", d.seed}, {"failures", d.failures}});
+            d.kept = !o.filter || d.failures.empty();
+            if (!d.kept && attempt < o.max_retries) again.push_back(pending[p]);
+        }
+        *score_s += since(t0);
+        pending = again;
+    }
+    return out;
+}
+
+json quality_json(const MotionQuality& q) {
+    return {{"foot_skate_m_s", q.foot_skate_m_s}, {"penetration_m", q.penetration_m}, {"hover_m", q.hover_m},
+            {"max_speed_m_s", q.max_speed_m_s}, {"max_acc_m_s2", q.max_acc_m_s2}};
+}
+
+struct Stage {
+    std::vector<BodySpec> bodies;
+    std::vector<SensorPlacement> sensors;
+    VirtualImuOptions imu;
+};
+
+// Writes the job's motion and recordings, then its marker (last: the job is done).
+void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt& prompt, int sample, const Drawn& d) {
+    const std::string name = job_name(job);
+    json marker = {{"job", name}, {"index", job}, {"prompt", prompt.text}, {"activity", prompt.activity}, {"sample", sample},
+                   {"seed", d.seed}, {"attempts", d.attempts}, {"quality", quality_json(d.quality)}, {"kept", d.kept},
+                   {"frames", d.joints.num_frames}, {"recordings", json::array()}};
+    if (d.kept) {
+        write_npy(o.out + "/motions/" + name + "_joints.npy", joint_sequence_to_array(d.joints));
+        write_bvh(o.out + "/motions/" + name + ".bvh", smpl22_to_bvh(d.joints));
+        VirtualImuOptions imu = stage.imu;
+        imu.seed = stage.imu.seed + static_cast<uint64_t>(job);
+        for (const BodySpec& b : stage.bodies) {
+            const BodyImu r = synthesize_body_imu(d.joints, b, stage.sensors, imu);
+            for (size_t s = 0; s < r.mounts.size(); ++s) {
+                const std::string path = "recordings/" + name + "/" + r.body.name + "/" + r.mounts[s].placement.position + ".csv";
+                write_imu_csv(o.out + "/" + path, r.signals[s]);
+                marker["recordings"].push_back({{"path", path}, {"body", r.body.name}, {"position", r.mounts[s].placement.position},
+                                                {"n_samples", r.signals[s].t.size()}});
+            }
+        }
+    }
+    write_file_atomic(o.out + "/jobs/" + name + ".json", marker.dump(1) + "\n");
+}
+
+// Runs fn(i) for i in [0, n) on `threads` workers.
+void parallel_for(int n, int threads, const std::function<void(int)>& fn) {
+    std::vector<std::thread> workers;
+    std::atomic<int> next{0};
+    std::exception_ptr error;
+    std::mutex error_mutex;
+    for (int w = 0; w < std::max(1, std::min(threads, n)); ++w)
+        workers.emplace_back([&] {
+            for (int i; (i = next++) < n;) {
+                try {
+                    fn(i);
+                } catch (...) {
+                    std::lock_guard<std::mutex> lock(error_mutex);
+                    if (!error) error = std::current_exception();
+                }
+            }
+        });
+    for (std::thread& t : workers) t.join();
+    if (error) std::rethrow_exception(error);
+}
+
+json settings_json(const SynthOptions& o, const std::vector<Prompt>& prompts, const json& source) {
+    json p = json::array();
+    for (const Prompt& x : prompts) p.push_back({x.activity, x.text});
+    const MotionQualityThresholds& t = o.thresholds;
+    return {{"prompts_file", o.prompts}, {"prompts", p}, {"samples_per_prompt", o.samples_per_prompt}, {"source", source},
+            {"seed", o.sampling.seed}, {"seconds", o.seconds}, {"bodies", o.bodies}, {"sensors", o.sensors}, {"noise", o.noise},
+            {"rate_hz", o.rate_hz}, {"filter", o.filter}, {"max_retries", o.max_retries},
+            {"thresholds", {t.foot_skate_m_s, t.penetration_m, t.hover_m, t.max_speed_m_s, t.max_acc_m_s2}}};
+}
+
+void check_or_write_settings(const std::string& out, const json& settings) {
+    const std::string path = out + "/synth.json";
+    if (fs::exists(path)) {
+        const json before = json::parse(read_file_text(path));
+        for (const auto& [key, value] : settings.items())
+            if (before.value(key, json()) != value)
+                throw Error(path, key, value.dump() + " as this run asks (a folder holds one synthesis; use another --out)", before.value(key, json()).dump());
+        return;
+    }
+    write_file_atomic(path, settings.dump(1) + "\n");
+}
+
+void check_options(const SynthOptions& o) {
+    if (o.samples_per_prompt < 1) throw Error("synth", "--samples-per-prompt", "at least 1", std::to_string(o.samples_per_prompt));
+    if (!(o.seconds >= 0.2 && o.seconds <= kMaxMotionFrames / 20.0)) throw Error("synth", "--seconds", "0.2 to 9.8", std::to_string(o.seconds));
+    if (o.shards < 1 || o.shard < 0 || o.shard >= o.shards) throw Error("synth", "--shard", "I/N with 1 <= I <= N");
+    if (o.max_retries < 0) throw Error("synth", "--retries", "0 or more", std::to_string(o.max_retries));
+    if (o.out.empty()) throw Error("synth", "--out", "an output folder");
+}
+
+std::vector<json> read_markers(const std::string& out) {
+    std::vector<json> markers;
+    if (!fs::exists(out + "/jobs")) return markers;
+    std::vector<fs::path> files;
+    for (const auto& e : fs::directory_iterator(out + "/jobs"))
+        if (e.path().extension() == ".json") files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    for (const fs::path& p : files) markers.push_back(json::parse(read_file_text(p.string())));
+    return markers;
+}
+
+void write_manifest(const SynthOptions& o, const std::vector<json>& markers, const std::string& source) {
+    CsvTable m;
+    m.header = {"path", "dataset", "subject", "activity", "position", "rate_hz", "n_samples", "units", "source", "prompt", "body", "seed", "job"};
+    char rate[32];
+    std::snprintf(rate, sizeof rate, "%g", o.rate_hz);
+    for (const json& j : markers)
+        for (const json& r : j["recordings"])
+            m.rows.push_back({r["path"], "t2imu", r["body"], j["activity"], r["position"], rate, std::to_string(r["n_samples"].get<size_t>()),
+                              kImuUnits, source, j["prompt"], r["body"], std::to_string(j["seed"].get<uint64_t>()), j["job"]});
+    write_csv(o.out + "/manifest.csv", m);
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0;
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+    return v[v.size() / 2];
+}
+
+json report_json(const std::vector<json>& markers, int total_jobs, const json& timing) {
+    std::map<std::string, std::map<std::string, int>> per_activity;
+    std::map<std::string, int> failures;
+    std::map<std::string, std::vector<double>> scores;
+    int kept = 0, regenerated = 0, recordings = 0;
+    for (const json& j : markers) {
+        auto& a = per_activity[j["activity"].get<std::string>()];
+        const bool k = j["kept"];
+        a[k ? "kept" : "dropped"] += 1;
+        kept += k;
+        regenerated += j["attempts"].size() > 1;
+        recordings += static_cast<int>(j["recordings"].size());
+        for (const json& at : j["attempts"])
+            for (const json& f : at["failures"]) failures[f.get<std::string>()] += 1;
+        for (const auto& [name, v] : j["quality"].items()) scores[name].push_back(v.get<double>());
+    }
+    json medians;
+    for (const auto& [name, v] : scores) medians[name] = median(v);
+    return {{"jobs", total_jobs}, {"jobs_done", markers.size()}, {"motions_kept", kept}, {"motions_dropped", static_cast<int>(markers.size()) - kept},
+            {"jobs_regenerated", regenerated}, {"recordings", recordings}, {"per_activity", per_activity},
+            {"failed_attempts_by_score", failures}, {"quality_median", medians}, {"this_run", timing}};
+}
+
+}  // namespace
+
+json run_synth(const SynthOptions& o, const std::function<void(const SynthProgress&)>& progress) {
+    check_options(o);
+    const auto start = Clock::now();
+    const std::vector<Prompt> prompts = read_prompt_set(o.prompts);
+    Stage stage{parse_body_specs(o.bodies), parse_sensor_sets(o.sensors), {}};
+    stage.imu.rate_hz = o.rate_hz;
+    stage.imu.noise = parse_noise_model(o.noise);
+    stage.imu.seed = o.sampling.seed;
+    auto t0 = Clock::now();
+    std::unique_ptr<MotionSource> source = open_motion_source(o.model, o.sampling, o.device, o.vocab);
+    const double load_s = since(t0);
+    const json described = source->describe();
+    fs::create_directories(o.out + "/jobs");
+    check_or_write_settings(o.out, settings_json(o, prompts, described));
+
+    const int total = static_cast<int>(prompts.size()) * o.samples_per_prompt;
+    const int first = static_cast<int>(static_cast<long long>(total) * o.shard / o.shards);
+    const int last = static_cast<int>(static_cast<long long>(total) * (o.shard + 1) / o.shards);
+    std::vector<int> todo;
+    for (int k = first; k < last; ++k)
+        if (!fs::exists(o.out + "/jobs/" + job_name(k) + ".json")) todo.push_back(k);
+    SynthProgress p{last - first - static_cast<int>(todo.size()), last - first, 0};
+    double generate_s = 0, score_s = 0, imu_s = 0;
+    const size_t batch = static_cast<size_t>(std::max(1, o.sampling.batch));
+    for (size_t b = 0; b < todo.size(); b += batch) {
+        const std::vector<int> jobs(todo.begin() + static_cast<std::ptrdiff_t>(b), todo.begin() + static_cast<std::ptrdiff_t>(std::min(todo.size(), b + batch)));
+        std::vector<std::string> texts;
+        for (int k : jobs) texts.push_back(prompts[static_cast<size_t>(k / o.samples_per_prompt)].text);
+        const std::vector<Drawn> drawn = draw_filtered(*source, jobs, texts, o, &generate_s, &score_s);
+        t0 = Clock::now();
+        parallel_for(static_cast<int>(jobs.size()), o.threads, [&](int i) {
+            const int k = jobs[static_cast<size_t>(i)];
+            write_job(o, stage, k, prompts[static_cast<size_t>(k / o.samples_per_prompt)], k % o.samples_per_prompt, drawn[static_cast<size_t>(i)]);
+        });
+        imu_s += since(t0);
+        p.done += static_cast<int>(jobs.size());
+        p.seconds = since(start);
+        if (progress) progress(p);
+    }
+    t0 = Clock::now();
+    const std::vector<json> markers = read_markers(o.out);
+    write_manifest(o, markers, described.value("kind", "") == "retrieval" ? o.model : described.value("model", o.model));
+    const json timing = {{"jobs_run", todo.size()}, {"load_s", load_s}, {"motion_generation_s", generate_s}, {"quality_scoring_s", score_s},
+                         {"bodies_imu_write_s", imu_s}, {"manifest_s", since(t0)}, {"total_s", since(start)}, {"device", o.device},
+                         {"threads", o.threads}};
+    json report = report_json(markers, total, timing);
+    write_file_atomic(o.out + "/synth_report.json", report.dump(1) + "\n");
+    return report;
+}
+
+}  // namespace t2imu

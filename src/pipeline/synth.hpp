@@ -1,0 +1,62 @@
+// The main job: prompts -> motions -> bodies -> virtual sensors -> an IMU dataset (har/imu_dataset.hpp's
+// layout) with the motions that made it.
+//
+// Work is cut into jobs, one per prompt and sample (job k = prompt k / S, sample k % S for S samples per prompt),
+// each drawn from its own seed, so a job's output does not depend on which other jobs run, on the batch size
+// or on the shard beyond float rounding (jobs sampled in differently composed batches agree to ~1e-5 m/s^2;
+// the same run twice gives the same bytes). Output folder:
+//   synth.json                      the settings; a resume or a second shard refuses a folder made with others
+//   jobs/<job>.json                 written last for a job: it is done (resume skips it); its prompt, seeds,
+//                                   quality scores, and its recordings or why it was dropped
+//   recordings/<job>/<body>/<position>.csv   t,acc_xyz,gyr_xyz (s, m/s^2 with gravity, rad/s)
+//   motions/<job>_joints.npy, <job>.bvh   the motion: SMPL-22 joints [F,22,3] (20 fps; metres, Y up)
+//   manifest.csv                    rebuilt from every job marker when a run ends: dataset t2imu, subject = the
+//                                   body (a synthetic subject), extra columns source, prompt, body, seed, job
+//   synth_report.json               counts per activity, the quality filter's work and the time of each stage
+// Shards: --shard I/N takes the I-th of N contiguous blocks of jobs. Shards written to one folder (or copied
+// together) are merged by running once more without --shard: every job is done, the manifest is rebuilt.
+//
+// Quality filter (motion/motion_quality.hpp): a motion over any threshold is drawn again with the next seed,
+// up to max_retries times; one still failing then is dropped (recorded in its marker and the report). Seeds:
+// attempt a of job k draws from seed + k + a * kSeedStridePerAttempt.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "diffusion/text_to_motion.hpp"
+#include "motion/motion_quality.hpp"
+
+namespace t2imu {
+
+constexpr uint64_t kSeedStridePerAttempt = 1000003;
+
+struct SynthOptions {
+    std::string prompts;                 // prompt set file (pipeline/prompt_set.hpp)
+    int samples_per_prompt = 1;
+    std::string model = "models/default";  // a model folder or retrieval:DATASET
+    std::string vocab;                   // GloVe vocabulary for retrieval ("" = default)
+    SampleOptions sampling;              // sampler, steps, guidance, seed (of job 0), batch
+    double seconds = 6;                  // motion length (20 fps; at most 9.8 s)
+    std::string bodies = "paper8", sensors = "realworld", noise = "none";
+    double rate_hz = 50;
+    bool filter = true;
+    int max_retries = 2;
+    MotionQualityThresholds thresholds = default_quality_thresholds();
+    int shard = 0, shards = 1;           // this run does shard `shard` (0-based) of `shards`
+    std::string device = "cpu";
+    int threads = 1;                     // workers for the bodies/IMU stage
+    std::string out;
+};
+
+struct SynthProgress {
+    int done = 0, total = 0;  // jobs of this shard
+    double seconds = 0;
+};
+
+// Runs (or resumes) the jobs of this shard, then rebuilds the manifest and the report from every marker in the
+// folder. Returns the report (synth_report.json). `progress` is called after each batch of jobs.
+nlohmann::json run_synth(const SynthOptions& options, const std::function<void(const SynthProgress&)>& progress = {});
+
+}  // namespace t2imu

@@ -1,0 +1,203 @@
+// The main job end to end on a tiny model: a dataset the HAR loader accepts, resume that redoes only
+// unfinished jobs, shards that add up to the whole run, refusal of a folder made with other settings, the
+// quality filter, and the retrieval baseline.
+#include <gtest/gtest.h>
+#include <torch/torch.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "core/atomic_file.hpp"
+#include "core/csv.hpp"
+#include "core/error.hpp"
+#include "core/npy.hpp"
+#include "diffusion/trainer.hpp"
+#include "har/imu_dataset.hpp"
+#include "pipeline/synth.hpp"
+#include "test_util.hpp"
+#include "tiny_model.hpp"
+
+using namespace t2imu;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct TinySetup {
+    std::string dir, data, model, prompts;
+};
+
+// Trains the tiny model once per test binary run (10 steps, about a second).
+const TinySetup& tiny() {
+    static const TinySetup s = [] {
+        torch::set_num_threads(1);
+        TinySetup t;
+        t.dir = test::scratch_dir("synth_model");
+        t.data = test::make_tiny_motion_dataset(t.dir + "/data");
+        t.model = t.dir + "/model";
+        train_mdm(read_train_config(test::write_tiny_train_config(t.dir, t.data, t.model)), false, "", 10);
+        t.prompts = t.dir + "/prompts.tsv";
+        std::ofstream(t.prompts) << "# two activities\nwalking\ta person walks forward slowly\nrunning\tsomeone walks\n";
+        return t;
+    }();
+    return s;
+}
+
+SynthOptions tiny_options(const std::string& out) {
+    SynthOptions o;
+    o.prompts = tiny().prompts;
+    o.model = tiny().model;
+    o.samples_per_prompt = 2;
+    o.sampling.sampler = "dpmpp";
+    o.sampling.steps = 5;
+    o.sampling.seed = 11;
+    o.sampling.batch = 3;
+    o.seconds = 2;
+    o.bodies = "preset:male_average+preset:female_short";
+    o.sensors = "sisfall";
+    o.filter = false;  // the tiny model's motions are not plausible; the filter has its own test
+    o.out = out;
+    return o;
+}
+
+std::string csv_of(const std::string& out, const std::string& job, const std::string& body) {
+    return out + "/recordings/" + job + "/" + body + "/waist.csv";
+}
+
+// Largest difference between two recordings of the same length (m/s^2 or rad/s); +inf when the shapes differ.
+// Jobs sampled in batches of other compositions agree up to float rounding of the batched products, which the
+// second derivative of position amplifies to ~1e-5 m/s^2.
+double max_difference(const std::string& a, const std::string& b) {
+    const CsvTable x = read_csv(a), y = read_csv(b);
+    if (x.rows.size() != y.rows.size() || x.header != y.header) return INFINITY;
+    double worst = 0;
+    for (size_t r = 0; r < x.rows.size(); ++r)
+        for (size_t c = 0; c < x.header.size(); ++c) worst = std::max(worst, std::fabs(x.number(r, c) - y.number(r, c)));
+    return worst;
+}
+
+}  // namespace
+
+TEST(Synth, WritesAnImuDatasetWithItsMotions) {
+    const std::string out = test::scratch_dir("synth_full");
+    const nlohmann::json r = run_synth(tiny_options(out));
+    EXPECT_EQ(r["jobs"], 4);
+    EXPECT_EQ(r["motions_kept"], 4);
+    const std::vector<ImuRecording> recs = read_imu_dataset(out);  // loads and checks every CSV
+    ASSERT_EQ(recs.size(), 8u);                                    // 2 prompts x 2 samples x 2 bodies x 1 sensor
+    int walking = 0;
+    for (const ImuRecording& rec : recs) {
+        EXPECT_EQ(rec.dataset, "t2imu");
+        EXPECT_EQ(rec.position, "waist");
+        EXPECT_EQ(rec.subject, rec.extra.at("body"));
+        EXPECT_DOUBLE_EQ(rec.rate_hz, 50);
+        EXPECT_EQ(rec.t.size(), 98u);  // 40 frames at 20 fps span 1.95 s: samples at 0, 0.02, ..., 1.94 s
+        walking += rec.activity == "walking";
+        if (rec.activity == "walking") EXPECT_EQ(rec.extra.at("prompt"), "a person walks forward slowly");
+    }
+    EXPECT_EQ(walking, 4);
+    // Job k draws from seed + k; the motion and its BVH are kept.
+    const nlohmann::json j3 = nlohmann::json::parse(read_file_text(out + "/jobs/j00003.json"));
+    EXPECT_EQ(j3["seed"], 14);
+    EXPECT_EQ(j3["activity"], "running");
+    EXPECT_EQ(j3["sample"], 1);
+    EXPECT_EQ(read_npy(out + "/motions/j00003_joints.npy").shape, (std::vector<int64_t>{40, 22, 3}));
+    EXPECT_TRUE(fs::exists(out + "/motions/j00003.bvh"));
+}
+
+TEST(Synth, ResumeRedoesOnlyUnfinishedJobs) {
+    const std::string out = test::scratch_dir("synth_resume");
+    run_synth(tiny_options(out));
+    const std::string before = test::scratch_dir("synth_resume_before") + "/waist.csv";
+    fs::copy_file(csv_of(out, "j00002", "female_short"), before);
+    const auto untouched = fs::last_write_time(csv_of(out, "j00001", "male_average"));
+    fs::remove(out + "/jobs/j00002.json");  // as if killed before job 2 finished
+    fs::remove(csv_of(out, "j00002", "female_short"));
+    const nlohmann::json r = run_synth(tiny_options(out));
+    EXPECT_EQ(r["this_run"]["jobs_run"], 1);
+    EXPECT_LT(max_difference(csv_of(out, "j00002", "female_short"), before), 1e-3);  // redone alone: batch of 1, not 3
+    EXPECT_EQ(fs::last_write_time(csv_of(out, "j00001", "male_average")), untouched);
+    EXPECT_EQ(read_imu_dataset(out, false).size(), 8u);
+}
+
+TEST(Synth, ShardsAddUpToTheWholeRun) {
+    const std::string whole = test::scratch_dir("synth_whole"), sharded = test::scratch_dir("synth_sharded");
+    run_synth(tiny_options(whole));
+    for (int i = 0; i < 2; ++i) {
+        SynthOptions o = tiny_options(sharded);
+        o.shard = i;
+        o.shards = 2;
+        EXPECT_EQ(run_synth(o)["this_run"]["jobs_run"], 2);
+    }
+    const nlohmann::json merged = run_synth(tiny_options(sharded));  // nothing left to do: rebuilds the manifest
+    EXPECT_EQ(merged["this_run"]["jobs_run"], 0);
+    EXPECT_EQ(read_file_text(sharded + "/manifest.csv"), read_file_text(whole + "/manifest.csv"));
+    for (const char* job : {"j00000", "j00003"})
+        EXPECT_LT(max_difference(csv_of(sharded, job, "male_average"), csv_of(whole, job, "male_average")), 1e-3) << job;
+    // The same run twice gives the same bytes.
+    const std::string again = test::scratch_dir("synth_whole_again");
+    run_synth(tiny_options(again));
+    EXPECT_TRUE(read_file_bytes(csv_of(again, "j00003", "female_short")) == read_file_bytes(csv_of(whole, "j00003", "female_short")));
+}
+
+TEST(Synth, RefusesAFolderMadeWithOtherSettings) {
+    const std::string out = test::scratch_dir("synth_settings");
+    SynthOptions o = tiny_options(out);
+    o.samples_per_prompt = 1;
+    run_synth(o);
+    o.seconds = 3;
+    try {
+        run_synth(o);
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("seconds"), std::string::npos) << e.what();
+    }
+    o.seconds = 2;
+    o.shard = 0;
+    o.shards = 3;  // a shard of the same synthesis is welcome
+    EXPECT_NO_THROW(run_synth(o));
+}
+
+TEST(Synth, RetrievalGivesCapturedMotionThatPassesTheFilter) {
+    const std::string out = test::scratch_dir("synth_retrieval");
+    SynthOptions o = tiny_options(out);
+    o.model = "retrieval:" + tiny().data;
+    o.vocab = tiny().data + "/vocab.safetensors";
+    o.filter = true;
+    const nlohmann::json r = run_synth(o);
+    EXPECT_EQ(r["motions_kept"], 4);
+    EXPECT_EQ(r["jobs_regenerated"], 0);
+    // A slow captured walk: its fastest joint and worst skating are far inside the thresholds.
+    EXPECT_LT(r["quality_median"]["max_speed_m_s"].get<double>(), 5.0);
+    EXPECT_LT(r["quality_median"]["foot_skate_m_s"].get<double>(), 0.5);
+    // The clips are 60 frames; time-warped by at most 10 % and cropped to the 40 asked for.
+    EXPECT_EQ(read_npy(out + "/motions/j00000_joints.npy").shape, (std::vector<int64_t>{40, 22, 3}));
+}
+
+TEST(Synth, FilterRegeneratesThenDropsWhatNeverPasses) {
+    const std::string out = test::scratch_dir("synth_filter");
+    SynthOptions o = tiny_options(out);
+    o.samples_per_prompt = 1;
+    o.filter = true;
+    o.max_retries = 1;
+    o.thresholds = {0, 0, 0, 0, 0};  // every motion moves, so every attempt fails
+    const nlohmann::json r = run_synth(o);
+    EXPECT_EQ(r["motions_dropped"], 2);
+    EXPECT_EQ(r["jobs_regenerated"], 2);
+    const nlohmann::json j = nlohmann::json::parse(read_file_text(out + "/jobs/j00001.json"));
+    ASSERT_EQ(j["attempts"].size(), 2u);
+    EXPECT_EQ(j["attempts"][1]["seed"], 11 + 1 + kSeedStridePerAttempt);
+    EXPECT_FALSE(j["kept"].get<bool>());
+    EXPECT_TRUE(read_imu_dataset(out, false).empty());
+}
+
+TEST(Synth, CommandLineRunsAndRefusesABadShard) {
+    const std::string out = test::scratch_dir("synth_cli");
+    const auto bad = test::run_cli("synth --prompts " + tiny().prompts + " --model " + tiny().model + " --shard 3/2 --out " + out);
+    EXPECT_NE(bad.exit_code, 0);
+    EXPECT_NE(bad.output.find("--shard"), std::string::npos) << bad.output;
+    const auto ok = test::run_cli("--threads 1 synth --prompts " + tiny().prompts + " --model " + tiny().model +
+                                  " --steps 3 --seconds 1 --bodies preset:male_tall --sensors umafall --no-filter --out " + out);
+    ASSERT_EQ(ok.exit_code, 0) << ok.output;
+    EXPECT_EQ(read_imu_dataset(out, true).size(), 8u);  // 2 jobs x 1 body x 4 UMAFall sensors
+}
