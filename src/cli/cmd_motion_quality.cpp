@@ -41,25 +41,24 @@ double percentile(std::vector<double> v, double p) {
 }
 
 void run(const std::vector<std::string>& inputs, double fps, double p, const std::string& out) {
-    std::string csv = "file,foot_skate_m_s,penetration_m,hover_m,max_speed_m_s,max_acc_m_s2\n";
-    std::vector<std::vector<double>> columns(5);
+    std::string csv = "file";
+    for (const char* name : kQualityScoreNames) csv += std::string(",") + name;
+    csv += "\n";
+    std::vector<std::vector<double>> columns(kNumQualityScores);
     for (const std::string& file : joint_files(inputs)) {
-        const MotionQuality q = score_motion(joint_sequence_from_array(read_npy(file), file, 22, 3, fps));
-        const double v[5] = {q.foot_skate_m_s, q.penetration_m, q.hover_m, q.max_speed_m_s, q.max_acc_m_s2};
+        const auto v = quality_scores(score_motion(joint_sequence_from_array(read_npy(file), file, 22, 3, fps)));
         char row[256];
         std::snprintf(row, sizeof row, ",%.4f,%.4f,%.4f,%.3f,%.2f\n", v[0], v[1], v[2], v[3], v[4]);
         csv += file + row;
-        for (int i = 0; i < 5; ++i) columns[static_cast<size_t>(i)].push_back(v[i]);
+        for (size_t i = 0; i < kNumQualityScores; ++i) columns[i].push_back(v[i]);
     }
     if (columns[0].empty()) throw Error("motion quality", "inputs", "at least one joints .npy");
     if (!out.empty()) write_file_atomic(out, csv);
-    const MotionQualityThresholds t = default_quality_thresholds();
-    const double limit[5] = {t.foot_skate_m_s, t.penetration_m, t.hover_m, t.max_speed_m_s, t.max_acc_m_s2};
-    const char* names[5] = {"foot_skate_m_s", "penetration_m", "hover_m", "max_speed_m_s", "max_acc_m_s2"};
+    const auto limit = quality_limits(default_quality_thresholds());
     std::printf("%zu motions: score, %g-th percentile, default threshold, share over it\n", columns[0].size(), p);
-    for (size_t i = 0; i < 5; ++i) {
+    for (size_t i = 0; i < kNumQualityScores; ++i) {
         const auto over = std::count_if(columns[i].begin(), columns[i].end(), [&](double v) { return v > limit[i]; });
-        std::printf("  %-15s %10.4f %10.4f %7.2f %%\n", names[i], percentile(columns[i], p), limit[i],
+        std::printf("  %-15s %10.4f %10.4f %7.2f %%\n", kQualityScoreNames[i], percentile(columns[i], p), limit[i],
                     100.0 * static_cast<double>(over) / static_cast<double>(columns[i].size()));
     }
 }

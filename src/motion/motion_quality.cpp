@@ -8,6 +8,17 @@
 
 namespace t2imu {
 
+const std::array<const char*, kNumQualityScores> kQualityScoreNames = {"foot_skate_m_s", "penetration_m", "hover_m",
+                                                                        "max_speed_m_s", "max_acc_m_s2"};
+
+std::array<double, kNumQualityScores> quality_scores(const MotionQuality& q) {
+    return {q.foot_skate_m_s, q.penetration_m, q.hover_m, q.max_speed_m_s, q.max_acc_m_s2};
+}
+
+std::array<double, kNumQualityScores> quality_limits(const MotionQualityThresholds& t) {
+    return {t.foot_skate_m_s, t.penetration_m, t.hover_m, t.max_speed_m_s, t.max_acc_m_s2};
+}
+
 MotionQualityThresholds default_quality_thresholds() {
     return {1.3, 0.05, 0.30, 14.0, 350.0};
 }
@@ -52,18 +63,19 @@ MotionQuality score_motion(const JointSequence& m) {
 }
 
 std::vector<std::string> quality_failures(const MotionQuality& q, const MotionQualityThresholds& t) {
+    static const std::array<const char*, kNumQualityScores> failure = {"foot_skate", "penetration", "hover", "max_speed", "max_acc"};
+    const auto score = quality_scores(q), limit = quality_limits(t);
     std::vector<std::string> out;
-    if (q.foot_skate_m_s > t.foot_skate_m_s) out.push_back("foot_skate");
-    if (q.penetration_m > t.penetration_m) out.push_back("penetration");
-    if (q.hover_m > t.hover_m) out.push_back("hover");
-    if (q.max_speed_m_s > t.max_speed_m_s) out.push_back("max_speed");
-    if (q.max_acc_m_s2 > t.max_acc_m_s2) out.push_back("max_acc");
+    for (size_t i = 0; i < kNumQualityScores; ++i)
+        if (score[i] > limit[i]) out.push_back(failure[i]);
     return out;
 }
 
 double quality_badness(const MotionQuality& q, const MotionQualityThresholds& t) {
-    return std::max({q.foot_skate_m_s / t.foot_skate_m_s, q.penetration_m / t.penetration_m, q.hover_m / t.hover_m,
-                     q.max_speed_m_s / t.max_speed_m_s, q.max_acc_m_s2 / t.max_acc_m_s2});
+    const auto score = quality_scores(q), limit = quality_limits(t);
+    double worst = 0;
+    for (size_t i = 0; i < kNumQualityScores; ++i) worst = std::max(worst, score[i] / limit[i]);
+    return worst;
 }
 
 }  // namespace t2imu

@@ -14,6 +14,7 @@
 // Captured clips never go below the floor (HumanML3D puts the floor at their lowest joint); 5 cm is allowed.
 // So a motion that fails one is less plausible than 199 in 200 captured motions.
 #pragma once
+#include <array>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,12 @@ struct MotionQualityThresholds {
 };
 
 constexpr double kContactHeight = 0.05;  // m above the floor
+
+// The five scores in one order, for tables and records: names as the fields above, with their units.
+constexpr size_t kNumQualityScores = 5;
+extern const std::array<const char*, kNumQualityScores> kQualityScoreNames;  // "foot_skate_m_s", ...
+std::array<double, kNumQualityScores> quality_scores(const MotionQuality& q);
+std::array<double, kNumQualityScores> quality_limits(const MotionQualityThresholds& t);
 
 MotionQualityThresholds default_quality_thresholds();
 

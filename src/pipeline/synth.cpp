@@ -87,8 +87,10 @@ std::vector<Drawn> draw_filtered(MotionSource& source, const std::vector<int>& j
 }
 
 json quality_json(const MotionQuality& q) {
-    return {{"foot_skate_m_s", q.foot_skate_m_s}, {"penetration_m", q.penetration_m}, {"hover_m", q.hover_m},
-            {"max_speed_m_s", q.max_speed_m_s}, {"max_acc_m_s2", q.max_acc_m_s2}};
+    const auto scores = quality_scores(q);
+    json out;
+    for (size_t i = 0; i < kNumQualityScores; ++i) out[kQualityScoreNames[i]] = scores[i];
+    return out;
 }
 
 struct Stage {
@@ -145,11 +147,10 @@ void parallel_for(int n, int threads, const std::function<void(int)>& fn) {
 json settings_json(const SynthOptions& o, const std::vector<Prompt>& prompts, const json& source) {
     json p = json::array();
     for (const Prompt& x : prompts) p.push_back({x.activity, x.text});
-    const MotionQualityThresholds& t = o.thresholds;
     return {{"prompts_file", o.prompts}, {"prompts", p}, {"samples_per_prompt", o.samples_per_prompt}, {"source", source},
             {"seed", o.sampling.seed}, {"seconds", o.seconds}, {"bodies", o.bodies}, {"sensors", o.sensors}, {"noise", o.noise},
             {"rate_hz", o.rate_hz}, {"filter", o.filter}, {"max_retries", o.max_retries},
-            {"thresholds", {t.foot_skate_m_s, t.penetration_m, t.hover_m, t.max_speed_m_s, t.max_acc_m_s2}}};
+            {"thresholds", quality_limits(o.thresholds)}};
 }
 
 void check_or_write_settings(const std::string& out, const json& settings) {
@@ -183,7 +184,8 @@ std::vector<json> read_markers(const std::string& out) {
     return markers;
 }
 
-void write_manifest(const SynthOptions& o, const std::vector<json>& markers, const std::string& source) {
+// Rows for every recording of every marker; `source` is the model folder or retrieval:DATASET as given.
+void write_manifest(const SynthOptions& o, const std::vector<json>& markers) {
     CsvTable m;
     m.header = {"path", "dataset", "subject", "activity", "position", "rate_hz", "n_samples", "units", "source", "prompt", "body", "seed", "job"};
     char rate[32];
@@ -191,7 +193,7 @@ void write_manifest(const SynthOptions& o, const std::vector<json>& markers, con
     for (const json& j : markers)
         for (const json& r : j["recordings"])
             m.rows.push_back({r["path"], "t2imu", r["body"], j["activity"], r["position"], rate, std::to_string(r["n_samples"].get<size_t>()),
-                              kImuUnits, source, j["prompt"], r["body"], std::to_string(j["seed"].get<uint64_t>()), j["job"]});
+                              kImuUnits, o.model, j["prompt"], r["body"], std::to_string(j["seed"].get<uint64_t>()), j["job"]});
     write_csv(o.out + "/manifest.csv", m);
 }
 
@@ -267,7 +269,7 @@ json run_synth(const SynthOptions& o, const std::function<void(const SynthProgre
     }
     t0 = Clock::now();
     const std::vector<json> markers = read_markers(o.out);
-    write_manifest(o, markers, described.value("kind", "") == "retrieval" ? o.model : described.value("model", o.model));
+    write_manifest(o, markers);
     const json timing = {{"jobs_run", todo.size()}, {"load_s", load_s}, {"motion_generation_s", generate_s}, {"quality_scoring_s", score_s},
                          {"bodies_imu_write_s", imu_s}, {"manifest_s", since(t0)}, {"total_s", since(start)}, {"device", o.device},
                          {"threads", o.threads}};
