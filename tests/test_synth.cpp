@@ -27,12 +27,14 @@ struct TinySetup {
     std::string dir, data, model, prompts;
 };
 
-// Trains the tiny model once per test binary run (10 steps, about a second).
+// Trains the tiny model once per test process (10 steps, about a second). ctest runs each test in its own
+// process, several at once, so the folder is named after the test: a shared one would be wiped by a neighbour.
 const TinySetup& tiny() {
     static const TinySetup s = [] {
         torch::set_num_threads(1);
         TinySetup t;
-        t.dir = test::scratch_dir("synth_model");
+        const std::string test_name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        t.dir = test::scratch_dir("synth_model_" + test_name);
         t.data = test::make_tiny_motion_dataset(t.dir + "/data");
         t.model = t.dir + "/model";
         train_mdm(read_train_config(test::write_tiny_train_config(t.dir, t.data, t.model)), false, "", 10);
