@@ -138,6 +138,29 @@ TEST(HarTraining, SeparatesSinesOfDifferentFrequencyAcrossDataSets) {
     for (const auto& row : j["confusion"])
         for (const auto& v : row) total += v.get<long>();
     EXPECT_EQ(total, static_cast<long>(2 * r.test_windows));  // summed over the two runs
+
+    // One training per seed, written, read back and merged, is the two-run result: how the experiment resumes.
+    std::vector<HarResult> parts;
+    for (uint64_t seed = 0; seed < 2; ++seed) {
+        HarOptions one = o;
+        one.repeats = 1;
+        one.seed = seed;
+        const std::string path = test::scratch_dir("har_seed_" + std::to_string(seed)) + "/result.json";
+        write_file_atomic(path, har_result_json(train_and_test(tr, te, one), "one seed"));
+        parts.push_back(read_har_result(path));
+    }
+    const HarResult merged = merge_har_results(parts);
+    ASSERT_EQ(merged.runs.size(), 2u);
+    EXPECT_EQ(merged.run_names, r.run_names);
+    for (size_t k = 0; k < 2; ++k) {
+        EXPECT_EQ(merged.runs[k].balanced_accuracy, r.runs[k].balanced_accuracy);
+        EXPECT_EQ(merged.runs[k].confusion, r.runs[k].confusion);
+        EXPECT_EQ(merged.runs[k].epochs, r.runs[k].epochs);
+    }
+    EXPECT_EQ(nlohmann::json::parse(har_result_json(merged, "sines"))["confusion"], j["confusion"]);
+    HarResult other = parts[1];
+    other.classes.pop_back();
+    EXPECT_THROW(merge_har_results({parts[0], other}), Error);
 }
 
 TEST(HarTraining, CliLeaveOneSubjectOut) {

@@ -94,20 +94,24 @@ TEST(Tsne, CliEmbedsAFeatureTableAndCarriesLabels) {
     const PointMatrix x = blobs(3, 40, 6, &label, 5);
     const std::string dir = test::scratch_dir("tsne_cli");
     CsvTable t;
-    t.header = {"label", "f1", "f2", "f3", "f4", "f5", "f6"};
+    // "window" is numeric but a label of catch22 tables, not a feature; a "nan" feature (catch22 of a flat
+    // channel) must not take its row out.
+    t.header = {"label", "window", "f1", "f2", "f3", "f4", "f5", "f6"};
     for (Eigen::Index i = 0; i < x.rows(); ++i) {
-        std::vector<std::string> row = {"c" + std::to_string(label[static_cast<size_t>(i)])};
+        std::vector<std::string> row = {"c" + std::to_string(label[static_cast<size_t>(i)]), std::to_string(i * 1000)};
         for (Eigen::Index d = 0; d < 6; ++d) row.push_back(std::to_string(x(i, d)));
         t.rows.push_back(row);
     }
+    t.rows[7][4] = "nan";
     write_csv(dir + "/x.csv", t);
     const auto r = test::run_cli("tsne --in " + dir + "/x.csv --out " + dir + "/y.csv --perplexity 10");
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("trustworthiness"), std::string::npos);
     const CsvTable y = read_csv(dir + "/y.csv");
-    EXPECT_EQ(y.header, (std::vector<std::string>{"label", "tsne_x", "tsne_y"}));
+    EXPECT_EQ(y.header, (std::vector<std::string>{"label", "window", "tsne_x", "tsne_y"}));
     ASSERT_EQ(y.rows.size(), 120u);
+    EXPECT_EQ(y.rows[5][1], "5000");
     PointMatrix e(120, 2);
-    for (size_t i = 0; i < 120; ++i) e.row(static_cast<Eigen::Index>(i)) << y.number(i, 1), y.number(i, 2);
+    for (size_t i = 0; i < 120; ++i) e.row(static_cast<Eigen::Index>(i)) << y.number(i, 2), y.number(i, 3);
     EXPECT_GT(knn_label_agreement(e, label), 0.99);
 }

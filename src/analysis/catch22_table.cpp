@@ -23,7 +23,7 @@ CsvTable catch22_window_table(const WindowSet& w, const std::vector<std::string>
     if (static_cast<int>(channel_names.size()) != w.channels)
         throw Error("catch22 table", "channels", std::to_string(w.channels) + " names", std::to_string(channel_names.size()));
     CsvTable t;
-    t.header = {"subject", "trial", "activity", "window"};
+    t.header = kWindowLabelColumns;
     const size_t features = catch24 ? 24 : 22;
     for (const std::string& c : channel_names)
         for (size_t f = 0; f < features; ++f) t.header.push_back(c + "_" + catch24_short_names()[f]);

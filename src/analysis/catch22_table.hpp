@@ -9,6 +9,9 @@
 
 namespace t2imu {
 
+// The label columns a window table starts with; every other column is a feature.
+inline const std::vector<std::string> kWindowLabelColumns = {"subject", "trial", "activity", "window"};
+
 // Columns: subject, trial, activity, window (index within the trial), then <channel>_<short name> for every
 // channel and feature. A channel that is constant within a window (catch22 cannot z-score it) gets "nan".
 // channel_names: one per window channel, e.g. acc_x, acc_y, acc_z.

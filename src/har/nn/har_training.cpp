@@ -8,6 +8,7 @@
 #include <random>
 #include <set>
 
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "har/class_map.hpp"
 #include "har/nn/deepconvlstm.hpp"
@@ -256,13 +257,63 @@ std::string har_result_json(const HarResult& r, const std::string& description) 
         epochs += run.epochs;
         seconds += run.seconds_per_epoch * run.epochs;
     }
-    nlohmann::json per_class;
+    nlohmann::json per_class, records = nlohmann::json::array();
+    for (size_t k = 0; k < r.runs.size(); ++k) {
+        const HarRun& run = r.runs[k];
+        records.push_back({{"name", k < r.run_names.size() ? r.run_names[k] : ""}, {"balanced_accuracy", run.balanced_accuracy},
+                           {"macro_f1", run.macro_f1}, {"epochs", run.epochs}, {"seconds_per_epoch", run.seconds_per_epoch},
+                           {"confusion", run.confusion}});
+    }
     for (size_t i = 0; i < K; ++i) per_class[r.classes[i]] = recall_n[i] ? nlohmann::json(recall[i] / recall_n[i]) : nlohmann::json(nullptr);
     nlohmann::json j = {{"description", description}, {"classes", r.classes}, {"balanced_accuracy", summary(&HarRun::balanced_accuracy)},
                         {"macro_f1", summary(&HarRun::macro_f1)}, {"per_class_recall", per_class}, {"confusion", total},
                         {"run_names", r.run_names}, {"train_windows", r.train_windows}, {"test_windows", r.test_windows},
-                        {"epochs_total", epochs}, {"seconds_per_epoch", epochs > 0 ? seconds / epochs : 0.0}};
+                        {"epochs_total", epochs}, {"seconds_per_epoch", epochs > 0 ? seconds / epochs : 0.0},
+                        {"run_records", records}};
     return j.dump(2) + "\n";
+}
+
+HarResult read_har_result(const std::string& path) {
+    nlohmann::json j;
+    try {
+        j = nlohmann::json::parse(read_file_text(path));
+    } catch (const nlohmann::json::exception& e) {
+        throw Error(path, "json", "a HAR result (t2imu har run)", e.what());
+    }
+    if (!j.is_object() || !j.contains("run_records") || !j.contains("classes"))
+        throw Error(path, "run_records", "a HAR result with its run records (t2imu har run)");
+    HarResult r;
+    r.classes = j["classes"].get<std::vector<std::string>>();
+    r.train_windows = j.value("train_windows", size_t{0});
+    r.test_windows = j.value("test_windows", size_t{0});
+    for (const nlohmann::json& rec : j["run_records"]) {
+        HarRun run;
+        run.balanced_accuracy = rec.at("balanced_accuracy").get<double>();
+        run.macro_f1 = rec.at("macro_f1").get<double>();
+        run.epochs = rec.at("epochs").get<int>();
+        run.seconds_per_epoch = rec.at("seconds_per_epoch").get<double>();
+        run.confusion = rec.at("confusion").get<Confusion>();
+        if (run.confusion.size() != r.classes.size()) throw Error(path, "confusion", std::to_string(r.classes.size()) + " rows, one per class");
+        r.runs.push_back(run);
+        r.run_names.push_back(rec.at("name").get<std::string>());
+    }
+    return r;
+}
+
+HarResult merge_har_results(const std::vector<HarResult>& parts) {
+    HarResult all;
+    for (const HarResult& p : parts) {
+        if (&p == &parts.front()) {
+            all.classes = p.classes;
+            all.train_windows = p.train_windows;
+            all.test_windows = p.test_windows;
+        } else if (p.classes != all.classes || p.train_windows != all.train_windows || p.test_windows != all.test_windows) {
+            throw Error("har results", "classes", "the same classes and windows in every part");
+        }
+        all.runs.insert(all.runs.end(), p.runs.begin(), p.runs.end());
+        all.run_names.insert(all.run_names.end(), p.run_names.begin(), p.run_names.end());
+    }
+    return all;
 }
 
 }  // namespace t2imu

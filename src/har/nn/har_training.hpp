@@ -47,7 +47,12 @@ HarResult train_and_test(const WindowSet& train, const WindowSet& test, const Ha
 HarResult leave_one_subject_out(const WindowSet& data, const HarOptions& options, int folds = 0);
 
 // RESULT.json: classes, balanced_accuracy {mean, sd, runs}, macro_f1 {...}, per_class_recall (mean over runs),
-// confusion (summed over runs, rows = true class), plus counts and timings.
+// confusion (summed over runs, rows = true class), plus counts and timings, and `run_records`: each run's name,
+// scores, epochs and its own confusion, so results of separate runs can be read back and merged.
 std::string har_result_json(const HarResult& r, const std::string& description);
+// The HarResult a har_result_json document holds (its run_records); throws Error naming `path` when it has none.
+HarResult read_har_result(const std::string& path);
+// The runs of several results over the same classes and data, in order (e.g. one file per seed).
+HarResult merge_har_results(const std::vector<HarResult>& parts);
 
 }  // namespace t2imu

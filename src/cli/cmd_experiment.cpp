@@ -1,0 +1,30 @@
+// t2imu experiment: the paper's experiment on the data we hold, from one config (experiments/paper.toml).
+#include <cstdio>
+
+#include "cli/command.hpp"
+#include "diffusion/torch_threads.hpp"
+#include "pipeline/experiment.hpp"
+
+namespace t2imu::cli {
+
+static CommandRegistrar registrar([](CLI::App& root) {
+    auto* cmd = root.add_subcommand("experiment",
+                                    "synthetic data per source and real set -> HAR synthetic-to-real (repeats), catch22 domain gap, "
+                                    "t-SNE, real-to-real ceiling, L_acc per category -> summary.md and report; resumable");
+    static std::string config, out;
+    static int repeats = 0;
+    cmd->add_option("--config", config, "experiment TOML (experiments/paper.toml)")->required()->check(CLI::ExistingFile);
+    cmd->add_option("--out", out, "results folder; rerun with the same folder to continue")->required();
+    cmd->add_option("--repeats", repeats, "HAR trainings per row (default: the config's har.repeats)");
+    cmd->callback([] {
+        ExperimentConfig c = read_experiment_config(config);
+        if (repeats > 0) c.har.repeats = repeats;
+        c.synth.device = global_options().device;
+        c.synth.threads = worker_threads();
+        set_torch_threads(worker_threads());
+        const nlohmann::json summary = run_experiment(c, out, [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
+        std::printf("%s", experiment_summary_markdown(summary).c_str());
+    });
+});
+
+}  // namespace t2imu::cli

@@ -1,0 +1,49 @@
+// Strict reading of TOML configuration files (toml++): a key nobody reads is an error, so a typo in a config
+// is refused with its name instead of silently leaving a default in place.
+#pragma once
+#include <set>
+#include <string>
+#include <toml++/toml.h>
+#include <vector>
+
+#include "core/error.hpp"
+
+namespace t2imu {
+
+// The TOML document of `path`; throws Error with the parser's message.
+toml::table parse_toml_file(const std::string& path);
+
+// One table of a config file; `name` is its dotted name in messages ("" for the top level).
+class TomlSection {
+public:
+    TomlSection(const toml::table& table, std::string path, std::string name)
+        : table_(table), path_(std::move(path)), name_(std::move(name)) {}
+
+    // Leaves `value` unchanged when the key is absent; throws when it holds another type.
+    template <class T> void read(const char* key, T& value) {
+        read_keys_.insert(key);
+        const toml::node* n = table_.get(key);
+        if (!n) return;
+        const auto v = n->value<T>();
+        if (!v) throw Error(path_, field(key), "a value of the right type");
+        value = *v;
+    }
+    void read(const char* key, std::vector<std::string>& values);  // an array of strings
+    template <class T> void require(const char* key, T& value) {
+        if (!table_.get(key)) throw Error(path_, field(key), "a value (required)");
+        read(key, value);
+    }
+    // A sub-table (empty when absent) or an array of tables, read by the caller.
+    TomlSection table(const char* key);
+    std::vector<TomlSection> array_of_tables(const char* key);
+    // Throws for the first key of this table that no read() named.
+    void refuse_unknown_keys() const;
+
+private:
+    std::string field(const std::string& key) const { return name_.empty() ? key : name_ + "." + key; }
+    const toml::table& table_;
+    std::string path_, name_;
+    std::set<std::string> read_keys_;
+};
+
+}  // namespace t2imu

@@ -1,0 +1,81 @@
+// The paper's experiment (Häusler et al.) on the data we hold, as one resumable run:
+//
+//   for every motion source (a model folder, or the retrieval baseline) and every real data set:
+//     t2imu synth on that data set's prompt set and sensor placement        -> synth/<source>-<set>/
+//     catch22 of every real and synthetic window                            -> features/{real,<source>}-<set>.csv
+//     real vs synthetic: classifier two-sample test, per-feature distances  -> gap/<source>-<set>.json
+//     DeepConvLSTM trained only on the synthetic set, tested on the real one,
+//     one training per seed (har.repeats of them)                           -> runs/<source>-<set>/seed-<k>.jsonl
+//                                                                              merged: har/<source>-<set>.json
+//   per real set: t-SNE of real and every source's windows (a seeded draw of
+//     at most features.tsne_points windows per group)                      -> tsne/<set>.csv
+//   per real set: the real-to-real leave-subjects-out ceiling on the classes
+//     the synthetic sets share with it                                     -> har/ceiling-<set>.json
+//   L_acc of two models on the same clips and draws, per activity category -> lacc/<model>.csv, lacc/change.csv
+//   the table of it all                                                     -> summary.json, summary.md
+//   the HTML report                                                         -> report/index.html
+//
+// Every output is written atomically and a step whose output exists is skipped, so a killed run continues where
+// it stopped and raising har.repeats later trains only the new seeds. Order: everything cheap first (synthesis,
+// features, t-SNE, L_acc), then the HAR trainings seed by seed across all rows, rewriting the summary and report
+// after each round, so a partial run already shows every row. The synthetic sets carry their own settings
+// check (pipeline/synth.hpp): running with other synthesis settings into the same folder is refused.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "analysis/tsne.hpp"
+#include "har/nn/har_training.hpp"
+#include "har/windowing.hpp"
+#include "pipeline/synth.hpp"
+
+namespace t2imu {
+
+struct ExperimentSource {
+    std::string name;   // row name in tables and file names
+    std::string model;  // model folder or retrieval:DATASET (as t2imu synth --model)
+};
+
+struct ExperimentRealSet {
+    std::string name;     // column name in tables and file names
+    std::string dataset;  // IMU dataset folder (har/imu_dataset.hpp layout)
+    std::string prompts;  // prompt set in this data set's class names
+    std::string sensors;  // placement set the synthetic recordings are made at
+    std::vector<std::string> positions;  // positions compared (windowing.hpp names)
+    int ceiling_folds = 0;  // real-to-real ceiling: subjects dealt into this many folds (0: one per subject; -1: none)
+};
+
+struct ExperimentLacc {
+    std::string before, after;  // source names (model folders); empty: the step is skipped
+    std::string dataset, split = "test", vocab;
+    uint64_t seed = 0;
+    double tau = 0.45;  // the paper's similarity threshold for the category Other
+};
+
+struct ExperimentConfig {
+    SynthOptions synth;  // shared synthesis settings; prompts, model, sensors and out are set per row
+    std::vector<ExperimentSource> sources;
+    std::vector<ExperimentRealSet> real_sets;
+    WindowOptions windows;  // rate, length, overlap, channels; positions are set per real set
+    HarOptions har;         // repeats = trainings per row, with seeds har.seed + k
+    int tsne_points = 1500;
+    TsneOptions tsne;
+    uint64_t feature_seed = 0;  // the two-sample test's folds and the t-SNE draw
+    ExperimentLacc lacc;
+};
+
+// Reads experiments/*.toml (see experiments/paper.toml for every key); unknown keys are refused.
+ExperimentConfig read_experiment_config(const std::string& path);
+
+// Runs or resumes the experiment into `out`; `log` receives one line per step done. Returns summary.json.
+nlohmann::json run_experiment(const ExperimentConfig& config, const std::string& out,
+                              const std::function<void(const std::string&)>& log = {});
+
+// summary.md: balanced accuracy per source and real set (mean ± sd over the runs, with the paper's figures
+// beside them), the real-to-real ceilings, chance, the two-sample test and the L_acc change.
+std::string experiment_summary_markdown(const nlohmann::json& summary);
+
+}  // namespace t2imu

@@ -1,0 +1,116 @@
+// experiments/*.toml -> ExperimentConfig (pipeline/experiment.hpp). Paths are taken as written: relative ones
+// resolve against the working directory, the repository root for the shipped configs.
+#include <set>
+
+#include "core/error.hpp"
+#include "core/toml_section.hpp"
+#include "pipeline/experiment.hpp"
+
+namespace t2imu {
+
+namespace {
+
+uint64_t read_seed(TomlSection& s, const char* key, uint64_t value) {
+    int64_t v = static_cast<int64_t>(value);
+    s.read(key, v);
+    if (v < 0) throw Error("config", key, "a seed >= 0", std::to_string(v));
+    return static_cast<uint64_t>(v);
+}
+
+void read_synth(TomlSection s, SynthOptions& o) {
+    s.read("samples_per_prompt", o.samples_per_prompt);
+    s.read("bodies", o.bodies);
+    s.read("noise", o.noise);
+    s.read("vocab", o.vocab);
+    s.read("sampler", o.sampling.sampler);
+    s.read("steps", o.sampling.steps);
+    s.read("guidance", o.sampling.guidance);
+    s.read("batch", o.sampling.batch);
+    o.sampling.seed = read_seed(s, "seed", o.sampling.seed);
+    s.read("seconds", o.seconds);
+    s.read("rate_hz", o.rate_hz);
+    s.read("filter", o.filter);
+    s.read("max_retries", o.max_retries);
+    s.refuse_unknown_keys();
+}
+
+void read_har(TomlSection s, HarOptions& h, WindowOptions& w) {
+    s.read("repeats", h.repeats);
+    h.seed = read_seed(s, "seed", h.seed);
+    s.read("max_epochs", h.max_epochs);
+    s.read("patience", h.patience);
+    s.read("batch", h.batch);
+    s.read("learning_rate", h.learning_rate);
+    s.read("rate_hz", w.rate_hz);
+    s.read("window_s", w.window_s);
+    s.read("overlap", w.overlap);
+    s.read("gyro", w.gyro);
+    s.refuse_unknown_keys();
+    if (h.repeats < 1) throw Error("config", "har.repeats", "at least 1", std::to_string(h.repeats));
+}
+
+void read_lacc(TomlSection s, ExperimentLacc& l) {
+    s.read("before", l.before);
+    s.read("after", l.after);
+    s.read("dataset", l.dataset);
+    s.read("split", l.split);
+    s.read("vocab", l.vocab);
+    l.seed = read_seed(s, "seed", l.seed);
+    s.read("tau", l.tau);
+    s.refuse_unknown_keys();
+}
+
+void check_names(const ExperimentConfig& c, const std::string& path) {
+    std::set<std::string> sources, sets;
+    for (const ExperimentSource& s : c.sources)
+        if (s.name.empty() || s.name.find_first_of("/ -") != std::string::npos || !sources.insert(s.name).second)
+            throw Error(path, "source.name", "unique names without '/', ' ' or '-'", s.name);
+    for (const ExperimentRealSet& r : c.real_sets)
+        if (r.name.empty() || r.name.find_first_of("/ -") != std::string::npos || !sets.insert(r.name).second || r.name == "real")
+            throw Error(path, "real.name", "unique names without '/', ' ' or '-', other than 'real'", r.name);
+    if (c.sources.empty() || c.real_sets.empty()) throw Error(path, "source, real", "at least one [[source]] and one [[real]]");
+    for (const std::string& name : {c.lacc.before, c.lacc.after})
+        if (!name.empty() && !sources.count(name)) throw Error(path, "lacc", "before/after naming a [[source]]", name);
+    if (c.lacc.before.empty() != c.lacc.after.empty()) throw Error(path, "lacc", "both before and after, or neither");
+}
+
+}  // namespace
+
+ExperimentConfig read_experiment_config(const std::string& path) {
+    const toml::table doc = parse_toml_file(path);
+    TomlSection top(doc, path, "");
+    ExperimentConfig c;
+    c.synth.sampling.sampler = "dpmpp";  // t2imu synth's defaults
+    c.synth.sampling.steps = 20;
+    read_synth(top.table("synth"), c.synth);
+    for (TomlSection s : top.array_of_tables("source")) {
+        ExperimentSource src;
+        s.require("name", src.name);
+        s.require("model", src.model);
+        s.refuse_unknown_keys();
+        c.sources.push_back(src);
+    }
+    for (TomlSection s : top.array_of_tables("real")) {
+        ExperimentRealSet r;
+        s.require("name", r.name);
+        s.require("dataset", r.dataset);
+        s.require("prompts", r.prompts);
+        s.require("sensors", r.sensors);
+        s.read("positions", r.positions);
+        s.read("ceiling_folds", r.ceiling_folds);
+        s.refuse_unknown_keys();
+        c.real_sets.push_back(r);
+    }
+    read_har(top.table("har"), c.har, c.windows);
+    TomlSection features = top.table("features");
+    features.read("tsne_points", c.tsne_points);
+    features.read("perplexity", c.tsne.perplexity);
+    c.feature_seed = read_seed(features, "seed", c.feature_seed);
+    features.refuse_unknown_keys();
+    read_lacc(top.table("lacc"), c.lacc);
+    top.refuse_unknown_keys();
+    check_names(c, path);
+    return c;
+}
+
+}  // namespace t2imu
