@@ -14,6 +14,8 @@
 #include "core/npy.hpp"
 #include "diffusion/trainer.hpp"
 #include "har/imu_dataset.hpp"
+#include "motion/joint_sequence.hpp"
+#include "motion/motion_activity.hpp"
 #include "pipeline/synth.hpp"
 #include "test_util.hpp"
 #include "tiny_model.hpp"
@@ -202,4 +204,40 @@ TEST(Synth, CommandLineRunsAndRefusesABadShard) {
                                   " --steps 3 --seconds 1 --bodies preset:male_tall --sensors umafall --no-filter --out " + out);
     ASSERT_EQ(ok.exit_code, 0) << ok.output;
     EXPECT_EQ(read_imu_dataset(out, true).size(), 8u);  // 2 jobs x 1 body x 4 UMAFall sensors
+}
+
+TEST(Synth, ActivityCheckDropsMotionsThatShowAnotherActivity) {
+    // Both prompts retrieve the tiny set's slow walk. The reference says walking looks like those very
+    // motions and running like them shifted by 10 units in every descriptor, so the walking prompt's motions
+    // agree fully with their activity and the running prompt's, still walks after every redraw, are dropped.
+    const std::string dir = test::scratch_dir("synth_activity");
+    SynthOptions o = tiny_options(dir + "/unchecked");
+    o.model = "retrieval:" + tiny().data;
+    o.vocab = tiny().data + "/vocab.safetensors";
+    o.filter = true;
+    run_synth(o);
+    std::vector<ActivityExample> reference;
+    for (int k = 0; k < 4; ++k) {
+        const std::string file = o.out + "/motions/j0000" + std::to_string(k) + "_joints.npy";
+        const MotionDescriptors d = describe_motion(joint_sequence_from_array(read_npy(file), file));
+        MotionDescriptors far = d;
+        for (double& x : far) x += 10;
+        reference.push_back({"walking", "w" + std::to_string(k), d});
+        reference.push_back({"running", "r" + std::to_string(k), far});
+    }
+    o.activity_reference = dir + "/reference.csv";
+    write_csv(o.activity_reference, MotionActivityClassifier(reference).reference_table());
+    o.out = dir + "/checked";
+    const nlohmann::json r = run_synth(o);
+    EXPECT_EQ(r["motions_kept"], 2);
+    EXPECT_EQ(r["motions_dropped"], 2);
+    const nlohmann::json walk = nlohmann::json::parse(read_file_text(o.out + "/jobs/j00000.json"));
+    EXPECT_EQ(walk["activity_check"]["shown"], "walking");
+    EXPECT_DOUBLE_EQ(walk["activity_check"]["agreement"].get<double>(), 1.0);
+    const nlohmann::json run = nlohmann::json::parse(read_file_text(o.out + "/jobs/j00002.json"));
+    EXPECT_FALSE(run["kept"].get<bool>());
+    EXPECT_EQ(run["activity_check"]["shown"], "walking");
+    EXPECT_LT(run["activity_check"]["agreement"].get<double>(), o.min_activity_agreement);
+    ASSERT_EQ(run["attempts"].size(), 3u);
+    for (const auto& attempt : run["attempts"]) EXPECT_EQ(attempt["failures"], nlohmann::json::array({"activity"}));
 }

@@ -1,5 +1,6 @@
 // t2imu synth: the main job, prompts -> motions -> bodies -> virtual sensors -> an IMU dataset.
 #include <cstdio>
+#include <filesystem>
 #include <unistd.h>
 
 #include "cli/command.hpp"
@@ -10,6 +11,9 @@
 namespace t2imu::cli {
 
 namespace {
+
+// Relative to the working directory, like models/default: the quick start runs from the repository root.
+const char* const kDefaultActivityReference = "models/motion-activity.csv";
 
 struct SynthArgs {
     SynthOptions options;
@@ -31,6 +35,10 @@ void run(SynthArgs a) {
     SynthOptions& o = a.options;
     parse_shard(a.shard, o);
     o.filter = !a.no_filter;
+    if (o.activity_reference == kDefaultActivityReference && !std::filesystem::exists(o.activity_reference)) {
+        std::fprintf(stderr, "synth: no %s here: motions are not checked for their prompt's activity\n", kDefaultActivityReference);
+        o.activity_reference.clear();
+    }
     o.device = global_options().device;
     o.threads = worker_threads();
     set_torch_threads(worker_threads());
@@ -74,6 +82,10 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--rate", o.rate_hz, "sensor sample rate, Hz (default 50)");
     cmd->add_option("--noise", o.noise, "sensor error model: none (default), smartphone, hugadb [,key=value...]");
     cmd->add_flag("--no-filter", a.no_filter, "keep every motion (the quality filter is on by default)");
+    o.activity_reference = kDefaultActivityReference;
+    cmd->add_option("--activity-reference", o.activity_reference,
+                    "captured clips the activity check compares with (default models/motion-activity.csv; \"\" = no check)");
+    cmd->add_option("--min-activity-agreement", o.min_activity_agreement, "activity check threshold, 0..1 (default 0.55)");
     cmd->add_option("--retries", o.max_retries, "draws after the first for a motion the filter rejects (default 2)");
     cmd->add_option("--shard", a.shard, "I/N: run the I-th of N contiguous blocks of jobs (default 1/1)");
     cmd->add_option("--out", o.out, "output folder (resumed when it holds the same synthesis)")->required();

@@ -31,6 +31,8 @@ void read_synth(TomlSection s, SynthOptions& o) {
     s.read("rate_hz", o.rate_hz);
     s.read("filter", o.filter);
     s.read("max_retries", o.max_retries);
+    s.read("activity_reference", o.activity_reference);
+    s.read("min_activity_agreement", o.min_activity_agreement);
     s.refuse_unknown_keys();
 }
 

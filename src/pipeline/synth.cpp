@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "core/atomic_file.hpp"
@@ -17,6 +18,7 @@
 #include "imu/imu_writer.hpp"
 #include "imu/virtual_imu.hpp"
 #include "motion/bvh_export.hpp"
+#include "motion/motion_activity.hpp"
 #include "motion/normalization.hpp"
 #include "pipeline/motion_source.hpp"
 #include "pipeline/prompt_set.hpp"
@@ -43,6 +45,8 @@ struct Drawn {
     uint64_t seed = 0;
     MotionQuality quality;
     std::vector<std::string> failures;  // of the kept (or last) attempt
+    std::string activity_shown;         // the activity classifier's answer ("" without a check)
+    double activity_agreement = 1;
     json attempts = json::array();      // seed and failures of every attempt
     bool kept = true;
 };
@@ -51,8 +55,18 @@ uint64_t attempt_seed(const SynthOptions& o, int job, int attempt) {
     return o.sampling.seed + static_cast<uint64_t>(job) + static_cast<uint64_t>(attempt) * kSeedStridePerAttempt;
 }
 
-// Draws every job of the batch, then again with the next seed those the filter rejects.
+// The activity check of a drawn motion: a failure when the motion shows something far from the prompt's activity.
+void check_activity(const MotionActivityClassifier& classifier, const std::string& expected, double min_agreement, Drawn& d) {
+    const ActivityScores s = classifier.classify(describe_motion(d.joints));
+    d.activity_shown = s.best;
+    d.activity_agreement = s.agreement(expected);
+    if (d.activity_agreement < min_agreement) d.failures.push_back("activity");
+}
+
+// Draws every job of the batch, then again with the next seed those the filter rejects. `expected`: per job, the
+// activity classifier's class for its prompt ("" = not checked).
 std::vector<Drawn> draw_filtered(MotionSource& source, const std::vector<int>& jobs, const std::vector<std::string>& texts,
+                                 const std::vector<std::string>& expected, const MotionActivityClassifier* classifier,
                                  const SynthOptions& o, double* generate_s, double* score_s) {
     const int frames = static_cast<int>(std::lround(o.seconds * 20));
     std::vector<Drawn> out(jobs.size());
@@ -76,6 +90,7 @@ std::vector<Drawn> draw_filtered(MotionSource& source, const std::vector<int>& j
             d.seed = seeds[p];
             d.quality = score_motion(d.joints);
             d.failures = quality_failures(d.quality, o.thresholds);
+            if (classifier) check_activity(*classifier, expected[pending[p]], o.min_activity_agreement, d);
             d.attempts.push_back({{"seed", d.seed}, {"failures", d.failures}});
             d.kept = !o.filter || d.failures.empty();
             if (!d.kept && attempt < o.max_retries) again.push_back(pending[p]);
@@ -105,6 +120,7 @@ void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt&
     json marker = {{"job", name}, {"index", job}, {"prompt", prompt.text}, {"activity", prompt.activity}, {"sample", sample},
                    {"seed", d.seed}, {"attempts", d.attempts}, {"quality", quality_json(d.quality)}, {"kept", d.kept},
                    {"frames", d.joints.num_frames}, {"recordings", json::array()}};
+    if (!d.activity_shown.empty()) marker["activity_check"] = {{"shown", d.activity_shown}, {"agreement", d.activity_agreement}};
     if (d.kept) {
         write_npy(o.out + "/motions/" + name + "_joints.npy", joint_sequence_to_array(d.joints));
         write_bvh(o.out + "/motions/" + name + ".bvh", smpl22_to_bvh(d.joints));
@@ -147,10 +163,13 @@ void parallel_for(int n, int threads, const std::function<void(int)>& fn) {
 json settings_json(const SynthOptions& o, const std::vector<Prompt>& prompts, const json& source) {
     json p = json::array();
     for (const Prompt& x : prompts) p.push_back({x.activity, x.text});
-    return {{"prompts_file", o.prompts}, {"prompts", p}, {"samples_per_prompt", o.samples_per_prompt}, {"source", source},
+    json s = {{"prompts_file", o.prompts}, {"prompts", p}, {"samples_per_prompt", o.samples_per_prompt}, {"source", source},
             {"seed", o.sampling.seed}, {"seconds", o.seconds}, {"bodies", o.bodies}, {"sensors", o.sensors}, {"noise", o.noise},
             {"rate_hz", o.rate_hz}, {"filter", o.filter}, {"max_retries", o.max_retries},
             {"thresholds", quality_limits(o.thresholds)}};
+    // Absent without an activity check, so folders made before the check existed stay valid.
+    if (!o.activity_reference.empty()) s["activity_check"] = {{"reference", o.activity_reference}, {"min_agreement", o.min_activity_agreement}};
+    return s;
 }
 
 void check_or_write_settings(const std::string& out, const json& settings) {
@@ -238,6 +257,8 @@ json run_synth(const SynthOptions& o, const std::function<void(const SynthProgre
     stage.imu.seed = o.sampling.seed;
     auto t0 = Clock::now();
     std::unique_ptr<MotionSource> source = open_motion_source(o.model, o.sampling, o.device, o.vocab);
+    std::optional<MotionActivityClassifier> classifier;
+    if (!o.activity_reference.empty()) classifier = MotionActivityClassifier::load(o.activity_reference);
     const double load_s = since(t0);
     const json described = source->describe();
     fs::create_directories(o.out + "/jobs");
@@ -254,9 +275,13 @@ json run_synth(const SynthOptions& o, const std::function<void(const SynthProgre
     const size_t batch = static_cast<size_t>(std::max(1, o.sampling.batch));
     for (size_t b = 0; b < todo.size(); b += batch) {
         const std::vector<int> jobs(todo.begin() + static_cast<std::ptrdiff_t>(b), todo.begin() + static_cast<std::ptrdiff_t>(std::min(todo.size(), b + batch)));
-        std::vector<std::string> texts;
-        for (int k : jobs) texts.push_back(prompts[static_cast<size_t>(k / o.samples_per_prompt)].text);
-        const std::vector<Drawn> drawn = draw_filtered(*source, jobs, texts, o, &generate_s, &score_s);
+        std::vector<std::string> texts, expected;
+        for (int k : jobs) {
+            const Prompt& prompt = prompts[static_cast<size_t>(k / o.samples_per_prompt)];
+            texts.push_back(prompt.text);
+            expected.push_back(classifier ? reference_activity(prompt.activity, classifier->classes()) : "");
+        }
+        const std::vector<Drawn> drawn = draw_filtered(*source, jobs, texts, expected, classifier ? &*classifier : nullptr, o, &generate_s, &score_s);
         t0 = Clock::now();
         parallel_for(static_cast<int>(jobs.size()), o.threads, [&](int i) {
             const int k = jobs[static_cast<size_t>(i)];

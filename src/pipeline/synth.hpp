@@ -16,7 +16,7 @@
 // Shards: --shard I/N takes the I-th of N contiguous blocks of jobs. Shards written to one folder (or copied
 // together) are merged by running once more without --shard: every job is done, the manifest is rebuilt.
 //
-// Quality filter (motion/motion_quality.hpp): a motion over any threshold is drawn again with the next seed,
+// Quality filter (motion/motion_quality.hpp, and the activity check below): a motion over any threshold is drawn again with the next seed,
 // up to max_retries times; one still failing then is dropped (recorded in its marker and the report). Seeds:
 // attempt a of job k draws from seed + k + a * kSeedStridePerAttempt.
 #pragma once
@@ -44,6 +44,13 @@ struct SynthOptions {
     bool filter = true;
     int max_retries = 2;
     MotionQualityThresholds thresholds = default_quality_thresholds();
+    // Activity check (motion/motion_activity.hpp): with a reference CSV, a motion whose agreement with its
+    // prompt's activity is below min_activity_agreement fails like a quality score ("activity"). 0.55 is the
+    // 0.5th percentile of the captured clips' agreement with their own activity, leave-one-subject-out, so as
+    // for the other thresholds a failing motion is less typical of its activity than 199 in 200 captured ones.
+    // Prompts whose activity the reference lacks are not checked.
+    std::string activity_reference;      // "" = no activity check
+    double min_activity_agreement = 0.55;
     int shard = 0, shards = 1;           // this run does shard `shard` (0-based) of `shards`
     std::string device = "cpu";
     int threads = 1;                     // workers for the bodies/IMU stage

@@ -1,0 +1,173 @@
+// Motion descriptors against motions whose statistics are known by construction (HumanML3D's rest skeleton
+// moved rigidly), and the activity classifier against reference sets whose answers are known.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "core/csv.hpp"
+#include "motion/motion_activity.hpp"
+#include "motion/skeleton.hpp"
+#include "test_util.hpp"
+
+namespace t2imu {
+namespace {
+
+// HumanML3D's target skeleton in its rest pose (upright, legs straight, facing +Z), lowest joint on the floor.
+std::array<Eigen::Vector3d, smpl22::kNumJoints> rest_pose() {
+    std::array<Eigen::Vector3d, smpl22::kNumJoints> p;
+    for (int j = 0; j < smpl22::kNumJoints; ++j)
+        p[j] = smpl22::kParents[j] < 0 ? Eigen::Vector3d(Eigen::Vector3d::Zero()) : Eigen::Vector3d(p[smpl22::kParents[j]] + smpl22::kTargetOffsets[j]);
+    double lowest = INFINITY;
+    for (const Eigen::Vector3d& x : p) lowest = std::min(lowest, x.y());
+    for (Eigen::Vector3d& x : p) x.y() -= lowest;
+    return p;
+}
+
+// The rest pose rotated by `pose` about the pelvis, then displaced by offset(t) at t = frame / 20 s.
+template <class Offset>
+JointSequence rigid_motion(int frames, const Eigen::Matrix3d& pose, Offset offset) {
+    const auto rest = rest_pose();
+    JointSequence m(frames, smpl22::kNumJoints, smpl22::kFps);
+    for (int f = 0; f < frames; ++f)
+        for (int j = 0; j < smpl22::kNumJoints; ++j)
+            m.at(f, j) = rest[0] + pose * (rest[j] - rest[0]) + offset(f / smpl22::kFps);
+    return m;
+}
+
+double descriptor(const MotionDescriptors& d, const std::string& name) {
+    for (size_t i = 0; i < kNumMotionDescriptors; ++i)
+        if (name == kMotionDescriptorNames[i]) return d[i];
+    ADD_FAILURE() << "no descriptor " << name;
+    return NAN;
+}
+
+TEST(MotionDescriptors, WalkingPaceTranslationOfAnUprightBody) {
+    const MotionDescriptors d = describe_motion(rigid_motion(60, Eigen::Matrix3d::Identity(),
+                                                             [](double t) { return Eigen::Vector3d(0, 0, 1.2 * t); }));
+    EXPECT_NEAR(descriptor(d, "root_speed_m_s"), 1.2, 1e-9);
+    EXPECT_NEAR(descriptor(d, "foot_speed_m_s"), 1.2, 1e-9);
+    EXPECT_NEAR(descriptor(d, "wrist_speed_m_s"), 0.0, 1e-9);  // relative to the pelvis
+    EXPECT_NEAR(descriptor(d, "pelvis_height_sd_m"), 0.0, 1e-9);
+    EXPECT_NEAR(descriptor(d, "root_vertical_speed_sd_m_s"), 0.0, 1e-9);
+    EXPECT_NEAR(descriptor(d, "climb_rate_m_s"), 0.0, 1e-9);
+    EXPECT_EQ(descriptor(d, "airborne_fraction"), 0.0);
+    // Upright: legs straight under the hips, trunk vertical, head about 0.5 m over the pelvis, pelvis about 0.9 m up.
+    EXPECT_LT(descriptor(d, "thigh_tilt_rad"), 0.1);
+    EXPECT_LT(descriptor(d, "knee_flexion_rad"), 0.1);
+    EXPECT_LT(descriptor(d, "trunk_tilt_rad"), 0.15);
+    EXPECT_GT(descriptor(d, "head_above_pelvis_m"), 0.4);
+    EXPECT_NEAR(descriptor(d, "pelvis_height_m"), 0.9, 0.1);
+}
+
+TEST(MotionDescriptors, LyingBodyHasItsHeadAtPelvisHeight) {
+    // Rotated -90 degrees about X: the head points along -Z, the face up. The rest skeleton carries its head
+    // about 0.1 m forward of the spine, which lying on the back turns into height.
+    const Eigen::Matrix3d on_back = Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
+    const MotionDescriptors d = describe_motion(rigid_motion(40, on_back, [](double) { return Eigen::Vector3d::Zero(); }));
+    EXPECT_NEAR(descriptor(d, "head_above_pelvis_m"), 0.0, 0.15);
+    EXPECT_NEAR(descriptor(d, "trunk_tilt_rad"), M_PI / 2, 0.15);
+    EXPECT_NEAR(descriptor(d, "thigh_tilt_rad"), M_PI / 2, 0.1);
+    EXPECT_NEAR(descriptor(d, "root_speed_m_s"), 0.0, 1e-12);
+}
+
+TEST(MotionDescriptors, SteadyClimbIsNotFlight) {
+    const MotionDescriptors d = describe_motion(rigid_motion(80, Eigen::Matrix3d::Identity(),
+                                                             [](double t) { return Eigen::Vector3d(0, 0.2 * t, 0.4 * t); }));
+    EXPECT_NEAR(descriptor(d, "climb_rate_m_s"), 0.2, 1e-9);
+    EXPECT_NEAR(descriptor(d, "root_vertical_speed_sd_m_s"), 0.0, 1e-9);
+    EXPECT_EQ(descriptor(d, "airborne_fraction"), 0.0);
+}
+
+TEST(MotionDescriptors, JumpIsAirborneForItsFlightFrames) {
+    // 60 frames on the floor but frames 20..29, 0.3 m up: 10 of 60 frames in flight.
+    const MotionDescriptors d = describe_motion(rigid_motion(60, Eigen::Matrix3d::Identity(), [](double t) {
+        const int f = static_cast<int>(std::lround(t * smpl22::kFps));
+        return Eigen::Vector3d(0, f >= 20 && f < 30 ? 0.3 : 0.0, 0);
+    }));
+    EXPECT_NEAR(descriptor(d, "airborne_fraction"), 10.0 / 60.0, 1e-12);
+    EXPECT_NEAR(descriptor(d, "climb_rate_m_s"), 0.0, 0.02);
+}
+
+TEST(MotionDescriptors, RefusesTooFewFrames) {
+    EXPECT_THROW(describe_motion(JointSequence(2, smpl22::kNumJoints, 20.0)), Error);
+}
+
+// An example whose descriptors are all `value` but descriptor 0, which is `x`.
+ActivityExample example(const std::string& activity, const std::string& subject, double x, double value = 0) {
+    ActivityExample e{activity, subject, {}};
+    e.descriptors.fill(value);
+    e.descriptors[0] = x;
+    return e;
+}
+
+MotionDescriptors point(double x) { return example("", "", x).descriptors; }
+
+TEST(MotionActivity, SmallClassesAreNotOutvotedByLargeOnes) {
+    // 100 walking clips spread over x in [0, 1), two sitting clips at x = 2: of the five clips nearest a
+    // point at 1.5, three are walking (0.97..0.99) and two sitting, so a 5-nearest-neighbour vote says
+    // walking; by the mean distance to each class's 5 (or all 2) nearest clips, 0.5 against 0.53, it is sitting.
+    std::vector<ActivityExample> ref;
+    for (int i = 0; i < 100; ++i) ref.push_back(example("walking", "w" + std::to_string(i % 4), i / 100.0));
+    for (int i = 0; i < 2; ++i) ref.push_back(example("sitting", "s" + std::to_string(i), 2.0));
+    const MotionActivityClassifier c(ref);
+    const ActivityScores s = c.classify(point(1.5));
+    EXPECT_EQ(s.best, "sitting");
+    // Distances in standardised units (x over its standard deviation in the reference).
+    double mean = 0, mean2 = 0;
+    for (const ActivityExample& e : ref) mean += e.descriptors[0] / 102.0, mean2 += e.descriptors[0] * e.descriptors[0] / 102.0;
+    const double sd = std::sqrt(mean2 - mean * mean);
+    EXPECT_NEAR(s.distance.at("sitting"), 0.5 / sd, 1e-9);
+    EXPECT_NEAR(s.distance.at("walking"), (1.5 - 0.97) / sd, 1e-9);
+    EXPECT_DOUBLE_EQ(s.agreement("sitting"), 1.0);
+    EXPECT_NEAR(s.agreement("walking"), 0.5 / 0.53, 1e-9);
+    EXPECT_DOUBLE_EQ(s.agreement("flying"), 1.0);  // not a class: not checked
+}
+
+TEST(MotionActivity, LeaveOneSubjectOutLeavesTheWholeSubjectOut) {
+    // Subject "odd" holds the only running clips near x = 1 and a walking clip at x = 1: without its own
+    // clips, its walking clip is nearest the other subjects' running clips.
+    const std::vector<ActivityExample> ref = {
+        example("walking", "a", 0.0), example("walking", "b", 0.1), example("walking", "odd", 1.0),
+        example("running", "c", 1.05), example("running", "d", 1.1), example("running", "odd", 0.95)};
+    const MotionActivityClassifier c(ref);
+    std::vector<double> agreement;
+    const auto confusion = c.leave_one_subject_out(&agreement);
+    ASSERT_EQ(c.classes(), (std::vector<std::string>{"running", "walking"}));
+    // Rows truth, columns predicted: running's three clips -> running (odd's 0.95 sees c and d nearer than
+    // a and b); walking: a and b -> walking, odd's 1.0 -> running.
+    EXPECT_EQ(confusion, (std::vector<std::vector<long>>{{3, 0}, {1, 2}}));
+    ASSERT_EQ(agreement.size(), 6u);
+    EXPECT_LT(agreement[2], 1.0);
+}
+
+TEST(MotionActivity, ReferenceTableRoundTripsThroughCsv) {
+    std::vector<ActivityExample> ref;
+    for (int i = 0; i < 6; ++i) ref.push_back(example(i < 3 ? "lying" : "jumping", "s" + std::to_string(i), i * 0.37, i * 0.1));
+    const MotionActivityClassifier a(ref);
+    const std::string path = test::scratch_dir("motion_activity") + "/reference.csv";
+    write_csv(path, a.reference_table());
+    const MotionActivityClassifier b = MotionActivityClassifier::load(path);
+    for (double x : {0.0, 0.5, 1.2, 3.0}) {
+        const ActivityScores sa = a.classify(point(x)), sb = b.classify(point(x));
+        EXPECT_EQ(sa.best, sb.best);
+        for (const auto& [k, v] : sa.distance) EXPECT_NEAR(sb.distance.at(k), v, 1e-5 * (1 + v));
+    }
+}
+
+TEST(MotionActivity, RefusesAReferenceOfOneActivity) {
+    EXPECT_THROW(MotionActivityClassifier({example("walking", "a", 0), example("walking", "b", 1)}), Error);
+}
+
+TEST(MotionActivity, PromptActivitiesMapOntoTheReferenceClasses) {
+    const std::vector<std::string> classes = {"jumping", "lying", "running", "sitting", "walking"};
+    EXPECT_EQ(reference_activity("jogging", classes), "running");
+    EXPECT_EQ(reference_activity("sit_down_stand_up", classes), "sitting");
+    EXPECT_EQ(reference_activity("lie_down_get_up_bed", classes), "lying");
+    EXPECT_EQ(reference_activity("walking", classes), "walking");
+    EXPECT_EQ(reference_activity("stairs_up", classes), "");  // no stairs class: not checked
+    EXPECT_EQ(reference_activity("falling", classes), "");
+}
+
+}  // namespace
+}  // namespace t2imu
