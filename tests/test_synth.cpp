@@ -231,6 +231,8 @@ TEST(Synth, ActivityCheckDropsMotionsThatShowAnotherActivity) {
     const nlohmann::json r = run_synth(o);
     EXPECT_EQ(r["motions_kept"], 2);
     EXPECT_EQ(r["motions_dropped"], 2);
+    EXPECT_EQ(r["per_activity"]["walking"]["shown"], nlohmann::json({{"walking", 2}}));
+    EXPECT_EQ(r["per_activity"]["running"]["shown"], nlohmann::json({{"walking", 2}}));
     const nlohmann::json walk = nlohmann::json::parse(read_file_text(o.out + "/jobs/j00000.json"));
     EXPECT_EQ(walk["activity_check"]["shown"], "walking");
     EXPECT_DOUBLE_EQ(walk["activity_check"]["agreement"].get<double>(), 1.0);

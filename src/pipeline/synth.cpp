@@ -223,14 +223,19 @@ double median(std::vector<double> v) {
 }
 
 json report_json(const std::vector<json>& markers, int total_jobs, const json& timing) {
-    std::map<std::string, std::map<std::string, int>> per_activity;
+    json per_activity = json::object();
     std::map<std::string, int> failures;
     std::map<std::string, std::vector<double>> scores;
     int kept = 0, regenerated = 0, recordings = 0;
     for (const json& j : markers) {
-        auto& a = per_activity[j["activity"].get<std::string>()];
+        json& a = per_activity[j["activity"].get<std::string>()];
+        if (a.is_null()) a = {{"kept", 0}, {"dropped", 0}};
         const bool k = j["kept"];
-        a[k ? "kept" : "dropped"] += 1;
+        a[k ? "kept" : "dropped"] = a[k ? "kept" : "dropped"].get<int>() + 1;
+        if (j.contains("activity_check")) {  // what the last draw showed, kept or dropped
+            json& shown = a["shown"][j["activity_check"]["shown"].get<std::string>()];
+            shown = shown.is_null() ? 1 : shown.get<int>() + 1;
+        }
         kept += k;
         regenerated += j["attempts"].size() > 1;
         recordings += static_cast<int>(j["recordings"].size());
