@@ -1,0 +1,161 @@
+#include "pipeline/sampler_comparison.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "diffusion/text_to_motion.hpp"
+#include "motion/humanml3d.hpp"
+#include "motion/motion_activity.hpp"
+#include "motion/motion_descriptors.hpp"
+#include "motion/motion_quality.hpp"
+
+namespace t2imu {
+
+std::string SamplerConfig::name() const { return sampler == "ddpm" ? sampler : sampler + ":" + std::to_string(steps); }
+
+std::vector<SamplerConfig> parse_sampler_configs(const std::string& text) {
+    std::vector<SamplerConfig> out;
+    std::stringstream list(text);
+    std::string item;
+    while (std::getline(list, item, ',')) {
+        SamplerConfig c;
+        const size_t colon = item.find(':');
+        c.sampler = item.substr(0, colon);
+        if (colon != std::string::npos) {
+            char* end = nullptr;
+            c.steps = static_cast<int>(std::strtol(item.c_str() + colon + 1, &end, 10));
+            if (*end != '\0' || c.steps < 2) throw Error("--samplers", "entry", "NAME:STEPS with STEPS >= 2", item);
+        }
+        const bool few_step = c.sampler == "ddim" || c.sampler == "dpmpp";
+        if (!(c.sampler == "ddpm" && colon == std::string::npos) && !(few_step && c.steps >= 2))
+            throw Error("--samplers", "entry", "ddpm, ddim:K or dpmpp:K", item);
+        out.push_back(c);
+    }
+    if (out.empty()) throw Error("--samplers", "list", "at least one sampler", text);
+    return out;
+}
+
+namespace {
+
+// What the table needs of one sampler's motions.
+struct SamplerMotions {
+    double seconds = 0;
+    std::vector<double> feature_acc_energy, joint_acc_sq;  // per motion; per motion mean of squares
+    std::vector<MotionDescriptors> descriptors;
+    int quality_failures = 0, activity_checked = 0, activity_passed = 0;
+};
+
+double mean_second_difference_energy(const FeatureMatrix& x) {
+    double s = 0;
+    for (Eigen::Index i = 1; i + 1 < x.rows(); ++i) s += (x.row(i + 1) - 2 * x.row(i) + x.row(i - 1)).squaredNorm();
+    return x.rows() > 2 ? s / static_cast<double>(x.rows() - 2) : 0.0;
+}
+
+double mean_joint_acceleration_squared(const JointSequence& m) {
+    double s = 0;
+    const double fps2 = m.fps * m.fps;
+    for (int f = 1; f + 1 < m.num_frames; ++f)
+        for (int j = 0; j < m.num_joints; ++j) s += ((m.at(f + 1, j) - 2 * m.at(f, j) + m.at(f - 1, j)) * fps2).squaredNorm();
+    return s / static_cast<double>((m.num_frames - 2) * m.num_joints);
+}
+
+double mean(const std::vector<double>& v) {
+    double s = 0;
+    for (double x : v) s += x;
+    return s / static_cast<double>(v.size());
+}
+
+// Per descriptor: mean and standard deviation over the motions.
+std::pair<MotionDescriptors, MotionDescriptors> descriptor_moments(const std::vector<MotionDescriptors>& d) {
+    MotionDescriptors mu{}, sd{};
+    const double n = static_cast<double>(d.size());
+    for (const MotionDescriptors& x : d)
+        for (size_t i = 0; i < kNumMotionDescriptors; ++i) mu[i] += x[i] / n;
+    for (const MotionDescriptors& x : d)
+        for (size_t i = 0; i < kNumMotionDescriptors; ++i) sd[i] += (x[i] - mu[i]) * (x[i] - mu[i]) / n;
+    for (double& v : sd) v = std::sqrt(v);
+    return {mu, sd};
+}
+
+double diagonal_frechet(const std::vector<MotionDescriptors>& a, const std::vector<MotionDescriptors>& reference) {
+    const auto [mu, sd] = descriptor_moments(a);
+    const auto [mu_ref, sd_ref] = descriptor_moments(reference);
+    double s = 0;
+    for (size_t i = 0; i < kNumMotionDescriptors; ++i) {
+        if (sd_ref[i] <= 0) continue;  // constant over the reference: no scale to measure a shift in
+        s += ((mu[i] - mu_ref[i]) * (mu[i] - mu_ref[i]) + (sd[i] - sd_ref[i]) * (sd[i] - sd_ref[i])) / (sd_ref[i] * sd_ref[i]);
+    }
+    return s;
+}
+
+SamplerMotions draw(MotionModel& model, const SamplerComparisonOptions& o, const SamplerConfig& c,
+                    const MotionActivityClassifier* classifier) {
+    SampleOptions s;
+    s.frames = o.frames;
+    s.sampler = c.sampler;
+    s.steps = c.steps;
+    s.guidance = o.guidance;
+    s.batch = o.batch;
+    std::vector<std::string> texts, expected;
+    for (size_t p = 0; p < o.prompts.size(); ++p)
+        for (int k = 0; k < o.samples_per_prompt; ++k) {
+            texts.push_back(o.prompts[p].text);
+            expected.push_back(classifier ? reference_activity(o.prompts[p].activity, classifier->classes()) : "");
+            s.seeds.push_back(o.seed + p * static_cast<uint64_t>(o.samples_per_prompt) + static_cast<uint64_t>(k));
+        }
+    SamplerMotions out;
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<FeatureMatrix> motions = sample_motions(model, texts, s);
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const MotionQualityThresholds limits = default_quality_thresholds();
+    for (size_t i = 0; i < motions.size(); ++i) {
+        const JointSequence joints = recover_from_ric(motions[i]);
+        out.feature_acc_energy.push_back(mean_second_difference_energy(normalize_features(motions[i], model.stats)));
+        out.joint_acc_sq.push_back(mean_joint_acceleration_squared(joints));
+        out.descriptors.push_back(describe_motion(joints));
+        out.quality_failures += !quality_failures(score_motion(joints), limits).empty();
+        if (classifier && !expected[i].empty()) {
+            ++out.activity_checked;
+            out.activity_passed += classifier->classify(out.descriptors.back()).agreement(expected[i]) >= o.min_activity_agreement;
+        }
+    }
+    return out;
+}
+
+std::string number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+}
+
+}  // namespace
+
+CsvTable compare_samplers(const SamplerComparisonOptions& o, const std::vector<SamplerConfig>& configs) {
+    if (configs.empty() || o.prompts.empty() || o.samples_per_prompt < 1) throw Error("sampler comparison", "input", "samplers and prompts");
+    std::unique_ptr<MotionModel> model = load_motion_model(o.model, o.device);
+    std::optional<MotionActivityClassifier> classifier;
+    if (!o.activity_reference.empty()) classifier = MotionActivityClassifier::load(o.activity_reference);
+    CsvTable t;
+    t.header = {"sampler", "denoiser_calls", "motions", "seconds", "motions_per_s", "feature_acc_energy", "feature_acc_energy_ratio",
+                "joint_acc_rms_m_s2", "joint_acc_rms_ratio", "descriptor_distance", "quality_failure_rate", "activity_pass_rate"};
+    std::optional<SamplerMotions> reference;
+    for (const SamplerConfig& c : configs) {
+        const SamplerMotions m = draw(*model, o, c, classifier ? &*classifier : nullptr);
+        if (!reference) reference = m;
+        const double n = static_cast<double>(m.descriptors.size());
+        const double energy = mean(m.feature_acc_energy), rms = std::sqrt(mean(m.joint_acc_sq));
+        const int calls = c.sampler == "ddpm" ? model->schedule.steps : c.steps;
+        t.rows.push_back({c.name(), std::to_string(calls), std::to_string(m.descriptors.size()), number(m.seconds), number(n / m.seconds),
+                          number(energy), number(energy / mean(reference->feature_acc_energy)), number(rms),
+                          number(rms / std::sqrt(mean(reference->joint_acc_sq))), number(diagonal_frechet(m.descriptors, reference->descriptors)),
+                          number(m.quality_failures / n),
+                          number(m.activity_checked > 0 ? static_cast<double>(m.activity_passed) / m.activity_checked : NAN)});
+    }
+    return t;
+}
+
+}  // namespace t2imu
