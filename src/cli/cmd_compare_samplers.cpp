@@ -26,10 +26,10 @@ void run(CompareArgs a) {
     set_torch_threads(worker_threads());
     const CsvTable t = compare_samplers(o, parse_sampler_configs(a.samplers));
     write_csv(a.out, t);
-    std::printf("%-10s %6s %9s %12s %12s %10s %9s %9s\n", "sampler", "calls", "motion/s", "acc energy", "joint acc", "descr. d",
+    std::printf("%-12s %6s %9s %12s %12s %10s %9s %9s\n", "sampler", "calls", "motion/s", "acc energy", "joint acc", "descr. d",
                 "quality", "activity");
     for (size_t r = 0; r < t.rows.size(); ++r)
-        std::printf("%-10s %6s %9.2f %6.3f (%.2f) %6.2f (%.2f) %10.3f %8.0f%% %8.0f%%\n", t.rows[r][0].c_str(), t.rows[r][1].c_str(),
+        std::printf("%-12s %6s %9.2f %6.3f (%.2f) %6.2f (%.2f) %10.3f %8.0f%% %8.0f%%\n", t.rows[r][0].c_str(), t.rows[r][1].c_str(),
                     t.number(r, 4), t.number(r, 5), t.number(r, 6), t.number(r, 7), t.number(r, 8), t.number(r, 9),
                     100 * (1 - t.number(r, 10)), 100 * t.number(r, 11));
     std::printf("(ratios to the first row in brackets; quality = share passing the filter; activity = share passing the "
@@ -54,6 +54,9 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--batch", o.batch, "motions per denoiser batch (default 16)");
     cmd->add_option("--activity-reference", o.activity_reference, "activity check reference CSV (models/motion-activity.csv)")
         ->check(CLI::ExistingFile);
+    cmd->add_option("--captured", o.captured_dataset, "HumanML3D-layout dataset: a last row with its captured clips' statistics")
+        ->check(CLI::ExistingDirectory);
+    cmd->add_option("--captured-split", o.captured_split, "split of --captured (default test)");
     cmd->add_option("--out", a.out, "output CSV")->required();
     cmd->callback([] { run(a); });
 });

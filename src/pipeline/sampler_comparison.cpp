@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "data/hml3d_dataset.hpp"
 #include "diffusion/text_to_motion.hpp"
 #include "motion/humanml3d.hpp"
 #include "motion/motion_activity.hpp"
@@ -92,6 +93,25 @@ double diagonal_frechet(const std::vector<MotionDescriptors>& a, const std::vect
     return s;
 }
 
+// The statistics of motions (de-normalised features); `expected[i]` is motion i's activity class ("" = unchecked).
+SamplerMotions measure(const std::vector<FeatureMatrix>& motions, const FeatureStats& stats, const std::vector<std::string>& expected,
+                       const MotionActivityClassifier* classifier, double min_agreement) {
+    SamplerMotions out;
+    const MotionQualityThresholds limits = default_quality_thresholds();
+    for (size_t i = 0; i < motions.size(); ++i) {
+        const JointSequence joints = recover_from_ric(motions[i]);
+        out.feature_acc_energy.push_back(mean_second_difference_energy(normalize_features(motions[i], stats)));
+        out.joint_acc_sq.push_back(mean_joint_acceleration_squared(joints));
+        out.descriptors.push_back(describe_motion(joints));
+        out.quality_failures += !quality_failures(score_motion(joints), limits).empty();
+        if (classifier && !expected[i].empty()) {
+            ++out.activity_checked;
+            out.activity_passed += classifier->classify(out.descriptors.back()).agreement(expected[i]) >= min_agreement;
+        }
+    }
+    return out;
+}
+
 SamplerMotions draw(MotionModel& model, const SamplerComparisonOptions& o, const SamplerConfig& c,
                     const MotionActivityClassifier* classifier) {
     SampleOptions s;
@@ -107,22 +127,22 @@ SamplerMotions draw(MotionModel& model, const SamplerComparisonOptions& o, const
             expected.push_back(classifier ? reference_activity(o.prompts[p].activity, classifier->classes()) : "");
             s.seeds.push_back(o.seed + p * static_cast<uint64_t>(o.samples_per_prompt) + static_cast<uint64_t>(k));
         }
-    SamplerMotions out;
     const auto start = std::chrono::steady_clock::now();
     const std::vector<FeatureMatrix> motions = sample_motions(model, texts, s);
-    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const MotionQualityThresholds limits = default_quality_thresholds();
-    for (size_t i = 0; i < motions.size(); ++i) {
-        const JointSequence joints = recover_from_ric(motions[i]);
-        out.feature_acc_energy.push_back(mean_second_difference_energy(normalize_features(motions[i], model.stats)));
-        out.joint_acc_sq.push_back(mean_joint_acceleration_squared(joints));
-        out.descriptors.push_back(describe_motion(joints));
-        out.quality_failures += !quality_failures(score_motion(joints), limits).empty();
-        if (classifier && !expected[i].empty()) {
-            ++out.activity_checked;
-            out.activity_passed += classifier->classify(out.descriptors.back()).agreement(expected[i]) >= o.min_activity_agreement;
-        }
-    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    SamplerMotions out = measure(motions, model.stats, expected, classifier, o.min_activity_agreement);
+    out.seconds = seconds;
+    return out;
+}
+
+// The captured clips of a dataset split (at least 3 frames), as the target the samplers are measured against.
+SamplerMotions captured(const std::string& dataset, const std::string& split, const FeatureStats& stats) {
+    std::vector<FeatureMatrix> motions;
+    for (const MotionClip& c : Hml3dDataset(dataset, split).clips())
+        if (c.features.rows() >= 3) motions.push_back(c.features);
+    if (motions.empty()) throw Error(dataset, split, "captured clips of at least 3 frames");
+    SamplerMotions out = measure(motions, stats, std::vector<std::string>(motions.size()), nullptr, 0);
+    out.seconds = NAN;
     return out;
 }
 
@@ -143,18 +163,20 @@ CsvTable compare_samplers(const SamplerComparisonOptions& o, const std::vector<S
     t.header = {"sampler", "denoiser_calls", "motions", "seconds", "motions_per_s", "feature_acc_energy", "feature_acc_energy_ratio",
                 "joint_acc_rms_m_s2", "joint_acc_rms_ratio", "descriptor_distance", "quality_failure_rate", "activity_pass_rate"};
     std::optional<SamplerMotions> reference;
-    for (const SamplerConfig& c : configs) {
-        const SamplerMotions m = draw(*model, o, c, classifier ? &*classifier : nullptr);
+    const auto add_row = [&](const std::string& name, const std::string& calls, const SamplerMotions& m) {
         if (!reference) reference = m;
         const double n = static_cast<double>(m.descriptors.size());
         const double energy = mean(m.feature_acc_energy), rms = std::sqrt(mean(m.joint_acc_sq));
-        const int calls = c.sampler == "ddpm" ? model->schedule.steps : c.steps;
-        t.rows.push_back({c.name(), std::to_string(calls), std::to_string(m.descriptors.size()), number(m.seconds), number(n / m.seconds),
+        t.rows.push_back({name, calls, std::to_string(m.descriptors.size()), number(m.seconds), number(n / m.seconds),
                           number(energy), number(energy / mean(reference->feature_acc_energy)), number(rms),
                           number(rms / std::sqrt(mean(reference->joint_acc_sq))), number(diagonal_frechet(m.descriptors, reference->descriptors)),
                           number(m.quality_failures / n),
                           number(m.activity_checked > 0 ? static_cast<double>(m.activity_passed) / m.activity_checked : NAN)});
-    }
+    };
+    for (const SamplerConfig& c : configs)
+        add_row(c.name(), std::to_string(c.sampler == "ddpm" ? model->schedule.steps : c.steps),
+                draw(*model, o, c, classifier ? &*classifier : nullptr));
+    if (!o.captured_dataset.empty()) add_row("captured:" + o.captured_split, "", captured(o.captured_dataset, o.captured_split, model->stats));
     return t;
 }
 

@@ -15,7 +15,8 @@
 //   quality_failure_rate        share failing any of the quality filter's scores (motion_quality.hpp)
 //   activity_pass_rate          share of checkable motions whose activity agreement passes the activity
 //                               check (needs a reference; NaN without one)
-// Ratios to the reference row are written beside the acceleration figures.
+// Ratios to the reference row are written beside the acceleration figures. With a captured dataset, a last
+// row holds the same statistics of its captured clips (a split of a HumanML3D-layout folder): the target.
 #pragma once
 #include <string>
 #include <vector>
@@ -45,6 +46,8 @@ struct SamplerComparisonOptions {
     std::string device = "cpu";
     std::string activity_reference;        // "" = no activity column
     double min_activity_agreement = 0.55;
+    std::string captured_dataset;          // "" = no captured row
+    std::string captured_split = "test";
 };
 
 // One row per config, the first being the reference; columns as above.
