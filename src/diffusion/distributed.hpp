@@ -9,6 +9,7 @@
 // gradients is the gradient of the global batch's mean.
 #pragma once
 #include <chrono>
+#include <cstdlib>
 #include <functional>
 #include <memory>
 #include <string>

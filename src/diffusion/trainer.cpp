@@ -317,7 +317,7 @@ torch::Device training_device(const std::string& name, const ProcessGroupEnv& pr
 }
 
 // Slots of the values that ride along with the gradients' all-reduce.
-enum Rider : int64_t { kSimple, kPos, kVel, kFoot, kAcc, kTotal, kStop, kRiders };
+enum Rider : int64_t { kSimple, kPos, kVel, kFoot, kAcc, kTotal, kStop };
 
 }  // namespace
 
