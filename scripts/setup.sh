@@ -18,6 +18,7 @@ PACKAGES=(
   libbenchmark-dev       # bench/ programs
   gnuplot-nox            # PNG figures (pngcairo terminal) for reports
   libtorch-dev           # libtorch 1.13 (CPU): the diffusion model, DeepConvLSTM
+  libgloo-dev            # Gloo's headers, needed by c10d's ProcessGroupGloo (data-parallel training)
   libopenblas0-openmp    # the BLAS libtorch uses; the reference BLAS is many times slower
   clang                  # libFuzzer targets (fuzz/), not needed for the default build
 )

@@ -75,6 +75,7 @@ TrainConfig read_train_config(const std::string& path) {
     take(text, "layers", c.text.layers, seen, "text");
     take(text, "heads", c.text.heads, seen, "text");
     take(text, "ff_size", c.text.ff_size, seen, "text");
+    take(text, "dropout", c.text.dropout, seen, "text");
     refuse_unknown(text, seen, "text", path);
     seen.clear();
     int64_t steps = c.diffusion_steps;
@@ -288,13 +289,35 @@ namespace {
 std::atomic<bool> g_stop_requested{false};
 
 // The draws of t and of the noise. On a GPU they come from the device's default generator, which also drives
-// the model's dropout there, so one saved state covers both; on the CPU from a generator of their own.
-torch::Generator noise_generator(const torch::Device& device, uint64_t seed) {
-    if (device.is_cpu()) return at::detail::createCPUGenerator(seed);
+// the model's dropout there, so one saved state covers both; on the CPU from a generator of their own. Over
+// several processes always from a CPU generator of their own: every rank replays the same draws, while the
+// model's dropout (the device's default generator) draws per rank.
+torch::Generator noise_generator(const torch::Device& device, uint64_t seed, bool several_processes) {
+    if (device.is_cpu() || several_processes) return at::detail::createCPUGenerator(seed);
     at::Generator g = at::globalContext().defaultGenerator(device);
     g.set_current_seed(seed);
     return g;
 }
+
+// A rank's own stream for the model's dropout masks (splitmix64 of seed, rank and the starting step), so the
+// ranks do not drop the same units in their different samples.
+void seed_rank_dropout(const torch::Device& device, uint64_t seed, int rank, int64_t step) {
+    uint64_t z = seed + 0x9E3779B97F4A7C15ull * (static_cast<uint64_t>(rank) + 1) + 0xBF58476D1CE4E5B9ull * static_cast<uint64_t>(step);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    at::Generator dropout = device.is_cpu() ? at::detail::getDefaultCPUGenerator() : at::globalContext().defaultGenerator(device);
+    dropout.set_current_seed(z);  // a handle sharing the default generator
+}
+
+// "cuda" alone means the GPU of this process's LOCAL_RANK when several processes share a machine.
+torch::Device training_device(const std::string& name, const ProcessGroupEnv& processes) {
+    if (name == "cuda" && processes.world_size > 1) return torch::Device(torch::kCUDA, static_cast<c10::DeviceIndex>(processes.local_rank));
+    return torch::Device(name);
+}
+
+// Slots of the values that ride along with the gradients' all-reduce.
+enum Rider : int64_t { kSimple, kPos, kVel, kFoot, kAcc, kTotal, kStop };
 
 }  // namespace
 
@@ -305,6 +328,9 @@ double ema_decay_at(double max_decay, int64_t step) {
 }
 
 TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& init_from, int64_t stop_after) {
+    // Refused before anything waits for the other ranks.
+    const BatchShare share = batch_share(c.batch, c.processes.rank, c.processes.world_size);
+    const bool several = c.processes.world_size > 1;
     if (c.threads > 0) set_torch_threads(c.threads);
     Hml3dDataset data(c.dataset, c.split);
     if (data.clips().empty()) throw Error(c.dataset, c.split, "at least one usable clip (40 to 199 frames with a caption)");
@@ -314,47 +340,66 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
     MdmConfig mc = c.mdm;
     mc.text_dim = c.text.out_dim;
     mc.mask_frames = true;
-    const torch::Device device(c.device);
-    Training tr{Mdm(mc), GloveTextEncoder(vocab, c.text), nullptr, {}, noise_generator(device, c.seed), std::mt19937_64(c.seed + 1), 0};
+    const torch::Device device = training_device(c.device, c.processes);
+    Training tr{Mdm(mc), GloveTextEncoder(vocab, c.text), nullptr, {}, noise_generator(device, c.seed, several), std::mt19937_64(c.seed + 1), 0};
     if (!init_from.empty()) {
         load_parameters(*tr.mdm, init_from + "/weights.safetensors");
         load_parameters(*tr.text, init_from + "/text_encoder.safetensors");
     }
     tr.mdm->to(device);
     tr.text->to(device);
+    const DataParallel group(c.processes, device);
+    group.broadcast_from_main(tr.parameters());  // the same seed already gave the same weights: this makes sure
     tr.optimiser = std::make_unique<torch::optim::AdamW>(tr.parameters(), torch::optim::AdamWOptions(c.learning_rate).weight_decay(c.weight_decay));
     if (c.ema_decay > 0)
         for (const torch::Tensor& p : tr.parameters()) tr.ema.push_back(p.detach().clone());
-    fs::create_directories(c.out);
+    if (group.is_main()) fs::create_directories(c.out);
     const std::string checkpoint = c.out + "/checkpoint.pt";
     if (resume) {
         if (!fs::exists(checkpoint)) throw Error(checkpoint, "file", "a checkpoint to resume from");
         load_checkpoint(tr, data, checkpoint, device);
     }
+    if (several) seed_rank_dropout(device, c.seed, group.rank(), tr.step);
     const GaussianDiffusion diffusion(cosine_schedule(c.diffusion_steps));
     const torch::Tensor mean = torch::from_blob(const_cast<double*>(data.stats().mean.data()), {263}, torch::kFloat64).to(device, torch::kFloat32);
     const torch::Tensor std = torch::from_blob(const_cast<double*>(data.stats().std.data()), {263}, torch::kFloat64).to(device, torch::kFloat32);
-    const torch::TensorOptions on_device = torch::TensorOptions().device(device);
+    const torch::TensorOptions draws_on = torch::TensorOptions().device(several ? torch::Device(torch::kCPU) : device);
     std::string metrics;
     TrainProgress progress;
     const auto start = std::chrono::steady_clock::now();
     const int64_t first = tr.step, last = stop_after > 0 ? std::min(c.steps, tr.step + stop_after) : c.steps;
     std::bernoulli_distribution drop(c.cond_dropout);
     g_stop_requested = false;
-    while (tr.step < last && !g_stop_requested) {
+    bool stop = false;
+    while (tr.step < last && !stop) {
+        // The global batch and all its draws, on every rank; this rank keeps samples [share.begin, + share.size).
         const Batch b = data.next_batch(c.batch);
-        const torch::Tensor x0 = torch::from_blob(const_cast<float*>(b.features.data()), {b.size, b.frames, b.channels}, torch::kFloat32).to(device);
-        const torch::Tensor lengths = torch::tensor(std::vector<int64_t>(b.lengths.begin(), b.lengths.end())).to(device);
         std::vector<std::string> captions = b.captions;
         for (std::string& caption : captions)
             if (drop(tr.dropout_rng)) caption.clear();
-        const torch::Tensor t = torch::randint(c.diffusion_steps, {b.size}, tr.generator, on_device.dtype(torch::kInt64));
-        const torch::Tensor x0_mdm = x0.permute({0, 2, 1}).unsqueeze(2);  // [B, 263, 1, F]
-        const torch::Tensor x_t = diffusion.q_sample(x0_mdm, t, torch::randn(x0_mdm.sizes(), tr.generator, on_device));
-        const torch::Tensor x0_hat = tr.mdm->forward(x_t, t, tr.text->encode(captions), false, lengths).squeeze(2).permute({0, 2, 1});
+        const torch::Tensor t_all = torch::randint(c.diffusion_steps, {b.size}, tr.generator, draws_on.dtype(torch::kInt64));
+        const torch::Tensor noise_all = torch::randn({b.size, b.channels, 1, b.frames}, tr.generator, draws_on);
+        const int64_t lo = share.begin, n = share.size;
+        const float* features = b.features.data() + static_cast<size_t>(lo) * static_cast<size_t>(b.frames * b.channels);
+        const torch::Tensor x0 = torch::from_blob(const_cast<float*>(features), {n, b.frames, b.channels}, torch::kFloat32).to(device);
+        const torch::Tensor lengths = torch::tensor(std::vector<int64_t>(b.lengths.begin() + lo, b.lengths.begin() + lo + n)).to(device);
+        const std::vector<std::string> my_captions(captions.begin() + lo, captions.begin() + lo + n);
+        const torch::Tensor t = t_all.slice(0, lo, lo + n).to(device);
+        const torch::Tensor x0_mdm = x0.permute({0, 2, 1}).unsqueeze(2);  // [n, 263, 1, F]
+        const torch::Tensor x_t = diffusion.q_sample(x0_mdm, t, noise_all.slice(0, lo, lo + n).to(device));
+        const torch::Tensor x0_hat = tr.mdm->forward(x_t, t, tr.text->encode(my_captions), false, lengths).squeeze(2).permute({0, 2, 1});
+        // Every term is a mean over the share of per-sample means (each normalised by its own valid frames,
+        // losses.hpp), so the ranks' mean of equal shares is the global batch's mean: no normaliser to share.
         const LossTerms terms = mdm_loss_terms(x0, x0_hat, lengths, mean, std, c);
         tr.optimiser->zero_grad();
         terms.total.backward();
+        const torch::Tensor stop_flag = torch::full({1}, g_stop_requested ? 1.0f : 0.0f, x0.options());
+        const torch::Tensor riders =
+            group.average_gradients(tr.parameters(), torch::cat({torch::stack({terms.simple, terms.pos, terms.vel, terms.foot, terms.acc, terms.total})
+                                                                    .detach().to(torch::kFloat32), stop_flag}))
+                .to(torch::kCPU, torch::kFloat64);
+        const auto r = riders.accessor<double, 1>();
+        stop = r[kStop] > 0;  // any rank's request stops all of them after the same step
         tr.optimiser->step();
         if (!tr.ema.empty()) {
             torch::NoGradGuard no_grad;
@@ -363,19 +408,19 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
             for (size_t i = 0; i < params.size(); ++i) tr.ema[i].mul_(decay).add_(params[i].detach(), 1 - decay);
         }
         ++tr.step;
-        progress.loss = terms.total.item<double>();
-        if (tr.step % c.log_every == 0 || tr.step == last || g_stop_requested) {
+        progress.loss = r[kTotal];
+        if (!group.is_main()) continue;
+        if (tr.step % c.log_every == 0 || tr.step == last || stop) {
             const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             const double rate = static_cast<double>(tr.step - first) / std::max(seconds, 1e-9);
-            const nlohmann::json line = {{"step", tr.step}, {"loss", progress.loss}, {"l_simple", terms.simple.item<double>()},
-                                         {"l_pos", terms.pos.item<double>()}, {"l_vel", terms.vel.item<double>()},
-                                         {"l_foot", terms.foot.item<double>()}, {"l_acc", terms.acc.item<double>()}, {"steps_per_s", rate}};
+            const nlohmann::json line = {{"step", tr.step}, {"loss", progress.loss}, {"l_simple", r[kSimple]}, {"l_pos", r[kPos]},
+                                         {"l_vel", r[kVel]}, {"l_foot", r[kFoot]}, {"l_acc", r[kAcc]}, {"steps_per_s", rate}};
             metrics += line.dump() + "\n";
             std::fprintf(stderr, "step %lld/%lld loss %.4f (simple %.4f acc %.4f) %.2f steps/s ETA %.0f s\n", static_cast<long long>(tr.step),
-                         static_cast<long long>(c.steps), progress.loss, terms.simple.item<double>(), terms.acc.item<double>(), rate,
+                         static_cast<long long>(c.steps), progress.loss, r[kSimple], r[kAcc], rate,
                          static_cast<double>(c.steps - tr.step) / std::max(rate, 1e-9));
         }
-        if (tr.step % c.save_every == 0 || tr.step == last || g_stop_requested) {
+        if (tr.step % c.save_every == 0 || tr.step == last || stop) {
             std::string previous;
             if (fs::exists(c.out + "/metrics.jsonl")) previous = read_file_text(c.out + "/metrics.jsonl");
             write_file_atomic(c.out + "/metrics.jsonl", previous + metrics);
@@ -384,6 +429,7 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
             write_model(tr, c, data);
         }
     }
+    group.barrier();  // the other ranks return once rank 0's files are written
     progress.step = tr.step;
     return progress;
 }

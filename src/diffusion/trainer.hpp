@@ -11,10 +11,20 @@
 // AdamW; optional EMA of the weights. Checkpoints (model, optimiser, EMA, step, both random generators'
 // states, the dataset's draw state) are written atomically every save_every steps and at the end, so a run
 // resumed after a kill continues on the same trajectory. Metrics go to metrics.jsonl, one line per log step.
+//
+// Over several processes (config.processes, distributed.hpp) every rank draws the whole global batch with the
+// same generators (data order, crops, captions and their dropout, t, noise: all from the global seed), keeps
+// its equal share of the samples, and the gradients are averaged before the step; the ranks' shares together
+// are exactly the one-process batch, so N processes of batch/N train the same weights as one process of batch
+// (up to float summation order). Not shared: the model's own dropout masks, drawn per rank from a stream seeded
+// with the seed, the rank and the starting step (a resumed multi-process run with dropout > 0 therefore draws
+// other masks than an uninterrupted one). Rank 0 alone writes the model, checkpoints, metrics and progress;
+// every rank resumes from config.out/checkpoint.pt, so the folder must be one they all see.
 #pragma once
 #include <cstdint>
 #include <string>
 
+#include "diffusion/distributed.hpp"
 #include "diffusion/glove_text_encoder.hpp"
 #include "diffusion/mdm.hpp"
 
@@ -34,10 +44,11 @@ struct TrainConfig {
     uint64_t seed = 0;
     int threads = 0;
     std::string device = "cpu";  // a torch device: cpu, cuda, cuda:1 (not in the TOML: where to train is not what to train)
+    ProcessGroupEnv processes;   // data-parallel ranks (torchrun's variables; not in the TOML either)
 };
 
 // TOML: [data] dataset, vocab, split; [model] latent_dim, ff_size, num_layers, num_heads, dropout;
-// [text] model_dim, layers, heads, ff_size; [diffusion] steps; [train] batch, steps, learning_rate,
+// [text] model_dim, layers, heads, ff_size, dropout; [diffusion] steps; [train] batch, steps, learning_rate,
 // weight_decay, cond_dropout, ema_decay, seed, save_every, log_every; [loss] lambda_pos, lambda_vel,
 // lambda_foot, lambda_acc, acc_space; `out` at the top level (the model folder). Unknown keys are refused.
 TrainConfig read_train_config(const std::string& path);
