@@ -105,6 +105,8 @@ TEST(ClipBpe, SplitsLikeClipsPattern) {
     EXPECT_EQ(ClipBpeTokenizer::split("!<|endoftext|>"), (V{"!<|", "endoftext", "|>"}));
     EXPECT_EQ(ClipBpeTokenizer::split("x\u00B2\u00BD \u0663"), (V{"x", "\u00B2", "\u00BD", "\u0663"}));  // numbers: one each
     EXPECT_EQ(ClipBpeTokenizer::split("na\u00EFve \u03C9mega"), (V{"na\u00EFve", "\u03C9mega"}));
+    // Letters inside UnicodeData.txt's First/Last ranges (CJK ideographs, Hangul syllables); U+00D7 is a symbol.
+    EXPECT_EQ(ClipBpeTokenizer::split("\u8D70\u8DEF\uAC00 3\u00D7a"), (V{"\u8D70\u8DEF\uAC00", "3", "\u00D7", "a"}));
     EXPECT_EQ(ClipBpeTokenizer::clean("  Two\u00A0 WORDS\n"), "two words");
 }
 
