@@ -14,6 +14,7 @@ PACKAGES=(
   nlohmann-json3-dev     # JSON: safetensors headers, meta.json, summaries
   libtomlplusplus-dev    # TOML configurations (training, experiments, sensor sets)
   libzip-dev             # .npz archives (stored and deflated members)
+  zlib1g-dev             # gzip: CLIP's merges file (bpe_simple_vocab_16e6.txt.gz)
   libgtest-dev           # the test suite
   libbenchmark-dev       # bench/ programs
   gnuplot-nox            # PNG figures (pngcairo terminal) for reports

@@ -31,7 +31,7 @@ CsvTable evaluate_lacc(MotionModel& model, const std::string& dataset, const std
         const torch::Tensor x_t = diffusion.q_sample(x0_mdm, t, torch::randn(x0_mdm.sizes(), gen, torch::kFloat32).to(model.device));
         const std::string caption = clip.captions.front().caption;
         const torch::Tensor lengths = torch::full({1}, frames, torch::TensorOptions().dtype(torch::kInt64).device(model.device));
-        const torch::Tensor x0_hat = model.mdm->forward(x_t, t, model.text->encode({caption}), false, lengths).squeeze(2).permute({0, 2, 1});
+        const torch::Tensor x0_hat = model.mdm->forward(x_t, t, model.encode_text({caption}), false, lengths).squeeze(2).permute({0, 2, 1});
         const torch::Tensor mask = frame_mask(lengths, frames);
         std::snprintf(acc, sizeof acc, "%.8g", acceleration_loss(x0, x0_hat, mask).item<double>());
         std::snprintf(simple, sizeof simple, "%.8g", masked_mse(x0, x0_hat, mask).item<double>());

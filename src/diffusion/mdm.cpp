@@ -104,7 +104,7 @@ torch::Tensor MdmImpl::forward_guided(const torch::Tensor& x, const torch::Tenso
     return uncond + scale * (cond - uncond);
 }
 
-void load_mdm_weights(Mdm& model, const std::string& path) {
+void load_mdm_weights(Mdm& model, const std::string& path, const std::string& other_prefix) {
     const SafeTensors st = read_safetensors(path);
     std::set<std::string> used;
     torch::NoGradGuard no_grad;
@@ -119,7 +119,8 @@ void load_mdm_weights(Mdm& model, const std::string& path) {
         used.insert(p.key());
     }
     for (const auto& [name, a] : st.tensors)
-        if (!used.count(name)) throw Error(path, name, "a key of the MDM state dict", "an unexpected tensor " + a.shape_str());
+        if (!used.count(name) && (other_prefix.empty() || name.rfind(other_prefix, 0) != 0))
+            throw Error(path, name, "a key of the MDM state dict", "an unexpected tensor " + a.shape_str());
 }
 
 }  // namespace t2imu

@@ -57,7 +57,8 @@ private:
 TORCH_MODULE(Mdm);
 
 // Loads safetensors weights by official name; refuses missing, unexpected and mis-shaped keys, naming the key
-// and both shapes.
-void load_mdm_weights(Mdm& model, const std::string& safetensors_path);
+// and both shapes. Keys under a non-empty `other_prefix` belong to another module stored in the same file (an
+// MDM state dict that kept its frozen CLIP: "clip_model.", read by load_clip_text_weights) and are skipped.
+void load_mdm_weights(Mdm& model, const std::string& safetensors_path, const std::string& other_prefix = "");
 
 }  // namespace t2imu

@@ -37,44 +37,83 @@ std::string find_vocab(const std::string& dir, const std::string& written) {
                 written);
 }
 
+std::string find_clip_file(const std::string& dir, const nlohmann::json& t, const char* field, const char* what) {
+    namespace fs = std::filesystem;
+    const std::string written = t.at(field).get<std::string>();
+    if (fs::exists(written)) return written;
+    if (fs::exists(fs::path(dir) / written)) return (fs::path(dir) / written).string();
+    throw Error(dir + "/model.json", std::string("text_encoder.") + field, std::string("an existing file: ") + what + " (as written or relative to the model folder)", written);
+}
+
+MdmConfig mdm_config(const nlohmann::json& m) {
+    MdmConfig mc;
+    mc.latent_dim = m.at("latent_dim");
+    mc.ff_size = m.at("ff_size");
+    mc.num_layers = m.at("num_layers");
+    mc.num_heads = m.at("num_heads");
+    mc.dropout = m.at("dropout");
+    mc.text_dim = m.at("text_dim");
+    mc.mask_frames = m.at("mask_frames");
+    return mc;
+}
+
+void load_glove_encoder(MotionModel& model, const std::string& dir, const nlohmann::json& t) {
+    GloveEncoderConfig tc;
+    tc.model_dim = t.at("model_dim");
+    tc.layers = t.at("layers");
+    tc.heads = t.at("heads");
+    tc.ff_size = t.at("ff_size");
+    tc.out_dim = t.at("out_dim");
+    model.vocab = std::make_unique<WordVectors>(WordVectors::load(find_vocab(dir, t.at("vocab").get<std::string>())));
+    model.text = GloveTextEncoder(*model.vocab, tc);
+    load_strict(*model.text, dir + "/text_encoder.safetensors");
+}
+
+// Returns the prefix of CLIP's keys inside weights.safetensors ("clip_model.", MDM's name) when the CLIP weights
+// are that same file, so that the MDM loader skips them; "" otherwise.
+std::string load_clip_encoder(MotionModel& model, const std::string& dir, const nlohmann::json& t, int64_t text_dim) {
+    const std::string weights = find_clip_file(dir, t, "weights", "CLIP's text-tower weights as safetensors (README: CLIP text encoder)");
+    const std::string merges = find_clip_file(dir, t, "merges", "CLIP's bpe_simple_vocab_16e6.txt.gz");
+    ClipTextConfig cc = read_clip_text_config(weights);
+    cc.mdm_text_tokens = t.value("text_tokens", cc.mdm_text_tokens);
+    if (cc.embed_dim != text_dim) throw Error(weights, "text_projection", std::to_string(text_dim) + " outputs (mdm.text_dim)", std::to_string(cc.embed_dim));
+    model.clip = ClipTextEncoder(cc);
+    load_clip_text_weights(model.clip, weights);
+    model.clip->set_tokenizer(std::make_shared<const ClipBpeTokenizer>(ClipBpeTokenizer::from_merges_file(merges)));
+    const std::string mdm_weights = dir + "/weights.safetensors";
+    return std::filesystem::exists(mdm_weights) && std::filesystem::equivalent(weights, mdm_weights) ? "clip_model." : "";
+}
+
 }  // namespace
+
+torch::Tensor MotionModel::encode_text(const std::vector<std::string>& captions) {
+    return clip ? clip->encode(captions) : text->encode(captions);
+}
 
 std::unique_ptr<MotionModel> load_motion_model(const std::string& dir, const std::string& device) {
     auto model = std::make_unique<MotionModel>();
+    std::string clip_prefix;
     try {
         model->meta = nlohmann::json::parse(read_file_text(dir + "/model.json"));
-        const auto& m = model->meta.at("mdm");
-        MdmConfig mc;
-        mc.latent_dim = m.at("latent_dim");
-        mc.ff_size = m.at("ff_size");
-        mc.num_layers = m.at("num_layers");
-        mc.num_heads = m.at("num_heads");
-        mc.dropout = m.at("dropout");
-        mc.text_dim = m.at("text_dim");
-        mc.mask_frames = m.at("mask_frames");
-        const auto& t = model->meta.at("text_encoder");
-        if (t.at("kind") != "glove_transformer") throw Error(dir + "/model.json", "text_encoder.kind", "glove_transformer", t.at("kind").dump());
-        GloveEncoderConfig tc;
-        tc.model_dim = t.at("model_dim");
-        tc.layers = t.at("layers");
-        tc.heads = t.at("heads");
-        tc.ff_size = t.at("ff_size");
-        tc.out_dim = t.at("out_dim");
-        model->vocab = std::make_unique<WordVectors>(WordVectors::load(find_vocab(dir, t.at("vocab").get<std::string>())));
+        const MdmConfig mc = mdm_config(model->meta.at("mdm"));
         model->mdm = Mdm(mc);
-        model->text = GloveTextEncoder(*model->vocab, tc);
+        const auto& t = model->meta.at("text_encoder");
+        const std::string kind = t.at("kind").get<std::string>();
+        if (kind == "glove_transformer") load_glove_encoder(*model, dir, t);
+        else if (kind == "clip") clip_prefix = load_clip_encoder(*model, dir, t, mc.text_dim);
+        else throw Error(dir + "/model.json", "text_encoder.kind", "glove_transformer or clip", kind);
         model->schedule = cosine_schedule(model->meta.at("diffusion").at("steps"));
     } catch (const nlohmann::json::exception& e) {
         throw Error(dir + "/model.json", "json", "a t2imu model description", e.what());
     }
-    load_mdm_weights(model->mdm, dir + "/weights.safetensors");
-    load_strict(*model->text, dir + "/text_encoder.safetensors");
+    load_mdm_weights(model->mdm, dir + "/weights.safetensors", clip_prefix);
     model->stats = read_feature_stats(dir + "/Mean.npy", dir + "/Std.npy");
     model->device = torch::Device(device);
     model->mdm->to(model->device);
-    model->text->to(model->device);
     model->mdm->eval();
-    model->text->eval();
+    torch::nn::Module& text = model->clip ? static_cast<torch::nn::Module&>(*model->clip) : *model->text;
+    text.to(model->device);
+    text.eval();
     return model;
 }
 
@@ -97,7 +136,7 @@ std::vector<FeatureMatrix> sample_motions(MotionModel& model, const std::vector<
             return torch::stack(rows).to(like.device());
         };
         const torch::Tensor x_T = noise(torch::zeros({static_cast<int64_t>(n), 263, 1, o.frames}, torch::TensorOptions().device(model.device)));
-        const torch::Tensor text = model.text->encode(batch);
+        const torch::Tensor text = model.encode_text(batch);
         const torch::Tensor lengths = torch::full({static_cast<int64_t>(n)}, o.frames, torch::TensorOptions().dtype(torch::kInt64).device(model.device));
         const X0Predictor denoiser = [&](const torch::Tensor& x, const torch::Tensor& t) {
             return model.mdm->forward_guided(x, t, text, o.guidance, lengths);

@@ -1,5 +1,5 @@
-// A trained model folder (trainer.hpp's model.json, weights.safetensors, text_encoder.safetensors, Mean.npy,
-// Std.npy) turned into motions for prompts: classifier-free guidance (one batched conditional and
+// A model folder (model.json, weights.safetensors, Mean.npy, Std.npy and the text encoder's files) turned into
+// motions for prompts: classifier-free guidance (one batched conditional and
 // unconditional pass per step), any of the samplers (samplers.hpp), de-normalised HumanML3D features.
 //
 // Reproducibility: sample i of a call draws its x_T and every step's noise from its own generator seeded with
@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "diffusion/clip_text_encoder.hpp"
 #include "diffusion/glove_text_encoder.hpp"
 #include "diffusion/mdm.hpp"
 #include "diffusion/noise_schedule.hpp"
@@ -23,16 +24,26 @@ namespace t2imu {
 struct MotionModel {
     std::unique_ptr<WordVectors> vocab;  // the text encoder keeps a reference: declared first, destroyed last
     Mdm mdm{nullptr};
-    GloveTextEncoder text{nullptr};
+    GloveTextEncoder text{nullptr};      // text_encoder.kind "glove_transformer" (t2imu train's models)
+    ClipTextEncoder clip{nullptr};       // text_encoder.kind "clip" (official MDM checkpoints)
     NoiseSchedule schedule;
     FeatureStats stats;
     nlohmann::json meta;  // model.json
     torch::Device device{torch::kCPU};
+
+    torch::Tensor encode_text(const std::vector<std::string>& captions);  // [B, text_dim] by whichever encoder is loaded
 };
 
-// The model folder's text_encoder.vocab is a path as the training configuration gave it: tried as written
-// (absolute, or relative to the working directory), then relative to the model folder, then as
-// $T2IMU_VOCAB. `device` is cpu, cuda or cuda:N.
+// model.json's text_encoder names the encoder:
+//   {"kind": "glove_transformer", "vocab": PATH, sizes...}: weights in text_encoder.safetensors. The vocab path
+//     is tried as written (absolute, or relative to the working directory), then relative to the model folder,
+//     then as $T2IMU_VOCAB.
+//   {"kind": "clip", "weights": PATH, "merges": PATH[, "text_tokens": 22]}: CLIP's frozen text tower
+//     (clip_text_encoder.hpp; its sizes are read from the weights) and its BPE merges file (.txt.gz or .txt);
+//     paths as written, then relative to the model folder. text_tokens is MDM's tokenizer context (22 for
+//     HumanML3D and KIT, 77 for other data sets). The weights may be weights.safetensors itself, an MDM state
+//     dict that kept its CLIP under clip_model.; otherwise a clip_model.* key there is refused like any other.
+// `device` is cpu, cuda or cuda:N.
 std::unique_ptr<MotionModel> load_motion_model(const std::string& dir, const std::string& device = "cpu");
 
 struct SampleOptions {
