@@ -1,5 +1,6 @@
 // The sampler comparison on a tiny trained model: the reference against itself is distance 0 and ratio 1 (the
-// same seeds give the same motions), another sampler differs, and the configuration list is parsed strictly.
+// same seeds give the same motions), another sampler differs, captured clips make a last row, and the
+// configuration list is parsed strictly.
 #include <gtest/gtest.h>
 #include <torch/torch.h>
 
@@ -34,8 +35,10 @@ TEST(SamplerComparison, SameSeedsGiveTheSameMotionsAndOtherSamplersDiffer) {
     o.samples_per_prompt = 2;
     o.frames = 30;
     o.batch = 3;
+    o.captured_dataset = data;
+    o.captured_split = "train";
     const CsvTable t = compare_samplers(o, parse_sampler_configs("ddpm,ddpm,ddim:5"));
-    ASSERT_EQ(t.rows.size(), 3u);
+    ASSERT_EQ(t.rows.size(), 4u);
     const auto col = [&](const char* name) { return t.column(name); };
     EXPECT_EQ(t.rows[0][col("denoiser_calls")], "50");  // the tiny model's T
     EXPECT_EQ(t.rows[2][col("denoiser_calls")], "5");
@@ -50,4 +53,9 @@ TEST(SamplerComparison, SameSeedsGiveTheSameMotionsAndOtherSamplersDiffer) {
     EXPECT_NE(t.number(2, col("feature_acc_energy_ratio")), 1.0);
     EXPECT_GT(t.number(0, col("feature_acc_energy")), 0.0);
     EXPECT_TRUE(std::isnan(t.number(0, col("activity_pass_rate"))));  // no activity reference given
+    // The captured row: the tiny set's six 60-frame cuts of a slow walk, every one within the quality limits.
+    EXPECT_EQ(t.rows[3][col("sampler")], "captured:train");
+    EXPECT_EQ(t.rows[3][col("motions")], "6");
+    EXPECT_DOUBLE_EQ(t.number(3, col("quality_failure_rate")), 0.0);
+    EXPECT_LT(t.number(3, col("joint_acc_rms_m_s2")), 20.0);
 }

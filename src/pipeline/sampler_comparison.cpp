@@ -138,7 +138,8 @@ SamplerMotions draw(MotionModel& model, const SamplerComparisonOptions& o, const
 // The captured clips of a dataset split (at least 3 frames), as the target the samplers are measured against.
 SamplerMotions captured(const std::string& dataset, const std::string& split, const FeatureStats& stats) {
     std::vector<FeatureMatrix> motions;
-    for (const MotionClip& c : Hml3dDataset(dataset, split).clips())
+    const Hml3dDataset clips(dataset, split);  // named: the clips live as long as it
+    for (const MotionClip& c : clips.clips())
         if (c.features.rows() >= 3) motions.push_back(c.features);
     if (motions.empty()) throw Error(dataset, split, "captured clips of at least 3 frames");
     SamplerMotions out = measure(motions, stats, std::vector<std::string>(motions.size()), nullptr, 0);
