@@ -20,14 +20,11 @@ MotionActivityClassifier::MotionActivityClassifier(std::vector<ActivityExample> 
     for (const ActivityExample& e : reference_) classes.insert(e.activity);
     if (classes.size() < 2) throw Error("activity reference", "activity", "clips of at least two activities");
     classes_.assign(classes.begin(), classes.end());
-    const double n = static_cast<double>(reference_.size());
-    for (size_t i = 0; i < kNumMotionDescriptors; ++i) {
-        double s = 0, s2 = 0;
-        for (const ActivityExample& e : reference_) s += e.descriptors[i], s2 += e.descriptors[i] * e.descriptors[i];
-        mean_[i] = s / n;
-        sd_[i] = std::sqrt(std::max(s2 / n - mean_[i] * mean_[i], 0.0));
-        if (sd_[i] < 1e-9) sd_[i] = 1;  // a constant descriptor adds no distance
-    }
+    std::vector<MotionDescriptors> all;
+    for (const ActivityExample& e : reference_) all.push_back(e.descriptors);
+    sd_ = descriptor_moments(all).sd;
+    for (double& sd : sd_)
+        if (sd < 1e-9) sd = 1;  // a constant descriptor adds no distance
 }
 
 MotionActivityClassifier MotionActivityClassifier::load(const std::string& path) {

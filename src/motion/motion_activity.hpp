@@ -49,7 +49,7 @@ public:
 private:
     std::vector<ActivityExample> reference_;
     std::vector<std::string> classes_;
-    MotionDescriptors mean_{}, sd_{};
+    MotionDescriptors sd_{};  // per descriptor over the reference: distances are in these units
 };
 
 // The classifier's class for a prompt-set activity (jogging -> running, stairs_up/down -> stairs,

@@ -110,3 +110,19 @@ MotionDescriptors describe_motion(const JointSequence& m) {
 }
 
 }  // namespace t2imu
+
+namespace t2imu {
+
+DescriptorMoments descriptor_moments(const std::vector<MotionDescriptors>& set) {
+    DescriptorMoments m;
+    if (set.empty()) return m;
+    const double n = static_cast<double>(set.size());
+    for (const MotionDescriptors& x : set)
+        for (size_t i = 0; i < kNumMotionDescriptors; ++i) m.mean[i] += x[i] / n;
+    for (const MotionDescriptors& x : set)
+        for (size_t i = 0; i < kNumMotionDescriptors; ++i) m.sd[i] += (x[i] - m.mean[i]) * (x[i] - m.mean[i]) / n;
+    for (double& v : m.sd) v = std::sqrt(v);
+    return m;
+}
+
+}  // namespace t2imu

@@ -20,6 +20,7 @@
 //                              step a climbing foot stands on is its floor: stairs are not flight)
 #pragma once
 #include <array>
+#include <vector>
 
 #include "motion/joint_sequence.hpp"
 
@@ -33,5 +34,11 @@ using MotionDescriptors = std::array<double, kNumMotionDescriptors>;
 
 // At least 3 frames of SMPL-22 joints; throws Error otherwise.
 MotionDescriptors describe_motion(const JointSequence& joints);
+
+// Per descriptor over a set of motions: mean and (population) standard deviation. Empty input gives zeros.
+struct DescriptorMoments {
+    MotionDescriptors mean{}, sd{};
+};
+DescriptorMoments descriptor_moments(const std::vector<MotionDescriptors>& set);
 
 }  // namespace t2imu

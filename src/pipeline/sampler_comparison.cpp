@@ -70,21 +70,9 @@ double mean(const std::vector<double>& v) {
     return s / static_cast<double>(v.size());
 }
 
-// Per descriptor: mean and standard deviation over the motions.
-std::pair<MotionDescriptors, MotionDescriptors> descriptor_moments(const std::vector<MotionDescriptors>& d) {
-    MotionDescriptors mu{}, sd{};
-    const double n = static_cast<double>(d.size());
-    for (const MotionDescriptors& x : d)
-        for (size_t i = 0; i < kNumMotionDescriptors; ++i) mu[i] += x[i] / n;
-    for (const MotionDescriptors& x : d)
-        for (size_t i = 0; i < kNumMotionDescriptors; ++i) sd[i] += (x[i] - mu[i]) * (x[i] - mu[i]) / n;
-    for (double& v : sd) v = std::sqrt(v);
-    return {mu, sd};
-}
-
 double diagonal_frechet(const std::vector<MotionDescriptors>& a, const std::vector<MotionDescriptors>& reference) {
-    const auto [mu, sd] = descriptor_moments(a);
-    const auto [mu_ref, sd_ref] = descriptor_moments(reference);
+    const DescriptorMoments m = descriptor_moments(a), r = descriptor_moments(reference);
+    const MotionDescriptors &mu = m.mean, &sd = m.sd, &mu_ref = r.mean, &sd_ref = r.sd;
     double s = 0;
     for (size_t i = 0; i < kNumMotionDescriptors; ++i) {
         if (sd_ref[i] <= 0) continue;  // constant over the reference: no scale to measure a shift in
