@@ -40,7 +40,7 @@ TEST(Report, DrawsEveryRecognisedResultIntoOnePage) {
     write_file_atomic(in + "/notes.json", "not json");  // ignored
     write_file_atomic(in + "/synth/synth_report.json",
                       R"({"jobs":10,"jobs_done":10,"motions_kept":9,"jobs_regenerated":2,"recordings":63,)"
-                      R"("per_activity":{"walking":{"kept":9,"dropped":1}},)"
+                      R"("per_activity":{"walking":{"kept":9,"kept_below_activity_agreement":2,"dropped":1}},)"
                       R"("this_run":{"jobs_run":10,"total_s":7.5,"motion_generation_s":6.0,"bodies_imu_write_s":1.2,"device":"cpu"}})");
     const auto r = test::run_cli("report --in " + in + " --out " + dir + "/report");
     ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -52,7 +52,7 @@ TEST(Report, DrawsEveryRecognisedResultIntoOnePage) {
     EXPECT_EQ(images, 6u);  // every figure embedded, each a PNG (its signature in base64)
     EXPECT_NE(html.find("60.0 &plusmn; 5.0"), std::string::npos);
     EXPECT_NE(html.find("Synthesis: synth"), std::string::npos);
-    EXPECT_NE(html.find("<td>walking</td><td>9</td><td>1</td>"), std::string::npos);
+    EXPECT_NE(html.find("<td>walking</td><td>9</td><td>2</td><td>1</td>"), std::string::npos);
     EXPECT_NE(html.find("10 jobs in 7.5 s"), std::string::npos);
     for (const char* png : {"balanced_accuracy.png", "confusion_synthetic_to_real.png", "lacc_lacc_change.png", "tsne_tsne.png", "tsne_high_tsne.png", "trace_0.png"}) {
         const std::vector<uint8_t> bytes = read_file_bytes(dir + "/report/" + png);

@@ -206,10 +206,11 @@ TEST(Synth, CommandLineRunsAndRefusesABadShard) {
     EXPECT_EQ(read_imu_dataset(out, true).size(), 8u);  // 2 jobs x 1 body x 4 UMAFall sensors
 }
 
-TEST(Synth, ActivityCheckDropsMotionsThatShowAnotherActivity) {
+TEST(Synth, ActivityCheckKeepsTheBestDrawOrDropsMotionsThatShowAnotherActivity) {
     // Both prompts retrieve the tiny set's slow walk. The reference says walking looks like those very
     // motions and running like them shifted by 10 units in every descriptor, so the walking prompt's motions
-    // agree fully with their activity and the running prompt's, still walks after every redraw, are dropped.
+    // agree fully with their activity and the running prompt's still walk after every redraw: by default they
+    // keep their best-agreeing draw, with --drop-activity-failures they are dropped.
     const std::string dir = test::scratch_dir("synth_activity");
     SynthOptions o = tiny_options(dir + "/unchecked");
     o.model = "retrieval:" + tiny().data;
@@ -227,19 +228,46 @@ TEST(Synth, ActivityCheckDropsMotionsThatShowAnotherActivity) {
     }
     o.activity_reference = dir + "/reference.csv";
     write_csv(o.activity_reference, MotionActivityClassifier(reference).reference_table());
-    o.out = dir + "/checked";
-    const nlohmann::json r = run_synth(o);
-    EXPECT_EQ(r["motions_kept"], 2);
-    EXPECT_EQ(r["motions_dropped"], 2);
-    EXPECT_EQ(r["per_activity"]["walking"]["shown"], nlohmann::json({{"walking", 2}}));
-    EXPECT_EQ(r["per_activity"]["running"]["shown"], nlohmann::json({{"walking", 2}}));
+
+    o.out = dir + "/kept";
+    const nlohmann::json kept = run_synth(o);
+    EXPECT_EQ(kept["motions_kept"], 4);
+    EXPECT_EQ(kept["motions_kept_below_activity_agreement"], 2);
+    EXPECT_EQ(kept["per_activity"]["walking"]["shown"], nlohmann::json({{"walking", 2}}));
+    EXPECT_EQ(kept["per_activity"]["running"]["shown"], nlohmann::json({{"walking", 2}}));
     const nlohmann::json walk = nlohmann::json::parse(read_file_text(o.out + "/jobs/j00000.json"));
     EXPECT_EQ(walk["activity_check"]["shown"], "walking");
     EXPECT_DOUBLE_EQ(walk["activity_check"]["agreement"].get<double>(), 1.0);
+    EXPECT_TRUE(walk["activity_check"]["passed"].get<bool>());
+    for (const char* job : {"j00002", "j00003"}) {
+        const nlohmann::json run = nlohmann::json::parse(read_file_text(o.out + "/jobs/" + job + ".json"));
+        EXPECT_TRUE(run["kept"].get<bool>());
+        EXPECT_FALSE(run["activity_check"]["passed"].get<bool>());
+        ASSERT_EQ(run["attempts"].size(), 3u);
+        double best = -1;
+        uint64_t best_seed = 0;
+        for (const auto& attempt : run["attempts"]) {
+            EXPECT_EQ(attempt["failures"], nlohmann::json::array({"activity"}));
+            if (attempt["activity_agreement"].get<double>() > best) {
+                best = attempt["activity_agreement"].get<double>();
+                best_seed = attempt["seed"].get<uint64_t>();
+            }
+        }
+        EXPECT_LT(best, o.min_activity_agreement);
+        EXPECT_EQ(run["seed"].get<uint64_t>(), best_seed);
+        EXPECT_DOUBLE_EQ(run["activity_check"]["agreement"].get<double>(), best);
+        EXPECT_EQ(run["recordings"].size(), walk["recordings"].size());
+    }
+
+    o.out = dir + "/dropped";
+    o.drop_activity_failures = true;
+    const nlohmann::json dropped = run_synth(o);
+    EXPECT_EQ(dropped["motions_kept"], 2);
+    EXPECT_EQ(dropped["motions_dropped"], 2);
+    EXPECT_EQ(dropped["motions_kept_below_activity_agreement"], 0);
     const nlohmann::json run = nlohmann::json::parse(read_file_text(o.out + "/jobs/j00002.json"));
     EXPECT_FALSE(run["kept"].get<bool>());
     EXPECT_EQ(run["activity_check"]["shown"], "walking");
     EXPECT_LT(run["activity_check"]["agreement"].get<double>(), o.min_activity_agreement);
-    ASSERT_EQ(run["attempts"].size(), 3u);
-    for (const auto& attempt : run["attempts"]) EXPECT_EQ(attempt["failures"], nlohmann::json::array({"activity"}));
+    EXPECT_TRUE(run["recordings"].empty());
 }

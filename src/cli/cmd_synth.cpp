@@ -52,9 +52,10 @@ void run(SynthArgs a) {
     });
     if (show) std::fprintf(stderr, "\n");
     const auto& t = r["this_run"];
-    std::printf("%s: %d of %d jobs done (%d motions kept, %d dropped, %d regenerated), %d recordings; this run: %d jobs in %.1f s "
+    std::printf("%s: %d of %d jobs done (%d motions kept, %d of them below the activity agreement, %d dropped, %d regenerated), %d recordings; this run: %d jobs in %.1f s "
                 "(motions %.1f s, quality %.1f s, bodies+IMU+write %.1f s)\n",
-                o.out.c_str(), r["jobs_done"].get<int>(), r["jobs"].get<int>(), r["motions_kept"].get<int>(), r["motions_dropped"].get<int>(),
+                o.out.c_str(), r["jobs_done"].get<int>(), r["jobs"].get<int>(), r["motions_kept"].get<int>(),
+                r["motions_kept_below_activity_agreement"].get<int>(), r["motions_dropped"].get<int>(),
                 r["jobs_regenerated"].get<int>(), r["recordings"].get<int>(), t["jobs_run"].get<int>(), t["total_s"].get<double>(),
                 t["motion_generation_s"].get<double>(), t["quality_scoring_s"].get<double>(), t["bodies_imu_write_s"].get<double>());
 }
@@ -86,6 +87,8 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--activity-reference", o.activity_reference,
                     "captured clips the activity check compares with (default models/motion-activity.csv; \"\" = no check)");
     cmd->add_option("--min-activity-agreement", o.min_activity_agreement, "activity check threshold, 0..1 (default 0.55)");
+    cmd->add_flag("--drop-activity-failures", o.drop_activity_failures,
+                  "drop a motion whose every draw fails the activity check (default: keep its best-agreeing draw)");
     cmd->add_option("--retries", o.max_retries, "draws after the first for a motion the filter rejects (default 2)");
     cmd->add_option("--shard", a.shard, "I/N: run the I-th of N contiguous blocks of jobs (default 1/1)");
     cmd->add_option("--out", o.out, "output folder (resumed when it holds the same synthesis)")->required();

@@ -33,6 +33,7 @@ void read_synth(TomlSection s, SynthOptions& o) {
     s.read("max_retries", o.max_retries);
     s.read("activity_reference", o.activity_reference);
     s.read("min_activity_agreement", o.min_activity_agreement);
+    s.read("drop_activity_failures", o.drop_activity_failures);
     s.refuse_unknown_keys();
 }
 

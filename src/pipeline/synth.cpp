@@ -63,6 +63,18 @@ void check_activity(const MotionActivityClassifier& classifier, const std::strin
     if (d.activity_agreement < min_agreement) d.failures.push_back("activity");
 }
 
+bool fails_only_activity(const Drawn& d) { return d.failures.size() == 1 && d.failures[0] == "activity"; }
+
+// Of a job's draws that fail nothing but the activity check, the one agreeing best with the prompt's activity.
+// Keeping it (rather than dropping the job) keeps every activity's share of the data: dropping starves exactly
+// the activities the model renders worst, which cost more HAR accuracy than their draws' label noise.
+void keep_best_activity_draw(Drawn& d, std::optional<Drawn>& best) {
+    if (!best) return;
+    best->attempts = d.attempts;
+    best->kept = true;
+    d = std::move(*best);
+}
+
 // Draws every job of the batch, then again with the next seed those the filter rejects. `expected`: per job, the
 // activity classifier's class for its prompt ("" = not checked).
 std::vector<Drawn> draw_filtered(MotionSource& source, const std::vector<int>& jobs, const std::vector<std::string>& texts,
@@ -70,6 +82,7 @@ std::vector<Drawn> draw_filtered(MotionSource& source, const std::vector<int>& j
                                  const SynthOptions& o, double* generate_s, double* score_s) {
     const int frames = static_cast<int>(std::lround(o.seconds * 20));
     std::vector<Drawn> out(jobs.size());
+    std::vector<std::optional<Drawn>> best_activity(jobs.size());  // see keep_best_activity_draw
     std::vector<size_t> pending(jobs.size());
     for (size_t i = 0; i < jobs.size(); ++i) pending[i] = i;
     for (int attempt = 0; !pending.empty(); ++attempt) {
@@ -92,8 +105,12 @@ std::vector<Drawn> draw_filtered(MotionSource& source, const std::vector<int>& j
             d.failures = quality_failures(d.quality, o.thresholds);
             if (classifier) check_activity(*classifier, expected[pending[p]], o.min_activity_agreement, d);
             d.attempts.push_back({{"seed", d.seed}, {"failures", d.failures}});
+            if (classifier) d.attempts.back()["activity_agreement"] = d.activity_agreement;
             d.kept = !o.filter || d.failures.empty();
+            std::optional<Drawn>& best = best_activity[pending[p]];
+            if (!d.kept && fails_only_activity(d) && (!best || d.activity_agreement > best->activity_agreement)) best = d;
             if (!d.kept && attempt < o.max_retries) again.push_back(pending[p]);
+            else if (!d.kept && !o.drop_activity_failures) keep_best_activity_draw(d, best);
         }
         *score_s += since(t0);
         pending = again;
@@ -120,7 +137,8 @@ void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt&
     json marker = {{"job", name}, {"index", job}, {"prompt", prompt.text}, {"activity", prompt.activity}, {"sample", sample},
                    {"seed", d.seed}, {"attempts", d.attempts}, {"quality", quality_json(d.quality)}, {"kept", d.kept},
                    {"frames", d.joints.num_frames}, {"recordings", json::array()}};
-    if (!d.activity_shown.empty()) marker["activity_check"] = {{"shown", d.activity_shown}, {"agreement", d.activity_agreement}};
+    if (!d.activity_shown.empty())
+        marker["activity_check"] = {{"shown", d.activity_shown}, {"agreement", d.activity_agreement}, {"passed", d.activity_agreement >= o.min_activity_agreement}};
     if (d.kept) {
         write_npy(o.out + "/motions/" + name + "_joints.npy", joint_sequence_to_array(d.joints));
         write_bvh(o.out + "/motions/" + name + ".bvh", smpl22_to_bvh(d.joints));
@@ -168,7 +186,9 @@ json settings_json(const SynthOptions& o, const std::vector<Prompt>& prompts, co
             {"rate_hz", o.rate_hz}, {"filter", o.filter}, {"max_retries", o.max_retries},
             {"thresholds", quality_limits(o.thresholds)}};
     // Absent without an activity check, so folders made before the check existed stay valid.
-    if (!o.activity_reference.empty()) s["activity_check"] = {{"reference", o.activity_reference}, {"min_agreement", o.min_activity_agreement}};
+    if (!o.activity_reference.empty())
+        s["activity_check"] = {{"reference", o.activity_reference}, {"min_agreement", o.min_activity_agreement},
+                               {"on_failure", o.drop_activity_failures ? "drop" : "keep_best"}};
     return s;
 }
 
@@ -226,17 +246,20 @@ json report_json(const std::vector<json>& markers, int total_jobs, const json& t
     json per_activity = json::object();
     std::map<std::string, int> failures;
     std::map<std::string, std::vector<double>> scores;
-    int kept = 0, regenerated = 0, recordings = 0;
+    int kept = 0, regenerated = 0, recordings = 0, below_agreement = 0;
     for (const json& j : markers) {
         json& a = per_activity[j["activity"].get<std::string>()];
-        if (a.is_null()) a = {{"kept", 0}, {"dropped", 0}};
+        if (a.is_null()) a = {{"kept", 0}, {"kept_below_activity_agreement", 0}, {"dropped", 0}};
         const bool k = j["kept"];
         a[k ? "kept" : "dropped"] = a[k ? "kept" : "dropped"].get<int>() + 1;
         if (j.contains("activity_check")) {  // what the last draw showed, kept or dropped
             json& shown = a["shown"][j["activity_check"]["shown"].get<std::string>()];
             shown = shown.is_null() ? 1 : shown.get<int>() + 1;
         }
+        const bool below = k && !j.value("activity_check", json::object()).value("passed", true);
+        a["kept_below_activity_agreement"] = a["kept_below_activity_agreement"].get<int>() + below;
         kept += k;
+        below_agreement += below;
         regenerated += j["attempts"].size() > 1;
         recordings += static_cast<int>(j["recordings"].size());
         for (const json& at : j["attempts"])
@@ -246,6 +269,7 @@ json report_json(const std::vector<json>& markers, int total_jobs, const json& t
     json medians;
     for (const auto& [name, v] : scores) medians[name] = median(v);
     return {{"jobs", total_jobs}, {"jobs_done", markers.size()}, {"motions_kept", kept}, {"motions_dropped", static_cast<int>(markers.size()) - kept},
+            {"motions_kept_below_activity_agreement", below_agreement},
             {"jobs_regenerated", regenerated}, {"recordings", recordings}, {"per_activity", per_activity},
             {"failed_attempts_by_score", failures}, {"quality_median", medians}, {"this_run", timing}};
 }

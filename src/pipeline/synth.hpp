@@ -17,7 +17,8 @@
 // together) are merged by running once more without --shard: every job is done, the manifest is rebuilt.
 //
 // Quality filter (motion/motion_quality.hpp, and the activity check below): a motion over any threshold is drawn again with the next seed,
-// up to max_retries times; one still failing then is dropped (recorded in its marker and the report). Seeds:
+// up to max_retries times; one still failing then is dropped (recorded in its marker and the report), except
+// that one failing only the activity check keeps its best-agreeing draw (see SynthOptions). Seeds:
 // attempt a of job k draws from seed + k + a * kSeedStridePerAttempt.
 #pragma once
 #include <cstdint>
@@ -48,9 +49,12 @@ struct SynthOptions {
     // prompt's activity is below min_activity_agreement fails like a quality score ("activity"). 0.55 is the
     // 0.5th percentile of the captured clips' agreement with their own activity, leave-one-subject-out, so as
     // for the other thresholds a failing motion is less typical of its activity than 199 in 200 captured ones.
-    // Prompts whose activity the reference lacks are not checked.
+    // Prompts whose activity the reference lacks are not checked. A job whose every draw fails the activity
+    // check and nothing else keeps its best-agreeing draw (marker: activity_check.passed false) unless
+    // drop_activity_failures: dropping starved the activities the model renders worst (README, "Results").
     std::string activity_reference;      // "" = no activity check
     double min_activity_agreement = 0.55;
+    bool drop_activity_failures = false;
     int shard = 0, shards = 1;           // this run does shard `shard` (0-based) of `shards`
     std::string device = "cpu";
     int threads = 1;                     // workers for the bodies/IMU stage

@@ -84,14 +84,14 @@ void har_section(const std::vector<std::pair<std::string, nlohmann::json>>& resu
 void synth_section(const std::vector<std::pair<std::string, nlohmann::json>>& reports, Page& page) {
     char buf[512];
     for (const auto& [name, r] : reports) {
-        page.body += "<h2>Synthesis: " + escape(name) + "</h2>\n<table><tr><th>activity</th><th>motions kept</th><th>dropped by the quality filter</th>"
+        page.body += "<h2>Synthesis: " + escape(name) + "</h2>\n<table><tr><th>activity</th><th>motions kept</th><th>of them below the activity agreement</th><th>dropped by the quality filter</th>"
                      "<th>activity the motions show (activity check, last draw)</th></tr>\n";
         for (const auto& [activity, counts] : r["per_activity"].items()) {
             std::string shown;
             if (counts.contains("shown"))
                 for (const auto& [k, n] : counts["shown"].items()) shown += (shown.empty() ? "" : ", ") + k + " " + std::to_string(n.get<int>());
-            std::snprintf(buf, sizeof buf, "<tr><td>%s</td><td>%d</td><td>%d</td><td>%s</td></tr>\n", escape(activity).c_str(),
-                          counts.value("kept", 0), counts.value("dropped", 0), escape(shown.empty() ? "not checked" : shown).c_str());
+            std::snprintf(buf, sizeof buf, "<tr><td>%s</td><td>%d</td><td>%d</td><td>%d</td><td>%s</td></tr>\n", escape(activity).c_str(),
+                          counts.value("kept", 0), counts.value("kept_below_activity_agreement", 0), counts.value("dropped", 0), escape(shown.empty() ? "not checked" : shown).c_str());
             page.body += buf;
         }
         const nlohmann::json& t = r["this_run"];
