@@ -62,6 +62,27 @@ TEST(MotionQuality, PenetrationIsTheDeepestJointBelowTheFloor) {
     EXPECT_NEAR(q.max_speed_m_s, 2.4, 1e-9);
 }
 
+TEST(MotionQuality, PlacingOnTheFloorTurnsAUniformSinkIntoNothingAndAPartialOneIntoHover) {
+    // Sunk 0.3 m for the whole clip: placed back exactly, every score as the standing pose's.
+    JointSequence sunk = standing(40);
+    for (int f = 0; f < sunk.num_frames; ++f)
+        for (int j = 0; j < sunk.num_joints; ++j) sunk.at(f, j).y() -= 0.3;
+    EXPECT_NEAR(score_motion(sunk).penetration_m, 0.3, 1e-12);
+    EXPECT_NEAR(place_on_floor(sunk), 0.3, 1e-12);
+    const JointSequence reference = standing(40);
+    for (int f = 0; f < sunk.num_frames; ++f)
+        for (int j = 0; j < sunk.num_joints; ++j) EXPECT_NEAR((sunk.at(f, j) - reference.at(f, j)).norm(), 0.0, 1e-12);
+    EXPECT_TRUE(quality_failures(score_motion(sunk), default_quality_thresholds()).empty());
+    // Sunk 0.4 m for the last 15 of 40 frames: placed on that level, the other 25 frames stand 0.4 m above it.
+    JointSequence partly = standing(40);
+    for (int f = 25; f < partly.num_frames; ++f)
+        for (int j = 0; j < partly.num_joints; ++j) partly.at(f, j).y() -= 0.4;
+    EXPECT_NEAR(place_on_floor(partly), 0.4, 1e-12);
+    const MotionQuality q = score_motion(partly);
+    EXPECT_DOUBLE_EQ(q.penetration_m, 0.0);
+    EXPECT_NEAR(q.hover_m, 0.4, 1e-12);
+}
+
 TEST(MotionQuality, RefusesTooFewFrames) { EXPECT_THROW(score_motion(standing(2)), Error); }
 
 }  // namespace

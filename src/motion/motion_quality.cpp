@@ -62,6 +62,16 @@ MotionQuality score_motion(const JointSequence& m) {
     return q;
 }
 
+double place_on_floor(JointSequence& m) {
+    if (m.num_frames == 0 || m.num_joints == 0) return 0;
+    double low = m.at(0, 0).y();
+    for (int f = 0; f < m.num_frames; ++f)
+        for (int j = 0; j < m.num_joints; ++j) low = std::min(low, m.at(f, j).y());
+    for (int f = 0; f < m.num_frames; ++f)
+        for (int j = 0; j < m.num_joints; ++j) m.at(f, j).y() -= low;
+    return -low;
+}
+
 std::vector<std::string> quality_failures(const MotionQuality& q, const MotionQualityThresholds& t) {
     static const std::array<const char*, kNumQualityScores> failure = {"foot_skate", "penetration", "hover", "max_speed", "max_acc"};
     const auto score = quality_scores(q), limit = quality_limits(t);

@@ -43,6 +43,12 @@ MotionQualityThresholds default_quality_thresholds();
 // SMPL-22 joints, at least 3 frames.
 MotionQuality score_motion(const JointSequence& joints);
 
+// Shifts the whole motion vertically so its lowest joint over all frames is at y = 0: where HumanML3D's processing
+// puts the floor of a captured clip. A generated motion's floor can sit 0.2-0.4 m too high (lying motions sink
+// through it); one constant shift changes no velocity, acceleration or orientation, so no virtual IMU sample, and
+// what stays of a sinking that varies over the clip shows as hover. Returns the shift (m, up positive).
+double place_on_floor(JointSequence& joints);
+
 // Names of the scores over their threshold, empty when the motion passes.
 std::vector<std::string> quality_failures(const MotionQuality& q, const MotionQualityThresholds& t);
 

@@ -100,6 +100,7 @@ std::vector<Drawn> draw_filtered(MotionSource& source, const std::vector<int>& j
         for (size_t p = 0; p < pending.size(); ++p) {
             Drawn& d = out[pending[p]];
             d.joints = std::move(motions[p]);
+            place_on_floor(d.joints);
             d.seed = seeds[p];
             d.quality = score_motion(d.joints);
             d.failures = quality_failures(d.quality, o.thresholds);
@@ -183,7 +184,7 @@ json settings_json(const SynthOptions& o, const std::vector<Prompt>& prompts, co
     for (const Prompt& x : prompts) p.push_back({x.activity, x.text});
     json s = {{"prompts_file", o.prompts}, {"prompts", p}, {"samples_per_prompt", o.samples_per_prompt}, {"source", source},
             {"seed", o.sampling.seed}, {"seconds", o.seconds}, {"bodies", o.bodies}, {"sensors", o.sensors}, {"noise", o.noise},
-            {"rate_hz", o.rate_hz}, {"filter", o.filter}, {"max_retries", o.max_retries},
+            {"rate_hz", o.rate_hz}, {"placed_on_floor", true} /* refuses folders made before floor placement */, {"filter", o.filter}, {"max_retries", o.max_retries},
             {"thresholds", quality_limits(o.thresholds)}};
     // Absent without an activity check, so folders made before the check existed stay valid.
     if (!o.activity_reference.empty())

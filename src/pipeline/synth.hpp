@@ -16,6 +16,7 @@
 // Shards: --shard I/N takes the I-th of N contiguous blocks of jobs. Shards written to one folder (or copied
 // together) are merged by running once more without --shard: every job is done, the manifest is rebuilt.
 //
+// Each drawn motion is first placed on the floor (motion/motion_quality.hpp: place_on_floor), as captured clips are.
 // Quality filter (motion/motion_quality.hpp, and the activity check below): a motion over any threshold is drawn again with the next seed,
 // up to max_retries times; one still failing then is dropped (recorded in its marker and the report), except
 // that one failing only the activity check keeps its best-agreeing draw (see SynthOptions). Seeds:
