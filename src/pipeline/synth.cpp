@@ -67,7 +67,7 @@ bool fails_only_activity(const Drawn& d) { return d.failures.size() == 1 && d.fa
 
 // Of a job's draws that fail nothing but the activity check, the one agreeing best with the prompt's activity.
 // Keeping it (rather than dropping the job) keeps every activity's share of the data: dropping starves exactly
-// the activities the model renders worst, which cost more HAR accuracy than their draws' label noise.
+// the activities the model renders worst (README, "Results": measured on SisFall).
 void keep_best_activity_draw(Drawn& d, std::optional<Drawn>& best) {
     if (!best) return;
     best->attempts = d.attempts;
@@ -184,9 +184,10 @@ json settings_json(const SynthOptions& o, const std::vector<Prompt>& prompts, co
     for (const Prompt& x : prompts) p.push_back({x.activity, x.text});
     json s = {{"prompts_file", o.prompts}, {"prompts", p}, {"samples_per_prompt", o.samples_per_prompt}, {"source", source},
             {"seed", o.sampling.seed}, {"seconds", o.seconds}, {"bodies", o.bodies}, {"sensors", o.sensors}, {"noise", o.noise},
-            {"rate_hz", o.rate_hz}, {"placed_on_floor", true} /* refuses folders made before floor placement */, {"filter", o.filter}, {"max_retries", o.max_retries},
+            {"rate_hz", o.rate_hz}, {"placed_on_floor", true}, {"filter", o.filter}, {"max_retries", o.max_retries},
             {"thresholds", quality_limits(o.thresholds)}};
-    // Absent without an activity check, so folders made before the check existed stay valid.
+    // placed_on_floor is always true: it makes a resume refuse folders drawn before floor placement existed.
+    // activity_check is absent without a check, so folders made before the check existed stay valid.
     if (!o.activity_reference.empty())
         s["activity_check"] = {{"reference", o.activity_reference}, {"min_agreement", o.min_activity_agreement},
                                {"on_failure", o.drop_activity_failures ? "drop" : "keep_best"}};
