@@ -13,6 +13,10 @@
 // 1.28 m/s, hover 0.25 m, joint speed 13.2 m/s, joint acceleration 346 m/s^2 (medians 0.20, 0.014, 4.9, 56).
 // Captured clips never go below the floor (HumanML3D puts the floor at their lowest joint); 5 cm is allowed.
 // So a motion that fails one is less plausible than 199 in 200 captured motions.
+// One set for every activity, not one per activity: per activity the 99.5th percentile of foot skating is
+// 1.16 m/s for running (752 clips, mirrors counted), 1.68 walking (672), 2.71 dancing (312), 0.67 jumping
+// (138), so a running threshold would be stricter, not looser: generated jogging that skates 1.5 m/s skates
+// more than captured running does.
 #pragma once
 #include <array>
 #include <string>
