@@ -24,6 +24,7 @@ TEST(MotionQuality, StaticPoseScoresZero) {
     EXPECT_DOUBLE_EQ(q.hover_m, 0.0);
     EXPECT_DOUBLE_EQ(q.max_speed_m_s, 0.0);
     EXPECT_DOUBLE_EQ(q.max_acc_m_s2, 0.0);
+    EXPECT_DOUBLE_EQ(q.pelvis_acc_m_s2, 0.0);
     EXPECT_TRUE(quality_failures(q, default_quality_thresholds()).empty());
 }
 
@@ -60,6 +61,26 @@ TEST(MotionQuality, PenetrationIsTheDeepestJointBelowTheFloor) {
     // One frame's dip and return: |Δ²y| = 0.24 m per frame² = 96 m/s²; 0.12 m in one frame = 2.4 m/s.
     EXPECT_NEAR(q.max_acc_m_s2, 0.24 * 400, 1e-9);
     EXPECT_NEAR(q.max_speed_m_s, 2.4, 1e-9);
+}
+
+TEST(MotionQuality, ATeleportingPelvisFailsThePelvisScoreThatTheAllJointScoreLetsThrough) {
+    // A generated lying-down draw as measured, turned sideways to keep the feet on the floor: the whole body
+    // jumps 0.52 m in one frame, half back, and again (pelvis height 0.74, 0.22, 0.55, 0.22 m). Pelvis |Δ²x| at
+    // the first frame: 0.52 + 0.33 = 0.85 m per frame² = 340 m/s² at 20 fps, under max_acc's 350 (which hands
+    // and feet need) and well over the pelvis's 60; the feet's skating averages 0.6 m/s over the clip.
+    JointSequence m = standing(40);
+    for (int f = 21; f < m.num_frames; ++f)
+        for (int j = 0; j < m.num_joints; ++j) m.at(f, j).x() += f == 22 ? 0.19 : 0.52;
+    const MotionQuality q = score_motion(m);
+    EXPECT_NEAR(q.pelvis_acc_m_s2, 0.85 * 400, 1e-9);
+    EXPECT_NEAR(q.max_acc_m_s2, 0.85 * 400, 1e-9);
+    EXPECT_EQ(quality_failures(q, default_quality_thresholds()), std::vector<std::string>{"pelvis_acc"});
+    // A hand that snaps as fast moves no pelvis: the all-joint score sees it, the pelvis score does not.
+    JointSequence snap = standing(40);
+    snap.at(20, smpl22::left_wrist).y() += 0.5;
+    const MotionQuality h = score_motion(snap);
+    EXPECT_NEAR(h.max_acc_m_s2, 2 * 0.5 * 400, 1e-9);
+    EXPECT_DOUBLE_EQ(h.pelvis_acc_m_s2, 0.0);
 }
 
 TEST(MotionQuality, PlacingOnTheFloorTurnsAUniformSinkIntoNothingAndAPartialOneIntoHover) {

@@ -48,7 +48,7 @@ void run(const std::vector<std::string>& inputs, double fps, double p, const std
     for (const std::string& file : joint_files(inputs)) {
         const auto v = quality_scores(score_motion(joint_sequence_from_array(read_npy(file), file, 22, 3, fps)));
         char row[256];
-        std::snprintf(row, sizeof row, ",%.4f,%.4f,%.4f,%.3f,%.2f\n", v[0], v[1], v[2], v[3], v[4]);
+        std::snprintf(row, sizeof row, ",%.4f,%.4f,%.4f,%.3f,%.2f,%.2f\n", v[0], v[1], v[2], v[3], v[4], v[5]);
         csv += file + row;
         for (size_t i = 0; i < kNumQualityScores; ++i) columns[i].push_back(v[i]);
     }

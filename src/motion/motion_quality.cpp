@@ -9,18 +9,18 @@
 namespace t2imu {
 
 const std::array<const char*, kNumQualityScores> kQualityScoreNames = {"foot_skate_m_s", "penetration_m", "hover_m",
-                                                                        "max_speed_m_s", "max_acc_m_s2"};
+                                                                        "max_speed_m_s", "max_acc_m_s2", "pelvis_acc_m_s2"};
 
 std::array<double, kNumQualityScores> quality_scores(const MotionQuality& q) {
-    return {q.foot_skate_m_s, q.penetration_m, q.hover_m, q.max_speed_m_s, q.max_acc_m_s2};
+    return {q.foot_skate_m_s, q.penetration_m, q.hover_m, q.max_speed_m_s, q.max_acc_m_s2, q.pelvis_acc_m_s2};
 }
 
 std::array<double, kNumQualityScores> quality_limits(const MotionQualityThresholds& t) {
-    return {t.foot_skate_m_s, t.penetration_m, t.hover_m, t.max_speed_m_s, t.max_acc_m_s2};
+    return {t.foot_skate_m_s, t.penetration_m, t.hover_m, t.max_speed_m_s, t.max_acc_m_s2, t.pelvis_acc_m_s2};
 }
 
 MotionQualityThresholds default_quality_thresholds() {
-    return {1.3, 0.05, 0.30, 14.0, 350.0};
+    return {1.3, 0.05, 0.30, 14.0, 350.0, 60.0};
 }
 
 namespace {
@@ -51,8 +51,10 @@ MotionQuality score_motion(const JointSequence& m) {
         for (int j = 0; j < m.num_joints; ++j) {
             low = std::min(low, m.at(f, j).y());
             if (f + 1 < m.num_frames) q.max_speed_m_s = std::max(q.max_speed_m_s, (m.at(f + 1, j) - m.at(f, j)).norm() * m.fps);
-            if (f >= 1 && f + 1 < m.num_frames)
-                q.max_acc_m_s2 = std::max(q.max_acc_m_s2, (m.at(f + 1, j) - 2 * m.at(f, j) + m.at(f - 1, j)).norm() * m.fps * m.fps);
+            if (f < 1 || f + 1 >= m.num_frames) continue;
+            const double acc = (m.at(f + 1, j) - 2 * m.at(f, j) + m.at(f - 1, j)).norm() * m.fps * m.fps;
+            q.max_acc_m_s2 = std::max(q.max_acc_m_s2, acc);
+            if (j == smpl22::pelvis) q.pelvis_acc_m_s2 = std::max(q.pelvis_acc_m_s2, acc);
         }
         lowest[static_cast<size_t>(f)] = low;
         q.penetration_m = std::max(q.penetration_m, -low);
@@ -73,7 +75,7 @@ double place_on_floor(JointSequence& m) {
 }
 
 std::vector<std::string> quality_failures(const MotionQuality& q, const MotionQualityThresholds& t) {
-    static const std::array<const char*, kNumQualityScores> failure = {"foot_skate", "penetration", "hover", "max_speed", "max_acc"};
+    static const std::array<const char*, kNumQualityScores> failure = {"foot_skate", "penetration", "hover", "max_speed", "max_acc", "pelvis_acc"};
     const auto score = quality_scores(q), limit = quality_limits(t);
     std::vector<std::string> out;
     for (size_t i = 0; i < kNumQualityScores; ++i)
