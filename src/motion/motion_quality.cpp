@@ -25,14 +25,14 @@ MotionQualityThresholds default_quality_thresholds() {
 
 namespace {
 
-double foot_skate(const JointSequence& m) {
+double foot_skate(const JointSequence& m, const GroundHeight& ground) {
     double sum = 0;
     int n = 0;
     for (int j : {smpl22::left_ankle, smpl22::left_foot, smpl22::right_ankle, smpl22::right_foot})
         for (int f = 0; f + 1 < m.num_frames; ++f) {
             const Eigen::Vector3d& a = m.at(f, j);
             const Eigen::Vector3d& b = m.at(f + 1, j);
-            if (std::max(a.y(), b.y()) > kContactHeight) continue;
+            if (std::max(a.y() - ground(a), b.y() - ground(b)) > kContactHeight) continue;
             sum += std::hypot(b.x() - a.x(), b.z() - a.z()) * m.fps;
             ++n;
         }
@@ -42,14 +42,18 @@ double foot_skate(const JointSequence& m) {
 }  // namespace
 
 MotionQuality score_motion(const JointSequence& m) {
+    return score_motion_on_ground(m, [](const Eigen::Vector3d&) { return 0.0; });
+}
+
+MotionQuality score_motion_on_ground(const JointSequence& m, const GroundHeight& ground) {
     if (m.num_joints != smpl22::kNumJoints || m.num_frames < 3) throw Error("motion quality", "joints", "22 joints and at least 3 frames");
     MotionQuality q;
-    q.foot_skate_m_s = foot_skate(m);
+    q.foot_skate_m_s = foot_skate(m, ground);
     std::vector<double> lowest(static_cast<size_t>(m.num_frames));
     for (int f = 0; f < m.num_frames; ++f) {
-        double low = m.at(f, 0).y();
+        double low = m.at(f, 0).y() - ground(m.at(f, 0));
         for (int j = 0; j < m.num_joints; ++j) {
-            low = std::min(low, m.at(f, j).y());
+            low = std::min(low, m.at(f, j).y() - ground(m.at(f, j)));
             if (f + 1 < m.num_frames) q.max_speed_m_s = std::max(q.max_speed_m_s, (m.at(f + 1, j) - m.at(f, j)).norm() * m.fps);
             if (f < 1 || f + 1 >= m.num_frames) continue;
             const double acc = (m.at(f + 1, j) - 2 * m.at(f, j) + m.at(f - 1, j)).norm() * m.fps * m.fps;

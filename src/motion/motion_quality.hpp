@@ -23,7 +23,9 @@
 // (138), so a running threshold would be stricter, not looser: generated jogging that skates 1.5 m/s skates
 // more than captured running does.
 #pragma once
+#include <Eigen/Core>
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -51,6 +53,12 @@ MotionQualityThresholds default_quality_thresholds();
 
 // SMPL-22 joints, at least 3 frames.
 MotionQuality score_motion(const JointSequence& joints);
+
+// The ground's height (m) under a point (its y ignored), for motion over uneven ground: a staircase.
+using GroundHeight = std::function<double(const Eigen::Vector3d&)>;
+// As score_motion, with every height (foot contact, penetration, hover) taken above the ground under the joint
+// instead of above y = 0; the speed and acceleration scores do not depend on the ground.
+MotionQuality score_motion_on_ground(const JointSequence& joints, const GroundHeight& ground);
 
 // Shifts the whole motion vertically so its lowest joint over all frames is at y = 0: where HumanML3D's processing
 // puts the floor of a captured clip. A generated motion's floor can sit 0.2-0.4 m too high (lying motions sink

@@ -1,0 +1,66 @@
+#include "motion/foot_contacts.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "motion/skeleton.hpp"
+
+namespace t2imu {
+
+namespace {
+
+// Horizontal speed of joint j at frame f (m/s): central difference, one-sided at the ends.
+double horizontal_speed(const JointSequence& m, int f, int j) {
+    const int a = std::max(0, f - 1), b = std::min(m.num_frames - 1, f + 1);
+    const Eigen::Vector3d d = m.at(b, j) - m.at(a, j);
+    return std::hypot(d.x(), d.z()) * m.fps / (b - a);
+}
+
+bool low_and_slow(const JointSequence& m, int f, int j, double lowest) {
+    return m.at(f, j).y() <= lowest + kStanceHeight && horizontal_speed(m, f, j) < kStanceSpeed;
+}
+
+double lowest_height(const JointSequence& m, int j) {
+    double low = m.at(0, j).y();
+    for (int f = 1; f < m.num_frames; ++f) low = std::min(low, m.at(f, j).y());
+    return low;
+}
+
+void require_walk(const JointSequence& m) {
+    if (m.num_joints != smpl22::kNumJoints) throw Error("foot contacts", "joints", "22 SMPL joints", std::to_string(m.num_joints));
+    if (m.num_frames < 3) throw Error("foot contacts", "frames", "at least 3", std::to_string(m.num_frames));
+}
+
+}  // namespace
+
+std::vector<bool> stance_frames(const JointSequence& m, Foot foot) {
+    require_walk(m);
+    const std::array<int, 2>& joints = foot == Foot::left ? smpl22::kFootLeft : smpl22::kFootRight;
+    const double low_ankle = lowest_height(m, joints[0]), low_toe = lowest_height(m, joints[1]);
+    std::vector<bool> stance(static_cast<size_t>(m.num_frames));
+    for (int f = 0; f < m.num_frames; ++f)
+        stance[static_cast<size_t>(f)] = low_and_slow(m, f, joints[0], low_ankle) || low_and_slow(m, f, joints[1], low_toe);
+    for (size_t f = 1; f + 1 < stance.size(); ++f)
+        if (!stance[f] && stance[f - 1] && stance[f + 1]) stance[f] = true;
+    return stance;
+}
+
+std::vector<StancePhase> detect_stance_phases(const JointSequence& m) {
+    std::vector<StancePhase> phases;
+    for (Foot foot : {Foot::left, Foot::right}) {
+        const std::vector<bool> stance = stance_frames(m, foot);
+        for (int f = 0; f < m.num_frames;) {
+            if (!stance[static_cast<size_t>(f)]) { ++f; continue; }
+            int last = f;
+            while (last + 1 < m.num_frames && stance[static_cast<size_t>(last + 1)]) ++last;
+            if (last - f + 1 >= kMinStanceFrames) phases.push_back({foot, f, last});
+            f = last + 1;
+        }
+    }
+    std::stable_sort(phases.begin(), phases.end(),
+                     [](const StancePhase& a, const StancePhase& b) { return a.first_frame < b.first_frame; });
+    return phases;
+}
+
+}  // namespace t2imu

@@ -1,0 +1,38 @@
+// Stance phases of each foot in a walk (SMPL-22 joints, metres, Y up): the frames when a foot carries weight,
+// which motion editing pins to the ground (stair_gait places each one on a tread).
+//
+// A foot is in stance at a frame when its ankle or its toe joint is both low and slow: within kStanceHeight of
+// that joint's lowest height in the clip, and moving horizontally slower than kStanceSpeed (central difference).
+// Either joint will do because a planted foot rolls: the heel is down and the toe still falling after heel
+// strike, the toe down and the heel rising before toe-off. In level walking a swinging foot moves at 2-5 m/s
+// and clears the floor by 1-2 cm at the toe and several cm at the ankle (Winter 1991, The Biomechanics and
+// Motor Control of Human Gait), so the two thresholds leave a wide margin on both sides. Runs of stance shorter
+// than kMinStanceFrames are dropped (a swinging foot passing slowly over its lowest point) and gaps of one
+// frame inside a stance are closed (capture jitter). HumanML3D's own foot-contact channels (humanml3d.hpp)
+// use displacement alone with a looser threshold (0.9 m/s at 20 fps); they label contacts, not placements.
+#pragma once
+#include <vector>
+
+#include "motion/joint_sequence.hpp"
+
+namespace t2imu {
+
+constexpr double kStanceHeight = 0.05;  // m above the joint's lowest height in the clip
+constexpr double kStanceSpeed = 0.5;    // m/s, horizontal
+constexpr int kMinStanceFrames = 3;     // 0.15 s at 20 fps
+
+enum class Foot : int { left = 0, right = 1 };
+
+struct StancePhase {
+    Foot foot;
+    int first_frame, last_frame;  // inclusive
+};
+
+// Per foot, a flag per frame: in stance or not.
+std::vector<bool> stance_frames(const JointSequence& walk, Foot foot);
+
+// Every stance phase of both feet, ordered by first frame (then left before right). SMPL-22 joints, at least
+// 3 frames; throws Error otherwise.
+std::vector<StancePhase> detect_stance_phases(const JointSequence& walk);
+
+}  // namespace t2imu
