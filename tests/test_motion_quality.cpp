@@ -104,6 +104,23 @@ TEST(MotionQuality, PlacingOnTheFloorTurnsAUniformSinkIntoNothingAndAPartialOneI
     EXPECT_NEAR(q.hover_m, 0.4, 1e-12);
 }
 
+TEST(MotionQuality, OnRaisedGroundHeightsCountFromTheGroundUnderEachJoint) {
+    // The standing figure on a 0.5 m platform, gliding along +X at 2 m/s: above the floor it only hovers; on
+    // the platform as its ground it skates at 2 m/s and does not hover. Half a metre lower is 0.5 m through it.
+    JointSequence m = standing(40);
+    for (int f = 0; f < m.num_frames; ++f)
+        for (int j = 0; j < m.num_joints; ++j) m.at(f, j) += Eigen::Vector3d(2.0 * f / m.fps, 0.5, 0.0);
+    const GroundHeight platform = [](const Eigen::Vector3d&) { return 0.5; };
+    EXPECT_NEAR(score_motion(m).hover_m, 0.5, 1e-12);
+    const MotionQuality q = score_motion_on_ground(m, platform);
+    EXPECT_NEAR(q.foot_skate_m_s, 2.0, 1e-9);
+    EXPECT_NEAR(q.hover_m, 0.0, 1e-12);
+    EXPECT_NEAR(q.max_speed_m_s, score_motion(m).max_speed_m_s, 1e-12);
+    for (int f = 0; f < m.num_frames; ++f)
+        for (int j = 0; j < m.num_joints; ++j) m.at(f, j).y() -= 0.5;
+    EXPECT_NEAR(score_motion_on_ground(m, platform).penetration_m, 0.5, 1e-12);
+}
+
 TEST(MotionQuality, RefusesTooFewFrames) { EXPECT_THROW(score_motion(standing(2)), Error); }
 
 }  // namespace
