@@ -56,7 +56,8 @@ TEST(FootContacts, ALowSlowMomentShorterThanTheMinimumIsNoStance) {
     EXPECT_TRUE(left[15] && left[16] && !left[14] && !left[17]);
     const std::vector<StancePhase> phases = detect_stance_phases(m);
     for (const StancePhase& p : phases) {
-        if (p.foot == Foot::left) EXPECT_TRUE(p.last_frame <= 10 || p.first_frame >= 20) << p.first_frame << "-" << p.last_frame;
+        if (p.foot != Foot::left) continue;
+        EXPECT_TRUE(p.last_frame <= 10 || p.first_frame >= 20) << p.first_frame << "-" << p.last_frame;
     }
 }
 
