@@ -142,7 +142,7 @@ TEST(SitToStand, ACapturedIdleStandSitsDown) {
     if (dir.empty()) GTEST_SKIP() << "shared data not found: mocap/reactidle_bvh.tar.xz";
     JointSequence stand;
     try {
-        stand = import_motion(dir + "/reactidle_bvh/000_genuine.bvh");
+        stand = import_motion(dir + "/reactidle_bvh/008_acted.bvh");
     } catch (const Error& e) {
         // The ReActIdle skeleton (reactidle_rigify) is new to the importer; without it there is nothing to test.
         if (std::string(e.what()).find("known skeleton flavour") == std::string::npos) throw;
@@ -159,7 +159,13 @@ TEST(SitToStand, ACapturedIdleStandSitsDown) {
                 "hover %.3f, max acc %.0f, pelvis acc %.1f\n",
                 m.num_frames, m.at(90, pelvis).y(), seated_knee * 180 / kPi, ankle_move, q.foot_skate_m_s, q.penetration_m, q.hover_m,
                 q.max_acc_m_s2, q.pelvis_acc_m_s2);
-    EXPECT_LT(max_bone_length_error(m, bone_lengths(stand, 0)), 1e-6);
+    // ReActIdle's joints carry position channels, so its own bones vary a little over time; the derived clip
+    // varies no more (thighs and shanks, re-solved, not at all).
+    JointSequence used = stand;
+    used.num_frames = m.num_frames;
+    used.positions.resize(m.positions.size());
+    EXPECT_LE(max_bone_length_error(m, bone_lengths(stand, 0)), max_bone_length_error(used, bone_lengths(stand, 0)) + 1e-6);
+    EXPECT_LT(ankle_move, 0.01);
     EXPECT_NEAR(m.at(90, pelvis).y(), 0.55, 1e-9);
     EXPECT_TRUE(quality_failures(q, default_quality_thresholds()).empty());
 }
