@@ -196,6 +196,15 @@ TEST(StairGait, RefusesAMotionThatDoesNotWalk) {
     EXPECT_THROW(walk_to_stairs(still, stairs(true)), Error);
 }
 
+TEST(StairGait, RefusesAWalkBackward) {
+    // The walk played in reverse travels along -Z facing +Z.
+    const JointSequence walk = procedural_walk(6.0);
+    JointSequence back = walk;
+    for (int f = 0; f < walk.num_frames; ++f)
+        for (int j = 0; j < kNumJoints; ++j) back.at(f, j) = walk.at(walk.num_frames - 1 - f, j);
+    EXPECT_THROW(walk_to_stairs(back, stairs(true)), Error);
+}
+
 TEST(StairGait, ACapturedWalkClimbsAndDescends) {
     const std::string dir = test::unpacked_shared_archive("mocap/bandai_bvh_native.tar.xz");
     if (dir.empty()) GTEST_SKIP() << "shared data not found: mocap/bandai_bvh_native.tar.xz";

@@ -1,5 +1,6 @@
 #include "motion/stair_gait.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 
@@ -147,6 +148,17 @@ std::pair<double, double> progress_map(const std::vector<Hold>& holds) {
     return {my - c * mx, c};
 }
 
+// The body's mean facing over the walk (horizontal unit): across the hips and shoulders, turned to the front.
+Vector3d mean_facing(const JointSequence& w) {
+    using namespace smpl22;
+    Vector3d sum = Vector3d::Zero();
+    for (int f = 0; f < w.num_frames; ++f) {
+        const Vector3d across = (w.at(f, left_hip) - w.at(f, right_hip)) + (w.at(f, left_shoulder) - w.at(f, right_shoulder));
+        sum += horizontal_direction(across.cross(Vector3d::UnitY()));
+    }
+    return horizontal_direction(sum);
+}
+
 JointSequence frame_range(const JointSequence& m, int first, int last) {
     JointSequence out(last - first + 1, m.num_joints, m.fps);
     std::copy(m.positions.begin() + static_cast<std::ptrdiff_t>(first) * m.num_joints,
@@ -197,6 +209,8 @@ StairMotion derive_stairs(const JointSequence& walk, const StairOptions& o) {
         throw Error("walk_to_stairs", "walk", "a walk travelling at least 1.5 m", std::to_string(std::hypot(travel.x(), travel.z())) + " m");
     stairs.origin = Vector3d(w.at(0, smpl22::pelvis).x(), 0, w.at(0, smpl22::pelvis).z());
     stairs.direction = horizontal_direction(travel);
+    if (mean_facing(w).dot(stairs.direction) < 0.5)  // more than 60 deg off: sideways or backward
+        throw Error("walk_to_stairs", "walk", "a walk facing the way it travels (not sideways or backward)");
     stairs.rise_m = o.rise_m, stairs.going_m = o.going_m, stairs.ascend = o.ascend;
     const std::vector<Hold> holds = place_footholds(w, stairs);
 

@@ -22,13 +22,12 @@
 //   - Knee flexion peaks at about 90-100 deg in ascent swing and 85-95 deg in descent, against about 60-70 deg in
 //     level walking; hip flexion peaks at about 60-65 deg in ascent (McFadyen & Winter 1988, J Biomech 21:733;
 //     Protopapadaki et al. 2007, Clin Biomech 22:203). Those follow here from the geometry, not from targets.
-//   - Cadence is lower than on the level, about 85-100 steps/min ascending and slightly faster descending
-//     against 100-120 level (Riener, Rabuffetti & Frigo 2002, Gait Posture 15:32; Protopapadaki et al. 2007):
-//     cadence_factor 0.80 ascent, 0.85 descent by default.
-//   - The trunk leans forward more than on the level in ascent (about 5-10 deg more), less so in descent
-//     (Riener et al. 2002; McFadyen & Winter 1988): 0.12 rad ascent, 0.05 rad descent by default.
-//   - Toe clearance over the nosing is a few centimetres (about 2-5 cm; Hamel, Okita, Higginson & Cavanagh 2005,
-//     Gait Posture 21:135): 0.04 m by default.
+//   - Cadence is lower than on the level, more so ascending than descending (Riener, Rabuffetti & Frigo 2002,
+//     Gait Posture 15:32; Protopapadaki et al. 2007): cadence_factor 0.80 ascent, 0.85 descent by default.
+//   - The trunk leans further forward than on the level when ascending, less so descending (McFadyen & Winter
+//     1988; Riener et al. 2002): trunk_lean_rad 0.12 (7 deg) ascent, 0.05 descent by default.
+//   - The swinging foot clears the nosing by a few centimetres (Hamel, Okita, Higginson & Cavanagh 2005, on
+//     stair descent): swing_clearance_m 0.04 by default.
 //   - Building codes bound the geometry: riser 102-178 mm and tread at least 279 mm in public buildings,
 //     riser at most 196 mm and tread at least 254 mm in homes (International Building Code and International
 //     Residential Code, 2018); UK Approved Document K allows rise 150-220 mm, going 220-300 mm for private
@@ -90,8 +89,9 @@ struct StairMotion {
     std::vector<StairFoothold> footholds;  // in time order
 };
 
-// Refuses (Error) a motion that is not 22 joints, that travels less than 1.5 m, has fewer than four stance
-// phases, or whose footholds do not advance along the walk in time order (a turn or a walk backward).
+// Refuses (Error) a motion that is not 22 joints, that travels less than 1.5 m, faces more than 60 deg away
+// from the way it travels (a side step, walking backward), has fewer than four stance phases, or whose
+// footholds do not advance along the walk in time order (a turn).
 StairMotion derive_stairs(const JointSequence& walk, const StairOptions& o);
 JointSequence walk_to_stairs(const JointSequence& walk, const StairOptions& o);
 
