@@ -149,11 +149,13 @@ std::vector<double> upper_envelope(const std::vector<double>& x, int radius) {
     return out;
 }
 
-std::array<double, 2> leg_reach(const JointSequence& m) {
+std::array<double, 2> reach_limits(const JointSequence& source, const BoneLengths& lengths) {
     std::array<double, 2> reach{0, 0};
-    for (int f = 0; f < m.num_frames; ++f)
+    for (int f = 0; f < source.num_frames; ++f)
         for (size_t leg = 0; leg < 2; ++leg)
-            reach[leg] = std::max(reach[leg], (m.at(f, kLegs[leg].hip) - m.at(f, kLegs[leg].ankle)).norm());
+            reach[leg] = std::max(reach[leg], (source.at(f, kLegs[leg].hip) - source.at(f, kLegs[leg].ankle)).norm());
+    for (size_t leg = 0; leg < 2; ++leg)
+        reach[leg] = std::min(reach[leg], 0.999 * (lengths[static_cast<size_t>(kLegs[leg].knee)] + lengths[static_cast<size_t>(kLegs[leg].ankle)]));
     return reach;
 }
 

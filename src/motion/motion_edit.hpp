@@ -55,8 +55,9 @@ std::vector<double> upper_envelope(const std::vector<double>& x, int radius);
 // chair's geometry would otherwise stretch a leg past what the source did. Returns the largest drop (m).
 double lower_to_reach(JointSequence& m, const std::array<double, 2>& reach_m);
 
-// Largest hip-to-ankle distance of each leg over the motion (m).
-std::array<double, 2> leg_reach(const JointSequence& m);
+// Per leg, the farthest the source's hip gets from its ankle (m), capped at 99.9% of thigh + shank (a knee
+// fully straight has no side to bend to): what lower_to_reach should keep a derived motion's legs within.
+std::array<double, 2> reach_limits(const JointSequence& source, const BoneLengths& lengths);
 
 // Places both knees of every frame of `m` by two-bone IK from its hips to its ankles with the thigh and shank
 // lengths of `lengths`, bending toward the knee of `source` (same frame count) carried along with the hip and

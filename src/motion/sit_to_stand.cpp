@@ -118,10 +118,7 @@ JointSequence stand_sit_stand(const JointSequence& standing, const ChairOptions&
         }
         flex_trunk(m, f, forward, p.trunk);
     }
-    std::array<double, 2> reach = leg_reach(source);
-    for (size_t k = 0; k < 2; ++k)
-        reach[k] = std::min(reach[k], 0.999 * (lengths[static_cast<size_t>(kLegs[k].knee)] + lengths[static_cast<size_t>(kLegs[k].ankle)]));
-    lower_to_reach(m, reach);
+    lower_to_reach(m, reach_limits(source, lengths));
     place_knees(m, source, forward, lengths);
     return m;
 }

@@ -159,6 +159,29 @@ Vector3d mean_facing(const JointSequence& w) {
     return horizontal_direction(sum);
 }
 
+// The staircase along the walk's travel from its first pelvis position; steps and start come with the footholds.
+Staircase flight_along(const JointSequence& w, const StairOptions& o) {
+    const Vector3d travel = w.at(w.num_frames - 1, smpl22::pelvis) - w.at(0, smpl22::pelvis);
+    if (std::hypot(travel.x(), travel.z()) < kMinTravel)
+        throw Error("walk_to_stairs", "walk", "a walk travelling at least 1.5 m", std::to_string(std::hypot(travel.x(), travel.z())) + " m");
+    Staircase stairs;
+    stairs.origin = Vector3d(w.at(0, smpl22::pelvis).x(), 0, w.at(0, smpl22::pelvis).z());
+    stairs.direction = horizontal_direction(travel);
+    if (mean_facing(w).dot(stairs.direction) < 0.5)  // more than 60 deg off: sideways or backward
+        throw Error("walk_to_stairs", "walk", "a walk facing the way it travels (not sideways or backward)");
+    stairs.rise_m = o.rise_m, stairs.going_m = o.going_m, stairs.ascend = o.ascend;
+    return stairs;
+}
+
+// The body's rise per frame: the mean of the two feet's foothold heights, smoothed over 0.1 s (sigma 2 frames)
+// so that it climbs through each step instead of jumping when a foot lands.
+TimeSeries body_heights(const std::array<FootPath, 2>& feet) {
+    const Eigen::Index n = static_cast<Eigen::Index>(feet[0].height.size());
+    TimeSeries h(n, 1);
+    for (Eigen::Index f = 0; f < n; ++f) h(f, 0) = 0.5 * (feet[0].height[static_cast<size_t>(f)] + feet[1].height[static_cast<size_t>(f)]);
+    return gaussian_filter1d_nearest(h, 2.0);
+}
+
 JointSequence frame_range(const JointSequence& m, int first, int last) {
     JointSequence out(last - first + 1, m.num_joints, m.fps);
     std::copy(m.positions.begin() + static_cast<std::ptrdiff_t>(first) * m.num_joints,
@@ -203,15 +226,7 @@ StairMotion derive_stairs(const JointSequence& walk, const StairOptions& o) {
     const JointSequence w = retime(walk, o.cadence_factor);
 
     StairMotion out;
-    Staircase& stairs = out.stairs;
-    const Vector3d travel = w.at(w.num_frames - 1, smpl22::pelvis) - w.at(0, smpl22::pelvis);
-    if (std::hypot(travel.x(), travel.z()) < kMinTravel)
-        throw Error("walk_to_stairs", "walk", "a walk travelling at least 1.5 m", std::to_string(std::hypot(travel.x(), travel.z())) + " m");
-    stairs.origin = Vector3d(w.at(0, smpl22::pelvis).x(), 0, w.at(0, smpl22::pelvis).z());
-    stairs.direction = horizontal_direction(travel);
-    if (mean_facing(w).dot(stairs.direction) < 0.5)  // more than 60 deg off: sideways or backward
-        throw Error("walk_to_stairs", "walk", "a walk facing the way it travels (not sideways or backward)");
-    stairs.rise_m = o.rise_m, stairs.going_m = o.going_m, stairs.ascend = o.ascend;
+    Staircase& stairs = out.stairs = flight_along(w, o);
     const std::vector<Hold> holds = place_footholds(w, stairs);
 
     const std::array<FootPath, 2> feet = {plan_foot(w, stairs, holds, Foot::left, o.swing_clearance_m),
@@ -219,10 +234,7 @@ StairMotion derive_stairs(const JointSequence& walk, const StairOptions& o) {
     const auto [first, last] = covered_frames(holds);
     if (last - first < 2) throw Error("walk_to_stairs", "walk", "both feet stepping for at least 3 frames");
     const auto [offset, scale] = progress_map(holds);
-    TimeSeries body_height(w.num_frames, 1);
-    for (int f = 0; f < w.num_frames; ++f)
-        body_height(f, 0) = 0.5 * (feet[0].height[static_cast<size_t>(f)] + feet[1].height[static_cast<size_t>(f)]);
-    body_height = gaussian_filter1d_nearest(body_height, 2.0);  // 0.1 s: the body rises through the step
+    const TimeSeries body_height = body_heights(feet);
 
     const JointSequence source = frame_range(w, first, last);
     JointSequence& m = out.motion = source;
@@ -240,10 +252,7 @@ StairMotion derive_stairs(const JointSequence& walk, const StairOptions& o) {
         }
         flex_trunk(m, g, stairs.direction, o.trunk_lean_rad);
     }
-    std::array<double, 2> reach = leg_reach(source);
-    for (size_t k = 0; k < 2; ++k)
-        reach[k] = std::min(reach[k], 0.999 * (lengths[static_cast<size_t>(kLegs[k].knee)] + lengths[static_cast<size_t>(kLegs[k].ankle)]));
-    lower_to_reach(m, reach);
+    lower_to_reach(m, reach_limits(source, lengths));
     place_knees(m, source, stairs.direction, lengths);
 
     for (const Hold& h : holds) {
