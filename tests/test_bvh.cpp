@@ -99,3 +99,17 @@ TEST(Bvh, MalformedFilesAreRefusedWithTheLine) {
         }
     }
 }
+
+TEST(Bvh, PositionChannelsReplaceAddToOrOnlyMoveTheRootAsTheExporterMeant) {
+    // Root at OFFSET (0, 1, 0) with channels (0.1, 0, 0); its child at OFFSET (0, 0.5, 0) with channels
+    // (0, 0.52, 0) (a child's channels repeating its OFFSET up to a 2 cm drift, as ReActIdle's thighs).
+    const std::string text =
+        "HIERARCHY\nROOT r\n{\n OFFSET 0 1 0\n CHANNELS 3 Xposition Yposition Zposition\n JOINT c\n {\n  OFFSET 0 0.5 0\n"
+        "  CHANNELS 3 Xposition Yposition Zposition\n  End Site\n  {\n   OFFSET 0 0.1 0\n  }\n }\n}\n"
+        "MOTION\nFrames: 1\nFrame Time: 0.05\n0.1 0 0 0 0.52 0\n";
+    const BvhMotion m = parse_bvh(text, "channels.bvh");
+    auto child = [&](PositionChannels c) { return bvh_forward_kinematics(m, bvh_pose(m, 0, c))[1]; };
+    EXPECT_LT((child(PositionChannels::replace_offset) - Eigen::Vector3d(0.1, 0.52, 0)).norm(), 1e-12);
+    EXPECT_LT((child(PositionChannels::add_to_offset) - Eigen::Vector3d(0.1, 2.02, 0)).norm(), 1e-12);
+    EXPECT_LT((child(PositionChannels::root_only) - Eigen::Vector3d(0.1, 1.5, 0)).norm(), 1e-12);
+}

@@ -70,6 +70,7 @@ const Archive kArchives[] = {
     {"mocap/cmu_daz_bvh_native.tar.xz", "native", ".bvh"},
     {"mocap/hdm05_amc_native.tar.xz", "hdm05_amc", ".amc"},
     {"mocap/bandai_bvh_native.tar.xz", "bandai_bvh", ".bvh"},
+    {"mocap/reactidle_bvh.tar.xz", "reactidle_bvh", ".bvh"},
 };
 
 // Clips whose capture walks or runs forward, by file name.
@@ -124,7 +125,7 @@ TEST(MocapImport, EveryFileImportsPlausibly) {
             }
         }
     }
-    EXPECT_EQ(files, 99 + 41 + 5 + 287 + 666);
+    EXPECT_EQ(files, 99 + 41 + 5 + 287 + 666 + 22);
     EXPECT_EQ(forward_ok, forward_clips) << "clips walking or running forward must move along the body's forward";
     std::printf("[ mocap    ] %d files; bone length deviation max %.2e m (%s), neck->head %.3f m; standing height %.3f (%s) .. %.3f m (%s); "
                 "lowest foot per clip %.3f .. %.3f m; max joint step %.3f m/frame; %d/%d forward clips move forward\n",

@@ -172,7 +172,7 @@ BvhMotion parse_bvh(const std::string& text, const std::string& source) {
 
 BvhMotion read_bvh(const std::string& path) { return parse_bvh(read_file_text(path), path); }
 
-BvhPose bvh_pose(const BvhMotion& m, int frame, bool positions_add_to_offset) {
+BvhPose bvh_pose(const BvhMotion& m, int frame, PositionChannels positions) {
     BvhPose p;
     p.rotation.assign(m.joints.size(), Quat::Identity());
     p.translation.resize(m.joints.size());
@@ -191,7 +191,10 @@ BvhPose bvh_pose(const BvhMotion& m, int frame, bool positions_add_to_offset) {
                 default: p.rotation[j] = p.rotation[j] * axis_rotation(joint.channels[c], x);
             }
         }
-        if (has_position) p.translation[j] = positions_add_to_offset ? joint.offset + pos : pos;
+        const bool root_only = positions == PositionChannels::root_only;
+        if (!has_position || (root_only && joint.parent >= 0)) continue;
+        const bool adds = positions == PositionChannels::add_to_offset || root_only;
+        p.translation[j] = adds ? joint.offset + pos : pos;
     }
     return p;
 }

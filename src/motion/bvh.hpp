@@ -44,8 +44,15 @@ BvhMotion read_bvh(const std::string& path);
 // Depth-first, whatever the order of `joints`; 6 decimals, LF line ends.
 std::string format_bvh(const BvhMotion& motion);
 
-// positions_add_to_offset: position channels are added to the joint's OFFSET rather than replacing it.
-BvhPose bvh_pose(const BvhMotion& motion, int frame, bool positions_add_to_offset = false);
+// How a joint's position channels combine with its OFFSET. Exporters differ and the file does not say:
+//   replace_offset     the channels are the joint's whole translation from its parent (most exporters)
+//   add_to_offset      the channels are a displacement added to OFFSET (iClone)
+//   root_only          the root's channels add to its OFFSET; every other joint keeps its OFFSET (ReActIdle's
+//                      Blender/Rigify export: non-root channels equal OFFSET in every frame but the thighs',
+//                      which drift by 1-2 cm, a hip joint sliding in the pelvis that no rigid skeleton has; the
+//                      root's channels are centimetre-scale sway while its OFFSET holds the pelvis height)
+enum class PositionChannels { replace_offset, add_to_offset, root_only };
+BvhPose bvh_pose(const BvhMotion& motion, int frame, PositionChannels positions = PositionChannels::replace_offset);
 // World positions of every joint (End Sites included), file units and axes.
 std::vector<Eigen::Vector3d> bvh_forward_kinematics(const BvhMotion& motion, const BvhPose& pose);
 // Interpolates two poses: slerp of rotations, linear translations; a in [0, 1].

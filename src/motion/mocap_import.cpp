@@ -54,7 +54,7 @@ JointSequence import_bvh(const std::string& path, const ImportOptions& options) 
     const SkeletonMap& map = find_skeleton_map(joint_names(m), path);
     const int first = map.zero_root_first_frame_is_tpose && m.num_frames > 1 && root_rotation_is_zero(m, 0) ? 1 : 0;
     std::vector<BvhPose> poses;
-    for (int f = first; f < m.num_frames; ++f) poses.push_back(bvh_pose(m, f, map.positions_add_to_offset));
+    for (int f = first; f < m.num_frames; ++f) poses.push_back(bvh_pose(m, f, map.positions));
     return smpl_joints_from_poses(m, map, map.metres_per_unit, poses, m.frame_time, options.fps);
 }
 

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "motion/bvh.hpp"
+
 namespace t2imu {
 
 struct JointSource {
@@ -16,10 +18,9 @@ struct JointSource {
 };
 
 struct SkeletonMap {
-    std::string flavour;                 // "cgspeed_daz", "iclone_cc_base", "bandai_namco", "hdm05_asf_amc"
+    std::string flavour;                 // "cgspeed_daz", "iclone_cc_base", "bandai_namco", "hdm05_asf_amc", "reactidle_rigify"
     double metres_per_unit;              // the flavour's length unit
-    // Position channels on a joint add to its OFFSET (iClone) instead of replacing it (most exporters).
-    bool positions_add_to_offset = false;
+    PositionChannels positions = PositionChannels::replace_offset;  // see bvh.hpp
     // The converter prepended a T-pose frame: the first frame has a root rotation of exactly (0, 0, 0)
     // (cgspeed's CMU conversions; two of the 20 fps files still carry such a frame, with the root far below the
     // floor).
