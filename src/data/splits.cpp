@@ -14,20 +14,39 @@ uint64_t fnv1a64(const std::string& s) {
     return h;
 }
 
+namespace {
+
+// MurmurHash3's 64-bit finaliser: FNV-1a of keys that differ only in their last characters ("reactidle_000",
+// "reactidle_001") differ little in their high bits, so ordered by the raw hash they sit side by side and are
+// dealt into one split together.
+uint64_t mix64(uint64_t h) {
+    h ^= h >> 33;
+    h *= 0xff51afd7ed558ccdull;
+    h ^= h >> 33;
+    h *= 0xc4ceb9fe1a85ec53ull;
+    return h ^ (h >> 33);
+}
+
+std::string source_of(const std::string& key) { return key.substr(0, key.find('/')); }
+
+}  // namespace
+
 std::map<std::string, Split> assign_splits(const std::map<std::string, int>& clips_per_key) {
-    std::vector<std::pair<uint64_t, std::string>> order;
-    long total = 0;
+    std::map<std::string, std::vector<std::pair<uint64_t, std::string>>> order;  // per source
+    std::map<std::string, long> total;
     for (const auto& [key, n] : clips_per_key) {
-        order.push_back({fnv1a64(key), key});
-        total += n;
+        order[source_of(key)].push_back({mix64(fnv1a64(key)), key});
+        total[source_of(key)] += n;
     }
-    std::sort(order.begin(), order.end());
     std::map<std::string, Split> out;
-    long dealt = 0;
-    for (const auto& [hash, key] : order) {
-        const double before = total ? static_cast<double>(dealt) / static_cast<double>(total) : 0.0;
-        out[key] = before < 0.80 ? Split::train : before < 0.85 ? Split::val : Split::test;
-        dealt += clips_per_key.at(key);
+    for (auto& [source, keys] : order) {
+        std::sort(keys.begin(), keys.end());
+        long dealt = 0;
+        for (const auto& [hash, key] : keys) {
+            const double before = total[source] ? static_cast<double>(dealt) / static_cast<double>(total[source]) : 0.0;
+            out[key] = before < 0.80 ? Split::train : before < 0.85 ? Split::val : Split::test;
+            dealt += clips_per_key.at(key);
+        }
     }
     return out;
 }

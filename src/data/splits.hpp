@@ -1,7 +1,10 @@
 // Deterministic train/val/test assignment by source subject, so that no performer appears in two splits, with
-// HumanML3D's 80/5/15 proportions counted in clips. Keys (e.g. "CMU/07") are ordered by a stable 64-bit FNV-1a
-// hash of their text (not std::hash, which differs between platforms) and dealt out in that order: a key goes
-// to train while the clips dealt before it are under 80 % of all, then to val under 85 %, then to test.
+// HumanML3D's 80/5/15 proportions counted in clips within each source (the key's text before its first '/':
+// "CMU/07" -> CMU), so that every source, and with it every activity only one source holds (ReActIdle's
+// standing), is in the training split. Within a source the keys are ordered by a stable 64-bit hash of their
+// text (FNV-1a, then mixed; not std::hash, which differs between platforms) and dealt out in that order: a key
+// goes to train while the source's clips dealt before it are under 80 % of its clips, then to val under 85 %,
+// then to test.
 #pragma once
 #include <cstdint>
 #include <map>
