@@ -77,6 +77,10 @@ TEST(MotionDescriptors, SteadyClimbIsNotFlight) {
     EXPECT_NEAR(descriptor(d, "climb_rate_m_s"), 0.2, 1e-9);
     EXPECT_NEAR(descriptor(d, "root_vertical_speed_sd_m_s"), 0.0, 1e-9);
     EXPECT_EQ(descriptor(d, "airborne_fraction"), 0.0);
+    // Going down the same slope: the sign tells stairs down from up.
+    const MotionDescriptors down = describe_motion(rigid_motion(80, Eigen::Matrix3d::Identity(),
+                                                                [](double t) { return Eigen::Vector3d(0, 1.0 - 0.2 * t, 0.4 * t); }));
+    EXPECT_NEAR(descriptor(down, "climb_rate_m_s"), -0.2, 1e-9);
 }
 
 TEST(MotionDescriptors, JumpIsAirborneForItsFlightFrames) {
@@ -167,6 +171,15 @@ TEST(MotionActivity, PromptActivitiesMapOntoTheReferenceClasses) {
     EXPECT_EQ(reference_activity("walking", classes), "walking");
     EXPECT_EQ(reference_activity("stairs_up", classes), "");  // no stairs class: not checked
     EXPECT_EQ(reference_activity("falling", classes), "");
+    // With both stair directions as classes, SisFall's pooled class is checked against the nearer of the two.
+    const std::vector<std::string> with_stairs = {"stairs_down", "stairs_up", "walking"};
+    EXPECT_EQ(reference_activity("stairs_up_down", with_stairs), "stairs");
+    EXPECT_EQ(reference_activity("climbingdown", with_stairs), "stairs_down");
+    ActivityScores s;
+    s.best = "walking";
+    s.distance = {{"stairs_down", 2.0}, {"stairs_up", 4.0}, {"walking", 1.0}};
+    EXPECT_DOUBLE_EQ(s.agreement("stairs"), 0.5);
+    EXPECT_DOUBLE_EQ(s.agreement("stairs_up"), 0.25);
 }
 
 }  // namespace

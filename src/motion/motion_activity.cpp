@@ -6,13 +6,17 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "motion/activity_names.hpp"
 
 namespace t2imu {
 
 double ActivityScores::agreement(const std::string& expected) const {
-    const auto e = distance.find(expected), b = distance.find(best);
-    if (e == distance.end() || b == distance.end()) return 1.0;
-    return e->second > 0 ? b->second / e->second : 1.0;
+    const auto b = distance.find(best);
+    double d_expected = INFINITY;  // the nearest class showing `expected` ("stairs": either direction)
+    for (const auto& [c, d] : distance)
+        if (shows_activity(c, expected)) d_expected = std::min(d_expected, d);
+    if (b == distance.end() || std::isinf(d_expected)) return 1.0;
+    return d_expected > 0 ? b->second / d_expected : 1.0;
 }
 
 MotionActivityClassifier::MotionActivityClassifier(std::vector<ActivityExample> reference) : reference_(std::move(reference)) {
@@ -94,12 +98,10 @@ std::vector<std::vector<long>> MotionActivityClassifier::leave_one_subject_out(s
 }
 
 std::string reference_activity(const std::string& prompt_activity, const std::vector<std::string>& classes) {
-    static const std::map<std::string, std::string> aliases = {
-        {"jogging", "running"}, {"stairs_up", "stairs"}, {"stairs_down", "stairs"}, {"stairs_up_down", "stairs"},
-        {"sit_down_stand_up", "sitting"}, {"lie_down_get_up_bed", "lying"}};
-    const auto a = aliases.find(prompt_activity);
-    const std::string name = a == aliases.end() ? prompt_activity : a->second;
-    return std::find(classes.begin(), classes.end(), name) != classes.end() ? name : "";
+    const std::string name = canonical_activity(prompt_activity);
+    for (const std::string& c : classes)
+        if (shows_activity(c, name)) return name;
+    return "";
 }
 
 }  // namespace t2imu

@@ -28,7 +28,9 @@ struct ActivityExample {
 struct ActivityScores {
     std::string best;
     std::map<std::string, double> distance;  // d_c per class (standardised units)
-    double agreement(const std::string& expected) const;  // d_best / d_expected; 1 when `expected` is unknown
+    // d_best / d_expected, d_expected of the nearest class showing `expected` (activity_names.hpp's
+    // shows_activity); 1 when no class shows it.
+    double agreement(const std::string& expected) const;
 };
 
 class MotionActivityClassifier {
@@ -52,8 +54,8 @@ private:
     MotionDescriptors sd_{};  // per descriptor over the reference: distances are in these units
 };
 
-// The classifier's class for a prompt-set activity (jogging -> running, stairs_up/down -> stairs,
-// sit_down_stand_up -> sitting, lie_down_get_up_bed -> lying); "" when it has no class for it.
+// The canonical name (activity_names.hpp) of a prompt-set activity when the classifier has a class showing it
+// (jogging -> running; stairs_up_down -> stairs, shown by stairs_up or stairs_down); "" when it has none.
 std::string reference_activity(const std::string& prompt_activity, const std::vector<std::string>& classes);
 
 }  // namespace t2imu

@@ -106,7 +106,7 @@ MotionDescriptors describe_motion(const JointSequence& m) {
     const double feet = (mean_speed(m, smpl22::left_ankle) + mean_speed(m, smpl22::right_ankle)) / 2;
     const double wrists = (mean_speed(m, smpl22::left_wrist, smpl22::pelvis) + mean_speed(m, smpl22::right_wrist, smpl22::pelvis)) / 2;
     return {mean(pelvis), standard_deviation(pelvis), mean(head_above), mean(trunk), mean(thigh), mean(knee), mean(horizontal_speed),
-            standard_deviation(vertical_velocity), std::fabs(slope(lowest_foot, m.fps)), feet, wrists, airborne_fraction(lowest_foot, m.fps)};
+            standard_deviation(vertical_velocity), slope(lowest_foot, m.fps), feet, wrists, airborne_fraction(lowest_foot, m.fps)};
 }
 
 }  // namespace t2imu

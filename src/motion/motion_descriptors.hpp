@@ -12,7 +12,8 @@
 //   knee_flexion_rad           mean knee bend, both legs (0 = straight)
 //   root_speed_m_s             mean horizontal pelvis speed
 //   root_vertical_speed_sd_m_s standard deviation of the pelvis's vertical velocity (bounce)
-//   climb_rate_m_s             |slope| of a least-squares line through the lowest foot joint's height over time
+//   climb_rate_m_s             slope of a least-squares line through the lowest foot joint's height over time:
+//                              positive up stairs, negative down (stairs_up and stairs_down are classes)
 //   foot_speed_m_s             mean ankle speed
 //   wrist_speed_m_s            mean wrist speed relative to the pelvis
 //   airborne_fraction          share of frames whose lowest foot joint is more than kAirborneHeight above both
