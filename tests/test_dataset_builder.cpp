@@ -1,14 +1,19 @@
 // The builder on a few shared clips: layout, chunking, captions, mirroring, splits, Mean/Std.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <set>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include "core/atomic_file.hpp"
 #include "core/csv.hpp"
 #include "core/npy.hpp"
 #include "data/captions.hpp"
 #include "data/dataset_builder.hpp"
+#include "data/derived_clips.hpp"
 #include "motion/humanml3d.hpp"
 #include "motion/mocap_import.hpp"
 #include "motion/skeleton.hpp"
@@ -117,4 +122,61 @@ TEST(DatasetBuilder, LicenceFilterAndMissingFiles) {
     o.licences = {"HDM05"};  // none of these clips
     EXPECT_THROW(build_dataset(o), Error);
     EXPECT_FALSE(std::filesystem::exists(o.out_dir + ".partial-" + std::to_string(getpid())));
+}
+
+TEST(DatasetBuilder, DerivedClipsCarryTheirProvenanceCountApartAndCanBeLeftOut) {
+    // A forward walk (one staircase clip) and a 92 s idle recording (capped at 60 s of captured chunks; six
+    // sit-down/stand-up clips), with the shared manifest's tags and licences.
+    std::string manifest;
+    SHARED_OR_SKIP(manifest, "mocap/manifest.csv");
+    const std::string bandai = test::unpacked_shared_archive("mocap/bandai_bvh_native.tar.xz");
+    const std::string idle = test::unpacked_shared_archive("mocap/reactidle_bvh.tar.xz");
+    const std::string dir = test::scratch_dir("builder_derived");
+    const std::vector<std::string> files = {"bandai_bvh/dataset-2_walk_normal_001.bvh", "reactidle_bvh/000_genuine.bvh"};
+    const CsvTable shared = read_csv(manifest);
+    CsvTable m;
+    m.header = shared.header;
+    for (const auto& row : shared.rows)
+        if (std::find(files.begin(), files.end(), row[shared.column("file")]) != files.end()) m.rows.push_back(row);
+    ASSERT_EQ(m.rows.size(), 2u);
+    write_csv(dir + "/manifest.csv", m);
+    std::ofstream captions(dir + "/captions.csv");
+    captions << "file,start_frame,end_frame,caption\n";
+    for (const std::string& f : files) {
+        fs::create_directories(fs::path(dir + "/" + f).parent_path());
+        fs::copy_file((f[0] == 'b' ? bandai : idle) + "/" + f, dir + "/" + f);
+        captions << f << ",0,100000," << (f[0] == 'b' ? "a person walks forward" : "a person stands idle") << "\n";
+    }
+    captions.close();
+    BuildOptions o;
+    o.mocap_dir = dir;
+    o.out_dir = dir + "/set";
+    build_dataset(o);
+    const CsvTable clips = read_csv(o.out_dir + "/clips.csv");
+    std::map<std::string, int> per_source;
+    for (const auto& row : clips.rows) {
+        ++per_source[row[clips.column("source_dataset")] + "/" + row[clips.column("activity_tags")]];
+        if (row[clips.column("source_dataset")] != "edited") {
+            EXPECT_TRUE(row[clips.column("provenance")].empty());
+            continue;
+        }
+        const nlohmann::json p = nlohmann::json::parse(row[clips.column("provenance")]);
+        EXPECT_TRUE(p["derived_from"] == files[0] || p["derived_from"] == files[1]) << p;
+        EXPECT_TRUE(p.contains("parameters") && p.contains("seed") && p.contains("method")) << p;
+        for (const auto& source : m.rows)  // an edit is bound by its source clip's licence
+            if (source[m.column("file")] == p["derived_from"]) EXPECT_EQ(row[clips.column("licence")], source[m.column("licence")]);
+    }
+    EXPECT_EQ(per_source["ReActIdle/standing"], 6);  // 92 s in 10 chunks, 60 s of them kept
+    EXPECT_EQ(per_source["edited/sitting"], kSitsPerRecording);
+    std::set<std::string> stair_recordings;  // one flight, maybe cut into two chunks
+    for (const auto& row : clips.rows)
+        if (row[clips.column("activity_tags")].rfind("stairs", 0) == 0) stair_recordings.insert(row[clips.column("file")]);
+    EXPECT_EQ(stair_recordings.size(), 1u);
+    const nlohmann::json summary = nlohmann::json::parse(read_file_text(o.out_dir + "/summary.json"));
+    EXPECT_GT(summary["per_activity_tag"]["sitting"]["derived_minutes"].get<double>(), 0.5);
+    EXPECT_DOUBLE_EQ(summary["per_activity_tag"]["standing"]["derived_minutes"].get<double>(), 0.0);
+
+    o.derive = false;  // --no-derived
+    build_dataset(o);
+    for (const auto& row : read_csv(o.out_dir + "/clips.csv").rows) EXPECT_NE(row[clips.column("source_dataset")], "edited");
 }

@@ -19,6 +19,9 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_flag("--mirror", o.mirror, "add left-right mirrored copies (ids prefixed M, captions with left/right swapped)");
     cmd->add_option("--licences", licences, "keep only these, comma-separated: CMU, HDM05, BandaiNamco, KIT-ML (default: all)");
     cmd->add_option("--max-seconds", o.max_seconds, "cut longer clips into equal chunks no longer than this")->capture_default_str();
+    cmd->add_option("--max-seconds-per-file", o.max_seconds_per_file,
+                    "keep at most this much of one recording, as chunks spread over it (0 = all)")->capture_default_str();
+    cmd->add_flag("--no-derived{false}", o.derive, "leave out the clips derived from captured ones (stairs, sitting; see data/derived_clips.hpp)");
     cmd->add_flag("--strict", o.strict, "stop at the first clip that fails to import (default: skip and report it)");
     cmd->callback([] {
         std::stringstream in(licences);

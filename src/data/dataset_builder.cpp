@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <unistd.h>
 
 #include "core/atomic_file.hpp"
@@ -12,6 +13,7 @@
 #include "core/error.hpp"
 #include "core/npy.hpp"
 #include "data/captions.hpp"
+#include "data/derived_clips.hpp"
 #include "data/mean_std.hpp"
 #include "data/splits.hpp"
 #include "motion/humanml3d.hpp"
@@ -29,6 +31,7 @@ constexpr double kFps = 20.0;
 struct ClipSource {
     std::string file, subject, source_dataset, licence, tags;
     std::vector<std::pair<std::pair<int, int>, CaptionLine>> captions;  // [start, end) frames at 20 fps
+    nlohmann::json provenance;  // derived clips: source file, method, parameters, seed; null when captured
 };
 
 std::string field(const CsvTable& t, size_t row, const char* name) {
@@ -94,6 +97,14 @@ std::vector<std::pair<int, int>> chunks(int frames, int max_frames) {
     const int n = (frames + max_frames - 1) / max_frames;
     std::vector<std::pair<int, int>> out;
     for (int k = 0; k < n; ++k) out.push_back({k * frames / n, (k + 1) * frames / n});
+    return out;
+}
+
+// At most `keep` of the chunks, spread evenly over the recording so that what is kept samples all of it.
+std::vector<std::pair<int, int>> spread(const std::vector<std::pair<int, int>>& all, size_t keep) {
+    if (keep == 0 || all.size() <= keep) return all;
+    std::vector<std::pair<int, int>> out;
+    for (size_t k = 0; k < keep; ++k) out.push_back(all[(2 * k + 1) * all.size() / (2 * keep)]);
     return out;
 }
 
@@ -166,21 +177,104 @@ BuildSummary build_dataset(const BuildOptions& o) {
 
 namespace {
 
+struct TagTally {
+    int clips = 0;
+    double minutes = 0, captured_minutes = 0;
+};
+
+// What the build has written so far.
+struct Tally {
+    CsvTable clips_csv;
+    std::vector<Written> written;
+    std::map<std::string, TagTally> per_tag;  // by single tag ("jumping;standing" counts for both)
+    int next_id = 0;
+    Tally() {
+        clips_csv.header = {"id", "file", "source_dataset", "subject", "licence", "activity_tags", "start_frame", "end_frame",
+                            "frames", "mirrored", "provenance", "split"};  // "split" holds the split key until the deal
+    }
+};
+
+// A derived clip as a recording of its own: captions over the whole clip, the source's subject, split key and
+// licence (an edit of a clip is bound by the clip's licence), source_dataset "edited".
+ClipSource derived_source(const ClipSource& captured, const DerivedClip& d) {
+    ClipSource c;
+    c.file = "edited/" + d.method + "/" + captured.file;
+    c.subject = captured.subject;
+    c.source_dataset = "edited";
+    c.licence = captured.licence;
+    c.tags = d.activity;
+    for (const std::string& caption : d.captions) {
+        CaptionLine line;
+        line.caption = caption;
+        c.captions.push_back({{0, d.joints.num_frames}, line});
+    }
+    c.provenance = {{"derived_from", captured.file}, {"source_dataset", captured.source_dataset}, {"method", d.method},
+                    {"parameters", d.parameters}, {"seed", d.seed}};
+    return c;
+}
+
+// Cuts one recording into chunks (at most chunks_per_file of them, 0 = all) and writes each, and its mirror.
+void write_recording(const BuildOptions& o, const std::string& tmp, const ClipSource& c, const std::string& key,
+                     const JointSequence& joints, int max_frames, size_t chunks_per_file, Tally& tally, BuildSummary& summary) {
+    for (const auto& [begin, end] : spread(chunks(joints.num_frames, max_frames), chunks_per_file)) {
+        const std::vector<CaptionLine> captions = captions_for_chunk(c, begin, end, joints.num_frames);
+        if (captions.empty() || end - begin < 2) continue;
+        const JointSequence part = slice(joints, begin, end);
+        char id[16];
+        std::snprintf(id, sizeof id, "%06d", tally.next_id++);
+        for (bool mirror : {false, true}) {
+            if (mirror && !o.mirror) continue;
+            const std::string clip_id = (mirror ? "M" : "") + std::string(id);
+            std::vector<CaptionLine> lines = captions;
+            if (mirror)
+                for (CaptionLine& l : lines) l.caption = swap_left_right(l.caption);
+            Written w{clip_id, key, {}};
+            write_clip(tmp, clip_id, mirror ? mirrored(part) : part, lines, w.features);
+            const double minutes = static_cast<double>(w.features.rows()) / kFps / 60.0;
+            summary.minutes += minutes;
+            summary.captions += static_cast<int>(lines.size());
+            std::stringstream tags(c.tags.empty() ? "untagged" : c.tags);
+            std::string tag;
+            while (std::getline(tags, tag, ';')) {
+                TagTally& t = tally.per_tag[tag];
+                t.clips += 1;
+                t.minutes += minutes;
+                if (c.provenance.is_null()) t.captured_minutes += minutes;
+            }
+            tally.clips_csv.rows.push_back({clip_id, c.file, c.source_dataset, c.subject, c.licence, c.tags, std::to_string(begin),
+                                            std::to_string(end), std::to_string(w.features.rows()), mirror ? "1" : "0",
+                                            c.provenance.is_null() ? "" : c.provenance.dump(), key});
+            tally.written.push_back(std::move(w));
+        }
+    }
+}
+
+// Per activity tag set ("walking", "jumping;standing", ...), the share of the training loader's draws: it visits
+// every train-split clip once an epoch (hml3d_dataset.hpp), so the share of train clips.
+nlohmann::json train_draw_share(const CsvTable& clips) {
+    const size_t tags = clips.column("activity_tags"), split = clips.column("split");
+    std::map<std::string, double> count;
+    double total = 0;
+    for (const auto& row : clips.rows)
+        if (row[split] == "train") { count[row[tags].empty() ? "untagged" : row[tags]] += 1; total += 1; }
+    nlohmann::json out = nlohmann::json::object();
+    for (const auto& [tag, n] : count) out[tag] = n / total;
+    return out;
+}
+
 BuildSummary build_into(const BuildOptions& o, const std::string& tmp) {
     const std::map<std::string, ClipSource> sources = read_sources(o);
     fs::remove_all(tmp);
     for (const char* sub : {"new_joints", "new_joint_vecs", "texts"}) fs::create_directories(tmp + "/" + sub);
     const int max_frames = static_cast<int>(std::floor(o.max_seconds * kFps + 1e-9));
     if (max_frames < 40) throw Error("--max-seconds", "value", "at least 2 s (40 frames)");
+    if (!(o.max_seconds_per_file >= 0)) throw Error("--max-seconds-per-file", "value", "0 (no cap) or a number of seconds");
+    const size_t chunks_per_file = o.max_seconds_per_file > 0 ? static_cast<size_t>(std::max(1.0, std::floor(o.max_seconds_per_file / o.max_seconds))) : 0;
 
-    CsvTable clips_csv;
-    clips_csv.header = {"id", "file", "source_dataset", "subject", "licence", "activity_tags", "start_frame",
-                        "end_frame", "frames", "mirrored", "split"};  // "split" holds the split key until the deal below
-    std::vector<Written> written;
-    std::map<std::string, std::pair<int, double>> per_tag;  // clips, minutes
+    Tally tally;
     nlohmann::json skipped = nlohmann::json::array();
     BuildSummary summary;
-    int next_id = 0;
+    DeriveReport derive_report;
     for (const auto& [file, c] : sources) {
         if (c.captions.empty()) continue;
         if (!o.licences.empty() && !o.licences.count(c.source_dataset)) continue;
@@ -194,42 +288,15 @@ BuildSummary build_into(const BuildOptions& o, const std::string& tmp) {
             continue;
         }
         const std::string key = split_key(c);
-        for (const auto& [begin, end] : chunks(joints.num_frames, max_frames)) {
-            const std::vector<CaptionLine> captions = captions_for_chunk(c, begin, end, joints.num_frames);
-            if (captions.empty() || end - begin < 2) continue;
-            const JointSequence part = slice(joints, begin, end);
-            char id[16];
-            std::snprintf(id, sizeof id, "%06d", next_id++);
-            for (bool mirror : {false, true}) {
-                if (mirror && !o.mirror) continue;
-                const std::string clip_id = (mirror ? "M" : "") + std::string(id);
-                std::vector<CaptionLine> lines = captions;
-                if (mirror)
-                    for (CaptionLine& l : lines) l.caption = swap_left_right(l.caption);
-                Written w{clip_id, key, {}};
-                write_clip(tmp, clip_id, mirror ? mirrored(part) : part, lines, w.features);
-                const double minutes = static_cast<double>(w.features.rows()) / kFps / 60.0;
-                summary.minutes += minutes;
-                summary.captions += static_cast<int>(lines.size());
-                std::string tags = c.tags.empty() ? "untagged" : c.tags;
-                size_t a = 0;
-                while (true) {
-                    const size_t b = tags.find(';', a);
-                    auto& t = per_tag[tags.substr(a, b - a)];
-                    t.first += 1;
-                    t.second += minutes;
-                    if (b == std::string::npos) break;
-                    a = b + 1;
-                }
-                clips_csv.rows.push_back({clip_id, file, c.source_dataset, c.subject, c.licence, c.tags,
-                                          std::to_string(begin), std::to_string(end), std::to_string(w.features.rows()),
-                                          mirror ? "1" : "0", key});
-                written.push_back(std::move(w));
-            }
-        }
+        write_recording(o, tmp, c, key, joints, max_frames, chunks_per_file, tally, summary);
+        if (!o.derive) continue;
+        for (DerivedClip& d : derive_clips(joints, c.tags, file, derive_report))
+            write_recording(o, tmp, derived_source(c, d), key, d.joints, max_frames, chunks_per_file, tally, summary);
     }
-    if (written.empty()) throw Error(o.out_dir, "clips", "at least one clip with a caption after filtering");
-    summary.clips = static_cast<int>(written.size());
+    if (tally.written.empty()) throw Error(o.out_dir, "clips", "at least one clip with a caption after filtering");
+    summary.clips = static_cast<int>(tally.written.size());
+    std::vector<Written>& written = tally.written;
+    CsvTable& clips_csv = tally.clips_csv;
 
     std::map<std::string, int> clips_per_key;
     for (const Written& w : written) ++clips_per_key[w.split_key];
@@ -257,7 +324,11 @@ BuildSummary build_into(const BuildOptions& o, const std::string& tmp) {
     j["captions"] = summary.captions;
     j["mirrored"] = o.mirror;
     j["skipped_files"] = skipped;
-    for (const auto& [tag, v] : per_tag) j["per_activity_tag"][tag] = {{"clips", v.first}, {"minutes", v.second}};
+    for (const auto& [tag, v] : tally.per_tag)
+        j["per_activity_tag"][tag] = {{"clips", v.clips}, {"minutes", v.minutes}, {"captured_minutes", v.captured_minutes},
+                                      {"derived_minutes", v.minutes - v.captured_minutes}};
+    j["derived"] = {{"included", o.derive}, {"edits_refused", derive_report.refused}, {"failed_quality", derive_report.failed_quality}};
+    j["train_draw_share"] = train_draw_share(clips_csv);
     for (Split s : {Split::train, Split::val, Split::test})
         j["split_clips"][split_name(s)] = std::count(lists[s].begin(), lists[s].end(), '\n');
     summary.json = j.dump(1);

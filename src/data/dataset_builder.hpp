@@ -4,14 +4,16 @@
 //   texts/ID.txt           caption#tokens#start#end lines
 //   Mean.npy, Std.npy      over every clip, mirrored ones included (as cal_mean_variance does)
 //   train.txt, val.txt, test.txt, all.txt   ids; a clip and its mirror share a split
-//   clips.csv              id, file, source_dataset, subject, licence, activity_tags, start/end frame, frames, mirrored
-//   summary.json           clips, minutes, captions, per activity tag, skipped files and why
+//   clips.csv              id, file, source_dataset, subject, licence, activity_tags, start/end frame, frames, mirrored,
+//                          provenance (JSON of a derived clip: source file, method, parameters, seed; empty if captured), split
+//   summary.json           clips, minutes, captions, per activity tag (captured and derived minutes), each tag's share
+//                          of the training draws, derived clips refused or failing quality, skipped files and why
 //
 // Inputs: `mocap_dir` with the motion files at the paths the captions CSV names (columns
 // file,start_frame,end_frame,caption; optional tokens, licence, subject, source; frames at 20 fps, end exclusive),
 // and optionally a manifest.csv (file, subject, source_dataset, licence, activity_tags) as the shared set has.
 // Clips longer than max_seconds are cut into equal consecutive chunks no longer than that (HumanML3D's clips
-// are at most 10 s); a whole-clip caption goes with every chunk, a segment caption with the chunks it overlaps
+// are at most 10 s), of which at most max_seconds_per_file worth are kept; a whole-clip caption goes with every chunk, a segment caption with the chunks it overlaps
 // by at least 2 s, its times made relative to the chunk. The set is built in a temporary folder and renamed into
 // place when complete.
 #pragma once
@@ -29,6 +31,14 @@ struct BuildOptions {
     // the KIT-ML captions (their licence is unverified).
     std::set<std::string> licences;
     double max_seconds = 9.8;
+    // At most this much of one file (0 = all of it), as chunks spread evenly over it: ReActIdle's 22 recordings
+    // of standing idle run 92-162 s (46.7 min, more than all our walking), every other file of the shared set
+    // is under 64 s. Uncapped, standing would be a quarter of the training draws (the loader visits every clip
+    // once an epoch); at 60 s it keeps 6 chunks of each idle recording (21.6 min).
+    double max_seconds_per_file = 60;
+    // Add the clips derived from captured ones (derived_clips.hpp: stairs from walks, sitting down and standing
+    // up from idle standing), tagged source_dataset "edited" with their provenance in clips.csv.
+    bool derive = true;
     bool strict = false;  // abort on the first clip that fails to import (default: skip it and report it)
 };
 

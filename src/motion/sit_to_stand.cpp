@@ -78,7 +78,7 @@ Vector3d seated_pelvis(const JointSequence& s, const ChairOptions& o, const Vect
 }  // namespace
 
 void validate(const ChairOptions& o) {
-    check_range(o.seat_height_m, 0.35, 0.55, "seat_height_m");
+    check_range(o.seat_height_m, 0.25, 0.60, "seat_height_m");
     check_range(o.pelvis_above_seat_m, 0.05, 0.15, "pelvis_above_seat_m");
     check_range(o.stand_before_s, 0.0, 10.0, "stand_before_s");
     check_range(o.sit_down_s, 1.0, 4.0, "sit_down_s");

@@ -21,7 +21,8 @@
 //   - Seated, the pelvis joint (between the hip joint centres) sits about 10 cm above the seat, on the ischial
 //     tuberosities: pelvis_above_seat_m. The chair stands where the thighs reach it with the shanks vertical
 //     (knees at about 90 deg), which fixes how far behind the ankles the seated pelvis is.
-//   - Ordinary dining and office chairs have seats 0.40-0.50 m high; the options allow 0.35-0.55 m.
+//   - Ordinary dining and office chairs have seats 0.40-0.50 m high, about half an adult's hip-joint height
+//     (0.85-0.95 m); the options allow 0.25-0.60 m so that a caller can scale the seat to a small capture rig.
 // Every move is a minimum-jerk blend (motion_edit.hpp), and where the legs would be stretched past the
 // source's own reach the body comes down sooner (lower_to_reach), which is how the pelvis path bends.
 #pragma once
@@ -30,7 +31,7 @@
 namespace t2imu {
 
 struct ChairOptions {
-    double seat_height_m = 0.45;          // seat surface above the floor, [0.35, 0.55]
+    double seat_height_m = 0.45;          // seat surface above the floor, [0.25, 0.60] (scaled to the rig's size)
     double pelvis_above_seat_m = 0.10;    // seated pelvis joint above the seat surface, [0.05, 0.15]
     double stand_before_s = 1.0;          // [0, 10]
     double sit_down_s = 2.2;              // [1, 4]

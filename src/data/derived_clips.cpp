@@ -1,0 +1,188 @@
+#include "data/derived_clips.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <random>
+#include <set>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "motion/lying_still.hpp"
+#include "motion/motion_quality.hpp"
+#include "motion/sit_to_stand.hpp"
+#include "motion/skeleton.hpp"
+#include "motion/stair_gait.hpp"
+
+namespace t2imu {
+
+namespace {
+
+// FNV-1a of the file name: a seed that depends on nothing but the recording.
+uint64_t file_seed(const std::string& file) {
+    uint64_t h = 1469598103934665603ull;
+    for (unsigned char c : file) h = (h ^ c) * 1099511628211ull;
+    return h;
+}
+
+std::set<std::string> tag_set(const std::string& tags) {
+    std::set<std::string> out;
+    std::stringstream in(tags);
+    std::string t;
+    while (std::getline(in, t, ';'))
+        if (!t.empty()) out.insert(t);
+    return out;
+}
+
+// Three of a method's sentences, drawn without repeats.
+std::vector<std::string> pick_captions(const std::vector<std::string>& pool, std::mt19937_64& rng) {
+    std::vector<std::string> out = pool;
+    std::shuffle(out.begin(), out.end(), rng);
+    out.resize(3);
+    return out;
+}
+
+const std::vector<std::string>& captions_for(const std::string& method) {
+    static const std::vector<std::string> up = {
+        "a person walks up a flight of stairs", "someone climbs the stairs step by step", "a person goes upstairs at a steady pace",
+        "the person ascends a staircase", "a man walks up the steps one at a time", "someone walks upstairs"};
+    static const std::vector<std::string> down = {
+        "a person walks down a flight of stairs", "someone descends the stairs step by step", "a person goes downstairs at a steady pace",
+        "the person descends a staircase", "a man walks down the steps one at a time", "someone walks downstairs"};
+    static const std::vector<std::string> sit = {
+        "a person sits down on a chair, stays seated for a moment and stands up again", "someone takes a seat on a chair and then gets up",
+        "a person stands, sits down on a chair and rises again", "the person sits on a chair for a few seconds, then stands up",
+        "someone lowers themselves onto a chair, rests, and stands back up", "a person is sitting on a chair and then stands up"};
+    static const std::vector<std::string> lie = {
+        "a person lies still on the floor, breathing quietly", "someone is lying on the ground and resting",
+        "a person lies on the floor without moving", "the person rests lying down", "someone lies motionless on the floor",
+        "a person is lying down, breathing calmly"};
+    return method == "stairs_up" ? up : method == "stairs_down" ? down : method == "lying_still" ? lie : sit;
+}
+
+double uniform(std::mt19937_64& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+
+bool passes(const MotionQuality& q) { return quality_failures(q, default_quality_thresholds()).empty(); }
+
+void derive_stairs_clip(const JointSequence& walk, const std::string& file, DeriveReport& report, std::vector<DerivedClip>& out) {
+    const uint64_t seed = file_seed(file);
+    std::mt19937_64 rng(seed);
+    const bool ascend = seed % 2 == 0;
+    StairOptions o = default_stair_options(ascend);
+    o.rise_m = uniform(rng, 0.15, 0.19);
+    o.going_m = uniform(rng, 0.25, 0.32);
+    o.cadence_factor = std::clamp(o.cadence_factor + uniform(rng, -0.05, 0.05), 0.5, 1.0);
+    o.trunk_lean_rad = std::max(0.0, o.trunk_lean_rad + uniform(rng, -0.03, 0.03));
+    StairMotion m;
+    try {
+        m = derive_stairs(walk, o);
+    } catch (const Error&) {
+        ++report.refused;  // a short, turning, backward or sideways walk: no staircase fits it
+        return;
+    }
+    const Staircase stairs = m.stairs;
+    if (!passes(score_motion_on_ground(m.motion, [&](const Eigen::Vector3d& p) { return stairs.height_at(p); }))) {
+        ++report.failed_quality;
+        return;
+    }
+    DerivedClip c;
+    c.method = ascend ? "stairs_up" : "stairs_down";
+    c.activity = c.method;
+    c.joints = std::move(m.motion);
+    c.parameters = {{"rise_m", o.rise_m}, {"going_m", o.going_m}, {"ascend", o.ascend}, {"trunk_lean_rad", o.trunk_lean_rad},
+                    {"cadence_factor", o.cadence_factor}, {"swing_clearance_m", o.swing_clearance_m}, {"steps", stairs.steps}};
+    c.seed = seed;
+    c.captions = pick_captions(captions_for(c.method), rng);
+    out.push_back(std::move(c));
+}
+
+JointSequence window(const JointSequence& s, int begin, int frames) {
+    JointSequence out(frames, s.num_joints, s.fps);
+    std::copy(s.positions.begin() + static_cast<std::ptrdiff_t>(begin) * s.num_joints,
+              s.positions.begin() + static_cast<std::ptrdiff_t>(begin + frames) * s.num_joints, out.positions.begin());
+    return out;
+}
+
+// Standing hip-joint height above the lowest foot joint at frame 0 (m): chairs fit their sitter, and capture rigs
+// come in many sizes (ReActIdle's hip joints stand 0.66-0.95 m high).
+double hip_joint_height(const JointSequence& s) {
+    double floor = s.at(0, smpl22::left_foot).y();
+    for (int j : {smpl22::right_foot, smpl22::left_ankle, smpl22::right_ankle}) floor = std::min(floor, s.at(0, j).y());
+    return 0.5 * (s.at(0, smpl22::left_hip).y() + s.at(0, smpl22::right_hip).y()) - floor;
+}
+
+void derive_sit_clips(const JointSequence& standing, const std::string& file, DeriveReport& report, std::vector<DerivedClip>& out) {
+    const uint64_t seed = file_seed(file);
+    const double hip_height = hip_joint_height(standing);
+    std::mt19937_64 rng(seed);
+    for (int k = 0; k < kSitsPerRecording; ++k) {
+        ChairOptions o;
+        o.seat_height_m = uniform(rng, 0.47, 0.57) * hip_height;
+        o.sit_down_s = uniform(rng, 1.8, 2.4);
+        o.seated_s = uniform(rng, 2.0, 3.0);
+        o.stand_up_s = uniform(rng, 1.5, 2.0);
+        o.stand_before_s = uniform(rng, 0.5, 1.0);
+        o.stand_after_s = uniform(rng, 0.5, 1.0);
+        o.trunk_flexion_peak_rad = uniform(rng, 0.55, 0.85);
+        const int frames = stand_sit_stand_frames(o, standing.fps);
+        if (frames > standing.num_frames) { ++report.refused; continue; }
+        // Window k of kSitsPerRecording spread evenly over the recording.
+        const int begin = static_cast<int>((standing.num_frames - frames) * (2 * k + 1) / (2 * kSitsPerRecording));
+        DerivedClip c;
+        try {
+            c.joints = stand_sit_stand(window(standing, begin, frames), o);
+        } catch (const Error&) {
+            ++report.refused;
+            continue;
+        }
+        if (!passes(score_motion(c.joints))) { ++report.failed_quality; continue; }
+        c.method = "sit_down_stand_up";
+        c.activity = "sitting";
+        c.parameters = {{"source_start_frame", begin}, {"seat_height_m", o.seat_height_m}, {"pelvis_above_seat_m", o.pelvis_above_seat_m},
+                        {"stand_before_s", o.stand_before_s}, {"sit_down_s", o.sit_down_s}, {"seated_s", o.seated_s},
+                        {"stand_up_s", o.stand_up_s}, {"stand_after_s", o.stand_after_s}, {"trunk_flexion_peak_rad", o.trunk_flexion_peak_rad}};
+        c.seed = seed + static_cast<uint64_t>(k);
+        c.captions = pick_captions(captions_for(c.method), rng);
+        out.push_back(std::move(c));
+    }
+}
+
+void derive_lying_clips(const JointSequence& lie_down, const std::string& file, DeriveReport& report, std::vector<DerivedClip>& out) {
+    const uint64_t seed = file_seed(file);
+    std::mt19937_64 rng(seed);
+    for (int k = 0; k < kLyingPerRecording; ++k) {
+        LyingOptions o;
+        o.seconds = uniform(rng, 6.0, 9.4);
+        o.breaths_per_min = uniform(rng, 12.0, 20.0);
+        o.chest_rad = uniform(rng, 0.015, 0.025);
+        DerivedClip c;
+        try {
+            c.joints = lying_still(lie_down, o);
+        } catch (const Error&) {
+            ++report.refused;  // the clip does not end lying
+            return;
+        }
+        if (!passes(score_motion(c.joints))) { ++report.failed_quality; continue; }
+        c.method = "lying_still";
+        c.activity = "lying";
+        c.parameters = {{"seconds", o.seconds}, {"breaths_per_min", o.breaths_per_min}, {"chest_rad", o.chest_rad}};
+        c.seed = seed + static_cast<uint64_t>(k);
+        c.captions = pick_captions(captions_for(c.method), rng);
+        out.push_back(std::move(c));
+    }
+}
+
+}  // namespace
+
+std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::string& tags, const std::string& file,
+                                      DeriveReport& report) {
+    std::vector<DerivedClip> out;
+    const std::set<std::string> t = tag_set(tags);
+    if (t.size() != 1) return out;
+    if (t.count("walking")) derive_stairs_clip(captured, file, report, out);
+    if (t.count("standing")) derive_sit_clips(captured, file, report, out);
+    if (t.count("lying")) derive_lying_clips(captured, file, report, out);
+    return out;
+}
+
+}  // namespace t2imu

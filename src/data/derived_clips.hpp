@@ -1,0 +1,57 @@
+// Motions derived from captured ones where open motion capture has (almost) none: stairs from captured level
+// walks (motion/stair_gait.hpp), sitting down, sitting and standing up from captured idle standing
+// (motion/sit_to_stand.hpp), and lying still, breathing, from the end of captured lie-down clips
+// (motion/lying_still.hpp). Each derived clip says what it is: method, source file, parameters and seed; the
+// dataset builder tags it as source_dataset "edited" with the source clip's licence.
+//
+// Which captured recordings give which clips (only single-activity recordings, so the edit starts from what it
+// assumes):
+//   walking   one staircase clip, ascent or descent by the seed's parity (about half each). Rise uniform in
+//             [0.15, 0.19] m and going in [0.25, 0.32] m (domestic and public stairs, see stair_gait.hpp); the
+//             cadence factor and trunk lean within +-0.05 and +-0.03 rad of the direction's defaults. Walks
+//             that the edit refuses (under 1.5 m of travel, backward or sideways, turning, fewer than four
+//             footholds) give nothing.
+//   standing  up to kSitsPerRecording sit-down/stand-up clips, from windows spread evenly over the recording:
+//             seat height uniform in [0.47, 0.57] x the standing hip-joint height (0.40-0.50 m for an adult's
+//             0.88 m: ordinary chairs; ReActIdle's rigs stand 0.66-0.95 m at the hip), sitting down 1.8-2.4 s, seated 2-3 s, standing up
+//             1.5-2.0 s, 0.5-1.0 s of standing before and after (at most 9.4 s: one training clip), peak
+//             trunk flexion 0.55-0.85 rad.
+//   lying     kLyingPerRecording clips of the final pose held, breathing: 6-9.4 s long, 12-20 breaths/min
+//             (quiet breathing at rest), peak rib-cage turn 0.015-0.025 rad. HDM05's lie-down clips reach the
+//             floor seconds before they end; a HAR "lying" recording is mostly lying still.
+// A clip is kept only when it passes motion_quality's default thresholds, measured above the staircase for
+// stairs (score_motion_on_ground) and above the floor otherwise.
+// Each recording's seed is a hash of its file name, so a build gives the same clips every time.
+#pragma once
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "motion/joint_sequence.hpp"
+
+namespace t2imu {
+
+constexpr int kSitsPerRecording = 6;
+constexpr int kLyingPerRecording = 2;
+
+struct DerivedClip {
+    std::string method;                 // "stairs_up", "stairs_down", "sit_down_stand_up", "lying_still"
+    std::string activity;               // its activity tag: stairs_up, stairs_down, sitting, lying
+    JointSequence joints;               // 20 fps, floor at y = 0 under the lowest joint
+    nlohmann::json parameters;          // the edit's options
+    uint64_t seed = 0;
+    std::vector<std::string> captions;  // three sentences for the whole clip
+};
+
+struct DeriveReport {
+    int refused = 0;         // edits the source could not take (a turning walk, a short recording, no lying end)
+    int failed_quality = 0;  // derived clips that failed the quality thresholds
+};
+
+// The derived clips of one captured recording whose activity tags are `tags` (the mocap manifest's, ';'
+// between several). `file` seeds the draw. Counts what was left out in `report`.
+std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::string& tags, const std::string& file,
+                                      DeriveReport& report);
+
+}  // namespace t2imu

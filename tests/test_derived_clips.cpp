@@ -1,0 +1,121 @@
+// Derived clips from shared captured recordings: stairs from a forward walk, sitting from idle standing; what
+// cannot be a source gives nothing; the draw is the same every time.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "data/derived_clips.hpp"
+#include "motion/mocap_import.hpp"
+#include "motion/motion_quality.hpp"
+#include "motion/skeleton.hpp"
+#include "test_util.hpp"
+
+namespace t2imu {
+namespace {
+
+constexpr const char* kWalk = "bandai_bvh/dataset-2_walk_normal_001.bvh";  // forward walk
+constexpr const char* kWalkBack = "bandai_bvh/dataset-1_walk-back_active_001.bvh";
+constexpr const char* kIdle = "reactidle_bvh/000_genuine.bvh";
+constexpr const char* kLieDown = "hdm05_amc/HDM_bd_lieDownFloor_001_120.amc";
+
+JointSequence shared_clip(const std::string& archive, const std::string& file) {
+    const std::string root = test::unpacked_shared_archive(archive);
+    return root.empty() ? JointSequence() : import_motion(root + "/" + file);
+}
+
+double max_bone_change(const JointSequence& m) {
+    double worst = 0;
+    for (int j = 1; j < 22; ++j) {
+        const int p = smpl22::kParents[static_cast<size_t>(j)];
+        const double first = (m.at(0, j) - m.at(0, p)).norm();
+        for (int f = 1; f < m.num_frames; ++f) worst = std::max(worst, std::fabs((m.at(f, j) - m.at(f, p)).norm() - first));
+    }
+    return worst;
+}
+
+TEST(DerivedClips, AForwardWalkGivesOneFlightOfStairs) {
+    std::string archive;
+    SHARED_OR_SKIP(archive, "mocap/bandai_bvh_native.tar.xz");
+    const JointSequence walk = shared_clip("mocap/bandai_bvh_native.tar.xz", kWalk);
+    DeriveReport report;
+    const std::vector<DerivedClip> clips = derive_clips(walk, "walking", kWalk, report);
+    ASSERT_EQ(clips.size(), 1u) << "refused " << report.refused << ", failed quality " << report.failed_quality;
+    const DerivedClip& c = clips[0];
+    EXPECT_TRUE(c.method == "stairs_up" || c.method == "stairs_down");
+    EXPECT_EQ(c.activity, c.method);
+    EXPECT_GE(c.parameters["rise_m"].get<double>(), 0.15);
+    EXPECT_LE(c.parameters["rise_m"].get<double>(), 0.19);
+    EXPECT_GE(c.parameters["going_m"].get<double>(), 0.25);
+    EXPECT_LE(c.parameters["going_m"].get<double>(), 0.32);
+    EXPECT_EQ(c.captions.size(), 3u);
+    // The body climbs (or descends) the flight: its pelvis ends steps * rise higher (lower) within 5 cm.
+    const double climb = c.joints.at(c.joints.num_frames - 1, 0).y() - c.joints.at(0, 0).y();
+    const double flight = c.parameters["steps"].get<int>() * c.parameters["rise_m"].get<double>();
+    EXPECT_GT(std::fabs(climb), 0.5 * flight);
+    EXPECT_EQ(climb > 0, c.method == "stairs_up");
+    EXPECT_LT(max_bone_change(c.joints), 1e-6);
+    // The same recording gives the same clip.
+    DeriveReport again;
+    EXPECT_EQ(derive_clips(walk, "walking", kWalk, again)[0].joints.positions, c.joints.positions);
+}
+
+TEST(DerivedClips, BackwardWalksAndMixedRecordingsGiveNothing) {
+    std::string archive;
+    SHARED_OR_SKIP(archive, "mocap/bandai_bvh_native.tar.xz");
+    DeriveReport report;
+    EXPECT_TRUE(derive_clips(shared_clip("mocap/bandai_bvh_native.tar.xz", kWalkBack), "walking", kWalkBack, report).empty());
+    EXPECT_EQ(report.refused, 1);
+    const JointSequence walk = shared_clip("mocap/bandai_bvh_native.tar.xz", kWalk);
+    EXPECT_TRUE(derive_clips(walk, "walking;dancing", kWalk, report).empty());  // not one activity: not a source
+    EXPECT_TRUE(derive_clips(walk, "running", kWalk, report).empty());
+}
+
+TEST(DerivedClips, IdleStandingGivesSitDownStandUpClipsThatPassTheQualityThresholds) {
+    std::string archive;
+    SHARED_OR_SKIP(archive, "mocap/reactidle_bvh.tar.xz");
+    const JointSequence idle = shared_clip("mocap/reactidle_bvh.tar.xz", kIdle);
+    DeriveReport report;
+    const std::vector<DerivedClip> clips = derive_clips(idle, "standing", kIdle, report);
+    EXPECT_EQ(static_cast<int>(clips.size()) + report.refused + report.failed_quality, kSitsPerRecording);
+    ASSERT_GE(clips.size(), 4u);
+    for (const DerivedClip& c : clips) {
+        EXPECT_EQ(c.activity, "sitting");
+        EXPECT_LE(c.joints.num_frames, 9.4 * 20 + 1);  // one training clip
+        EXPECT_TRUE(quality_failures(score_motion(c.joints), default_quality_thresholds()).empty());
+        EXPECT_LT(max_bone_change(c.joints), 1e-6);
+        // Seated, the pelvis rests pelvis_above_seat_m above the seat, which is about half the hip height.
+        double lowest = 1e9, floor = 1e9;
+        for (int f = 0; f < c.joints.num_frames; ++f) {
+            lowest = std::min(lowest, c.joints.at(f, 0).y());
+            for (int j : {smpl22::left_foot, smpl22::right_foot}) floor = std::min(floor, c.joints.at(f, j).y());
+        }
+        const double seat = c.parameters["seat_height_m"].get<double>();
+        EXPECT_NEAR(lowest - floor, seat + c.parameters["pelvis_above_seat_m"].get<double>(), 0.03);
+        const double hip = 0.5 * (idle.at(0, smpl22::left_hip).y() + idle.at(0, smpl22::right_hip).y()) - floor;
+        EXPECT_GE(seat, 0.45 * hip);
+        EXPECT_LE(seat, 0.59 * hip);
+    }
+}
+
+TEST(DerivedClips, ALieDownClipGivesLyingStillClips) {
+    std::string archive;
+    SHARED_OR_SKIP(archive, "mocap/hdm05_amc_native.tar.xz");
+    const JointSequence lie = shared_clip("mocap/hdm05_amc_native.tar.xz", kLieDown);
+    DeriveReport report;
+    const std::vector<DerivedClip> clips = derive_clips(lie, "lying", kLieDown, report);
+    ASSERT_EQ(static_cast<int>(clips.size()), kLyingPerRecording);
+    for (const DerivedClip& c : clips) {
+        EXPECT_EQ(c.method, "lying_still");
+        EXPECT_EQ(c.activity, "lying");
+        EXPECT_TRUE(quality_failures(score_motion(c.joints), default_quality_thresholds()).empty());
+        EXPECT_LT(max_bone_change(c.joints), 1e-6);
+        // Still: the pelvis stays where the captured clip left it, within breathing's millimetres.
+        const Eigen::Vector3d end = lie.at(lie.num_frames - 1, 0);
+        for (int f = 0; f < c.joints.num_frames; ++f) EXPECT_LT((c.joints.at(f, 0) - end).norm(), 0.01);
+    }
+    // A standing recording does not end lying: it gives no lying clip.
+    EXPECT_TRUE(derive_clips(shared_clip("mocap/bandai_bvh_native.tar.xz", kWalk), "lying", kWalk, report).empty());
+}
+
+}  // namespace
+}  // namespace t2imu
