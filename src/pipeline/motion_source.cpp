@@ -3,11 +3,17 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
+#include <optional>
 #include <random>
+#include <sstream>
 
 #include "core/error.hpp"
+#include "core/csv.hpp"
 #include "data/hml3d_dataset.hpp"
+#include "motion/activity_names.hpp"
 #include "motion/humanml3d.hpp"
+#include "motion/motion_activity.hpp"
 #include "text/sentence_similarity.hpp"
 
 namespace t2imu {
@@ -19,8 +25,8 @@ public:
     DiffusionSource(const std::string& dir, const SampleOptions& sampling, const std::string& device)
         : dir_(dir), sampling_(sampling), model_(load_motion_model(dir, device)) {}
 
-    std::vector<JointSequence> generate(const std::vector<std::string>& prompts, const std::vector<uint64_t>& seeds,
-                                        int frames) override {
+    std::vector<JointSequence> generate(const std::vector<std::string>& prompts, const std::vector<std::string>&,
+                                        const std::vector<uint64_t>& seeds, int frames) override {
         SampleOptions o = sampling_;
         o.frames = frames;
         o.seeds = seeds;
@@ -67,46 +73,112 @@ std::string default_vocab() {
     return "cache/text/glove-100k.safetensors";
 }
 
+// A clip id of Hml3dDataset without its caption span ("000123#0-40" -> "000123"): the row of clips.csv.
+std::string clip_file_id(const std::string& id) { return id.substr(0, id.find('#')); }
+
+// clips.csv's activity tags by clip id; empty for a dataset without clips.csv (the official release).
+std::map<std::string, std::vector<std::string>> clip_tags(const std::string& dataset) {
+    std::map<std::string, std::vector<std::string>> out;
+    const std::string path = dataset + "/clips.csv";
+    if (!std::filesystem::exists(path)) return out;
+    const CsvTable t = read_csv(path);
+    const size_t id = t.column("id"), tags = t.column("activity_tags");
+    for (const auto& row : t.rows) {
+        std::stringstream in(row[tags]);
+        std::string tag;
+        while (std::getline(in, tag, ';'))
+            if (!tag.empty()) out[row[id]].push_back(canonical_activity(tag));
+    }
+    return out;
+}
+
+enum class Tier { tags_and_classifier, tags, any };
+const char* tier_name(Tier t) { return t == Tier::tags_and_classifier ? "tags+classifier" : t == Tier::tags ? "tags" : "any"; }
+
 class RetrievalSource : public MotionSource {
 public:
-    RetrievalSource(const std::string& dataset, const std::string& vocab)
+    RetrievalSource(const std::string& dataset, const std::string& vocab, const std::string& activity_reference)
         : dataset_(dataset), vocab_(WordVectors::load(vocab.empty() ? default_vocab() : vocab)), sif_(vocab_, 1e-4),
           clips_(Hml3dDataset(dataset, "train").clips()) {
         if (clips_.empty()) throw Error(dataset, "train split", "at least one clip to retrieve");
+        const auto tags = clip_tags(dataset);
+        std::optional<MotionActivityClassifier> classifier;
+        if (!activity_reference.empty()) classifier = MotionActivityClassifier::load(activity_reference);
         for (const MotionClip& c : clips_) {
             std::vector<Eigen::VectorXd> e;
             for (const CaptionLine& l : c.captions) e.push_back(sif_.embed(l.caption));
             caption_embeddings_.push_back(std::move(e));
+            const auto t = tags.find(clip_file_id(c.id));
+            tags_.push_back(t == tags.end() ? std::vector<std::string>{} : t->second);
+            shown_.push_back(classifier ? classifier->classify(describe_motion(recover_from_ric(c.features))).best : "");
         }
+        if (classifier) classes_ = classifier->classes();
     }
 
-    std::vector<JointSequence> generate(const std::vector<std::string>& prompts, const std::vector<uint64_t>& seeds,
-                                        int frames) override {
-        if (seeds.size() != prompts.size()) throw Error("retrieval", "seeds", "one per prompt");
+    std::vector<JointSequence> generate(const std::vector<std::string>& prompts, const std::vector<std::string>& activities,
+                                        const std::vector<uint64_t>& seeds, int frames) override {
+        if (seeds.size() != prompts.size() || activities.size() != prompts.size())
+            throw Error("retrieval", "seeds, activities", "one per prompt");
         std::vector<JointSequence> out;
+        records_.clear();
         for (size_t i = 0; i < prompts.size(); ++i) {
             std::mt19937_64 rng(seeds[i]);
-            const std::vector<size_t> best = nearest_clips(prompts[i]);
+            const std::string asked = activities[i].empty() ? activity_named_in(prompts[i]) : canonical_activity(activities[i]);
+            Tier tier = Tier::any;
+            const std::vector<size_t> best = nearest_clips(prompts[i], candidates(asked, &tier));
             const size_t pick = best[std::uniform_int_distribution<size_t>(0, best.size() - 1)(rng)];
             const double factor = std::uniform_real_distribution<double>(1 - kRetrievalWarp, 1 + kRetrievalWarp)(rng);
             const JointSequence warped = time_warp(recover_from_ric(clips_[pick].features), factor);
             const int n = std::min(frames, warped.num_frames);
             const int start = std::uniform_int_distribution<int>(0, warped.num_frames - n)(rng);
             out.push_back(crop(warped, start, n));
+            records_.push_back({{"clip", clips_[pick].id}, {"tags", tags_[pick]}, {"classifier", shown_[pick]},
+                                {"activity_asked", asked}, {"tier", tier_name(tier)}, {"tags_show_activity", tagged(pick, asked)}});
         }
         return out;
     }
 
     nlohmann::json describe() const override {
         return {{"kind", "retrieval"}, {"dataset", dataset_}, {"split", "train"}, {"clips", clips_.size()},
-                {"top_k", kRetrievalTopK}, {"time_warp", kRetrievalWarp}};
+                {"top_k", kRetrievalTopK}, {"time_warp", kRetrievalWarp}, {"activity_classifier", !classes_.empty()}};
     }
 
+    nlohmann::json draw_record(size_t i) const override { return i < records_.size() ? records_[i] : nlohmann::json(); }
+
 private:
-    std::vector<size_t> nearest_clips(const std::string& prompt) const {
+    bool tagged(size_t c, const std::string& asked) const {
+        for (const std::string& t : tags_[c])
+            if (shows_activity(t, asked)) return true;
+        return false;
+    }
+
+    // Whether the classifier can judge the activity (no classifier, or no class for a gesture: it cannot).
+    bool checkable(const std::string& asked) const {
+        for (const std::string& k : classes_)
+            if (shows_activity(k, asked)) return true;
+        return false;
+    }
+
+    // The first non-empty tier of clips for the asked activity (see the header).
+    std::vector<size_t> candidates(const std::string& asked, Tier* tier) const {
+        std::vector<size_t> both, tags_only, all;
+        const bool judged = checkable(asked);
+        for (size_t c = 0; c < clips_.size(); ++c) {
+            all.push_back(c);
+            if (asked.empty() || !tagged(c, asked)) continue;
+            tags_only.push_back(c);
+            if (judged && shows_activity(shown_[c], asked)) both.push_back(c);
+        }
+        if (!both.empty()) { *tier = Tier::tags_and_classifier; return both; }
+        if (!tags_only.empty()) { *tier = Tier::tags; return tags_only; }
+        *tier = Tier::any;
+        return all;
+    }
+
+    std::vector<size_t> nearest_clips(const std::string& prompt, const std::vector<size_t>& candidates) const {
         const Eigen::VectorXd p = sif_.embed(prompt);
         std::vector<std::pair<double, size_t>> scored;
-        for (size_t c = 0; c < clips_.size(); ++c) {
+        for (size_t c : candidates) {
             double best = -2;
             for (const Eigen::VectorXd& e : caption_embeddings_[c]) best = std::max(best, cosine_similarity(p, e));
             scored.push_back({-best, c});  // ascending: most similar first, ties by clip order
@@ -123,14 +195,18 @@ private:
     SifEncoder sif_;
     std::vector<MotionClip> clips_;
     std::vector<std::vector<Eigen::VectorXd>> caption_embeddings_;
+    std::vector<std::vector<std::string>> tags_;  // canonical activity names per clip
+    std::vector<std::string> shown_;              // the classifier's class per clip ("" without one)
+    std::vector<std::string> classes_;            // the classifier's classes (empty without one)
+    std::vector<nlohmann::json> records_;         // per motion of the last generate()
 };
 
 }  // namespace
 
 std::unique_ptr<MotionSource> open_motion_source(const std::string& spec, const SampleOptions& sampling, const std::string& device,
-                                                 const std::string& vocab) {
+                                                 const std::string& vocab, const std::string& activity_reference) {
     const std::string prefix = "retrieval:";
-    if (spec.rfind(prefix, 0) == 0) return std::make_unique<RetrievalSource>(spec.substr(prefix.size()), vocab);
+    if (spec.rfind(prefix, 0) == 0) return std::make_unique<RetrievalSource>(spec.substr(prefix.size()), vocab, activity_reference);
     return std::make_unique<DiffusionSource>(spec, sampling, device);
 }
 

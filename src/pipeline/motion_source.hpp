@@ -2,12 +2,17 @@
 // retrieval baseline `retrieval:DATASET` that answers a prompt with captured training clips.
 //
 // Retrieval (the row that shows what the learned models add; the paper compares with ReMoDiffuse, a
-// retrieval-augmented diffusion model): every clip of DATASET's train split (HumanML3D layout, t2imu data
-// build or the official release) is scored by the best SIF similarity (GloVe, a = 1e-4, as the activity
-// categoriser) between the prompt and its captions; a sample takes one of the kRetrievalTopK best clips at
-// random, time-warps it by a factor in [1 - kRetrievalWarp, 1 + kRetrievalWarp] (the dataset holds the
-// left-right mirrors already) and crops a random window of the asked length (a shorter clip is used whole).
-// Nothing is invented: every frame is captured motion, resampled.
+// retrieval-augmented diffusion model) answers with clips of DATASET's train split (HumanML3D layout, t2imu data
+// build or the official release) that show the prompt's activity. The activity asked is the prompt set's label
+// (activity_names.hpp's canonical name: SisFall's "jogging" asks for running), else the one the prompt's words
+// name ("sprints" -> running, "goes upstairs" -> stairs_up). Candidates come in tiers, the first non-empty one
+// used: clips whose activity tags (DATASET/clips.csv) name the activity and whose motion the activity classifier
+// places in that activity (when a classifier is given and has a class for the activity); clips whose tags name it; every clip (no activity asked or none tagged).
+// Within the tier each clip scores by the best SIF similarity (GloVe, a = 1e-4, as the activity categoriser)
+// between the prompt and its captions; a sample takes one of the kRetrievalTopK best at random, time-warps it by
+// a factor in [1 - kRetrievalWarp, 1 + kRetrievalWarp] (the dataset holds the left-right mirrors already) and
+// crops a random window of the asked length (a shorter clip is used whole). Nothing is invented: every frame is
+// captured (or, for clips.csv's source_dataset "edited", derived) motion, resampled.
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -28,16 +33,20 @@ public:
     virtual ~MotionSource() = default;
     // One motion per prompt: SMPL-22 joints (m, Y up, floor at y = 0) at 20 fps, `frames` long (retrieval: at
     // most). Prompt i draws only from seeds[i], so a motion does not depend on the other prompts of the call.
-    virtual std::vector<JointSequence> generate(const std::vector<std::string>& prompts, const std::vector<uint64_t>& seeds,
-                                                int frames) = 0;
+    // activities[i]: the prompt set's label of prompt i ("" = unknown; the diffusion model reads only the text).
+    virtual std::vector<JointSequence> generate(const std::vector<std::string>& prompts, const std::vector<std::string>& activities,
+                                                const std::vector<uint64_t>& seeds, int frames) = 0;
     // What produced the motions, for the synthesis record (model folder, training step, sampler...).
     virtual nlohmann::json describe() const = 0;
+    // What produced motion i of the last generate() call (retrieval: the clip, its tags, the tier), or null.
+    virtual nlohmann::json draw_record(size_t) const { return nullptr; }
 };
 
 // `spec`: a model folder, or retrieval:DATASET. `sampling` holds the sampler settings of a model (its seed
 // fields are ignored: generate() takes the seeds). `vocab`: the GloVe vocabulary for retrieval ("" = the
-// default: $T2IMU_VOCAB, else cache/text/glove-100k.safetensors).
-std::unique_ptr<MotionSource> open_motion_source(const std::string& spec, const SampleOptions& sampling,
-                                                 const std::string& device, const std::string& vocab = "");
+// default: $T2IMU_VOCAB, else cache/text/glove-100k.safetensors). `activity_reference`: the motion activity
+// classifier's reference CSV that retrieval checks candidates with ("" = activity tags alone).
+std::unique_ptr<MotionSource> open_motion_source(const std::string& spec, const SampleOptions& sampling, const std::string& device,
+                                                 const std::string& vocab = "", const std::string& activity_reference = "");
 
 }  // namespace t2imu

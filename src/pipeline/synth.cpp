@@ -18,6 +18,7 @@
 #include "imu/imu_writer.hpp"
 #include "imu/virtual_imu.hpp"
 #include "motion/bvh_export.hpp"
+#include "motion/activity_names.hpp"
 #include "motion/motion_activity.hpp"
 #include "motion/normalization.hpp"
 #include "pipeline/motion_source.hpp"
@@ -48,6 +49,7 @@ struct Drawn {
     std::string activity_shown;         // the activity classifier's answer ("" without a check)
     double activity_agreement = 1;
     json attempts = json::array();      // seed and failures of every attempt
+    json source;                        // the source's record of the draw (retrieval: the clip), or null
     bool kept = true;
 };
 
@@ -78,7 +80,8 @@ void keep_best_activity_draw(Drawn& d, std::optional<Drawn>& best) {
 // Draws every job of the batch, then again with the next seed those the filter rejects. `expected`: per job, the
 // activity classifier's class for its prompt ("" = not checked).
 std::vector<Drawn> draw_filtered(MotionSource& source, const std::vector<int>& jobs, const std::vector<std::string>& texts,
-                                 const std::vector<std::string>& expected, const MotionActivityClassifier* classifier,
+                                 const std::vector<std::string>& labels, const std::vector<std::string>& expected,
+                                 const MotionActivityClassifier* classifier,
                                  const SynthOptions& o, double* generate_s, double* score_s) {
     const int frames = static_cast<int>(std::lround(o.seconds * 20));
     std::vector<Drawn> out(jobs.size());
@@ -86,14 +89,15 @@ std::vector<Drawn> draw_filtered(MotionSource& source, const std::vector<int>& j
     std::vector<size_t> pending(jobs.size());
     for (size_t i = 0; i < jobs.size(); ++i) pending[i] = i;
     for (int attempt = 0; !pending.empty(); ++attempt) {
-        std::vector<std::string> prompts;
+        std::vector<std::string> prompts, activities;
         std::vector<uint64_t> seeds;
         for (size_t i : pending) {
             prompts.push_back(texts[i]);
+            activities.push_back(labels[i]);
             seeds.push_back(attempt_seed(o, jobs[i], attempt));
         }
         auto t0 = Clock::now();
-        std::vector<JointSequence> motions = source.generate(prompts, seeds, frames);
+        std::vector<JointSequence> motions = source.generate(prompts, activities, seeds, frames);
         *generate_s += since(t0);
         t0 = Clock::now();
         std::vector<size_t> again;
@@ -102,6 +106,7 @@ std::vector<Drawn> draw_filtered(MotionSource& source, const std::vector<int>& j
             d.joints = std::move(motions[p]);
             place_on_floor(d.joints);
             d.seed = seeds[p];
+            d.source = source.draw_record(p);
             d.quality = score_motion(d.joints);
             d.failures = quality_failures(d.quality, o.thresholds);
             if (classifier) check_activity(*classifier, expected[pending[p]], o.min_activity_agreement, d);
@@ -138,6 +143,7 @@ void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt&
     json marker = {{"job", name}, {"index", job}, {"prompt", prompt.text}, {"activity", prompt.activity}, {"sample", sample},
                    {"seed", d.seed}, {"attempts", d.attempts}, {"quality", quality_json(d.quality)}, {"kept", d.kept},
                    {"frames", d.joints.num_frames}, {"recordings", json::array()}};
+    if (!d.source.is_null()) marker["source_draw"] = d.source;
     if (!d.activity_shown.empty())
         marker["activity_check"] = {{"shown", d.activity_shown}, {"agreement", d.activity_agreement}, {"passed", d.activity_agreement >= o.min_activity_agreement}};
     if (d.kept) {
@@ -255,9 +261,14 @@ json report_json(const std::vector<json>& markers, int total_jobs, const json& t
         const bool k = j["kept"];
         a[k ? "kept" : "dropped"] = a[k ? "kept" : "dropped"].get<int>() + 1;
         if (j.contains("activity_check")) {  // what the last draw showed, kept or dropped
-            json& shown = a["shown"][j["activity_check"]["shown"].get<std::string>()];
+            const std::string shown_name = j["activity_check"]["shown"].get<std::string>();
+            json& shown = a["shown"][shown_name];
             shown = shown.is_null() ? 1 : shown.get<int>() + 1;
+            const bool shows = shows_activity(shown_name, canonical_activity(j["activity"].get<std::string>()));
+            a["shows_activity_by_classifier"] = a.value("shows_activity_by_classifier", 0) + shows;
         }
+        if (j.contains("source_draw"))  // retrieval: whether the retrieved clip's tags name the activity
+            a["shows_activity_by_tags"] = a.value("shows_activity_by_tags", 0) + j["source_draw"].value("tags_show_activity", false);
         const bool below = k && !j.value("activity_check", json::object()).value("passed", true);
         a["kept_below_activity_agreement"] = a["kept_below_activity_agreement"].get<int>() + below;
         kept += k;
@@ -287,7 +298,7 @@ json run_synth(const SynthOptions& o, const std::function<void(const SynthProgre
     stage.imu.noise = parse_noise_model(o.noise);
     stage.imu.seed = o.sampling.seed;
     auto t0 = Clock::now();
-    std::unique_ptr<MotionSource> source = open_motion_source(o.model, o.sampling, o.device, o.vocab);
+    std::unique_ptr<MotionSource> source = open_motion_source(o.model, o.sampling, o.device, o.vocab, o.activity_reference);
     std::optional<MotionActivityClassifier> classifier;
     if (!o.activity_reference.empty()) classifier = MotionActivityClassifier::load(o.activity_reference);
     const double load_s = since(t0);
@@ -306,13 +317,14 @@ json run_synth(const SynthOptions& o, const std::function<void(const SynthProgre
     const size_t batch = static_cast<size_t>(std::max(1, o.sampling.batch));
     for (size_t b = 0; b < todo.size(); b += batch) {
         const std::vector<int> jobs(todo.begin() + static_cast<std::ptrdiff_t>(b), todo.begin() + static_cast<std::ptrdiff_t>(std::min(todo.size(), b + batch)));
-        std::vector<std::string> texts, expected;
+        std::vector<std::string> texts, labels, expected;
         for (int k : jobs) {
             const Prompt& prompt = prompts[static_cast<size_t>(k / o.samples_per_prompt)];
             texts.push_back(prompt.text);
+            labels.push_back(prompt.activity);
             expected.push_back(classifier ? reference_activity(prompt.activity, classifier->classes()) : "");
         }
-        const std::vector<Drawn> drawn = draw_filtered(*source, jobs, texts, expected, classifier ? &*classifier : nullptr, o, &generate_s, &score_s);
+        const std::vector<Drawn> drawn = draw_filtered(*source, jobs, texts, labels, expected, classifier ? &*classifier : nullptr, o, &generate_s, &score_s);
         t0 = Clock::now();
         parallel_for(static_cast<int>(jobs.size()), o.threads, [&](int i) {
             const int k = jobs[static_cast<size_t>(i)];

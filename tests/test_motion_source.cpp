@@ -1,0 +1,92 @@
+// Motion sources: retrieval answers with clips that show the prompt's activity, by tags and classifier.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <set>
+
+#include "core/csv.hpp"
+#include "core/npy.hpp"
+#include "motion/humanml3d.hpp"
+#include "motion/motion_activity.hpp"
+#include "pipeline/motion_source.hpp"
+#include "test_util.hpp"
+#include "text/word_vectors.hpp"
+#include "tiny_model.hpp"
+
+namespace t2imu {
+namespace {
+
+// The tiny walk dataset (six clips c0..c5) relabelled: c0-c2 are tagged walking but captioned "a person runs
+// fast", c3-c5 tagged running but captioned "a person walks". Captions alone would send a running prompt to
+// the walking clips.
+std::string misleading_dataset(const std::string& name) {
+    const std::string dir = test::make_tiny_motion_dataset(test::scratch_dir(name));
+    CsvTable clips;
+    clips.header = {"id", "activity_tags", "split"};
+    for (int k = 0; k < 6; ++k) {
+        const bool walking = k < 3;
+        std::ofstream(dir + "/texts/c" + std::to_string(k) + ".txt") << (walking ? "a person runs fast" : "a person walks") << "##0.0#0.0\n";
+        clips.rows.push_back({"c" + std::to_string(k), walking ? "walking" : "running", "train"});
+    }
+    write_csv(dir + "/clips.csv", clips);
+    const std::vector<std::string> words = {"a", "person", "walks", "runs", "fast", "jogs", "claps"};
+    std::vector<float> v(words.size() * 100);
+    for (size_t i = 0; i < v.size(); ++i) v[i] = static_cast<float>(std::cos(0.37 * static_cast<double>(i)) + (i % 100 == i / 100 ? 3 : 0));
+    WordVectors(words, v).save(dir + "/vocab.safetensors");
+    return dir;
+}
+
+std::set<std::string> clips_drawn(MotionSource& s, const std::string& prompt, const std::string& label, std::string* tier = nullptr) {
+    std::set<std::string> out;
+    for (uint64_t seed = 0; seed < 40; ++seed) {
+        s.generate({prompt}, {label}, {seed}, 40);
+        out.insert(s.draw_record(0)["clip"].get<std::string>());
+        if (tier) *tier = s.draw_record(0)["tier"];
+    }
+    return out;
+}
+
+TEST(MotionSource, RetrievalTakesTheAskedActivityFromTheLabelOrTheWordsNotTheCaptions) {
+    const std::string data = misleading_dataset("retrieval_tags");
+    auto source = open_motion_source("retrieval:" + data, SampleOptions{}, "cpu", data + "/vocab.safetensors");
+    const std::set<std::string> running = {"c3", "c4", "c5"}, walking = {"c0", "c1", "c2"};
+    std::string tier;
+    EXPECT_EQ(clips_drawn(*source, "a person runs fast", "jogging", &tier), running);  // SisFall's label
+    EXPECT_EQ(tier, "tags");
+    EXPECT_EQ(clips_drawn(*source, "a person jogs", ""), running);                 // no label: the words
+    EXPECT_EQ(clips_drawn(*source, "a person runs fast", "walking"), walking);
+    source->generate({"a person walks"}, {"running"}, {3}, 40);
+    EXPECT_TRUE(source->draw_record(0)["tags_show_activity"].get<bool>());
+    EXPECT_EQ(source->draw_record(0)["activity_asked"], "running");
+    // A gesture no clip is tagged with: every clip competes on its captions (top 5 of 6).
+    EXPECT_EQ(clips_drawn(*source, "a person claps", "applauding", &tier).size(), 5u);
+    EXPECT_EQ(tier, "any");
+}
+
+TEST(MotionSource, RetrievalPrefersTaggedClipsTheClassifierAgreesWith) {
+    // The reference places every clip's motion (all cut from one captured walk) in walking, running far away:
+    // walking prompts get the tags+classifier tier; running ones fall back to the tags alone.
+    const std::string data = misleading_dataset("retrieval_classifier");
+    std::vector<ActivityExample> reference;
+    for (int k = 0; k < 6; ++k) {
+        const std::string file = data + "/new_joint_vecs/c" + std::to_string(k) + ".npy";
+        const MotionDescriptors d = describe_motion(recover_from_ric(feature_matrix_from_array(read_npy(file), file)));
+        MotionDescriptors far = d;
+        for (double& x : far) x += 10;
+        reference.push_back({"walking", "w" + std::to_string(k), d});
+        reference.push_back({"running", "r" + std::to_string(k), far});
+    }
+    const std::string csv = data + "/reference.csv";
+    write_csv(csv, MotionActivityClassifier(reference).reference_table());
+    auto source = open_motion_source("retrieval:" + data, SampleOptions{}, "cpu", data + "/vocab.safetensors", csv);
+    std::string tier;
+    EXPECT_EQ(clips_drawn(*source, "a person runs fast", "walking", &tier), (std::set<std::string>{"c0", "c1", "c2"}));
+    EXPECT_EQ(tier, "tags+classifier");
+    EXPECT_EQ(clips_drawn(*source, "a person walks", "running", &tier), (std::set<std::string>{"c3", "c4", "c5"}));
+    EXPECT_EQ(tier, "tags");
+    EXPECT_EQ(source->draw_record(0)["classifier"], "walking");
+}
+
+}  // namespace
+}  // namespace t2imu
