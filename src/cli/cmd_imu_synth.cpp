@@ -47,8 +47,10 @@ void write_outputs(const SynthArgs& a, const std::vector<BodyImu>& bodies, const
         }
     }
     write_file_atomic((tmp / "meta.json").string(), meta.dump(2) + "\n");
-    if (fs::exists(out)) fs::remove_all(out);
-    fs::rename(tmp, out);
+    std::error_code ec;
+    fs::remove_all(out, ec);  // the previous output, replaced whole
+    if (!ec) fs::rename(tmp, out, ec);
+    if (ec) throw Error(a.out, "rename", "a replaceable output folder (the result is in " + tmp.string() + ")", ec.message());
 }
 
 void run(const SynthArgs& a) {
