@@ -155,8 +155,8 @@ std::vector<FeatureMatrix> sample_motions(MotionModel& model, const std::vector<
     torch::NoGradGuard no_grad;
     const GaussianDiffusion diffusion(model.schedule);
     std::vector<FeatureMatrix> out;
-    for (size_t start = 0; start < prompts.size(); start += static_cast<size_t>(std::max(o.batch, 1))) {
-        const size_t n = std::min(prompts.size() - start, static_cast<size_t>(std::max(o.batch, 1)));
+    for (size_t start = 0; start < prompts.size(); start += static_cast<size_t>(o.batch)) {
+        const size_t n = std::min(prompts.size() - start, static_cast<size_t>(o.batch));
         const std::vector<std::string> batch(prompts.begin() + static_cast<std::ptrdiff_t>(start), prompts.begin() + static_cast<std::ptrdiff_t>(start + n));
         std::vector<torch::Generator> gens;
         for (size_t i = 0; i < n; ++i) gens.push_back(at::detail::createCPUGenerator(o.seeds.empty() ? o.seed + start + i : o.seeds[start + i]));
