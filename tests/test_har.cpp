@@ -178,5 +178,5 @@ TEST(HarTraining, CliLeaveOneSubjectOut) {
     EXPECT_EQ(j["balanced_accuracy"]["runs"].size(), 3u);  // one per subject
     EXPECT_GT(j["balanced_accuracy"]["mean"].get<double>(), 0.85);
     const auto bad = test::run_cli("har run --train " + dir + "/data --out " + dir + "/x.json");  // neither --test nor --loso
-    EXPECT_EQ(bad.exit_code, 1) << bad.output;
+    EXPECT_EQ(bad.exit_code, 2) << bad.output;  // bad usage
 }

@@ -68,4 +68,7 @@ TEST(Placement, ReadsACustomTomlSet) {
     bad("[[sensor]]\nposition = \"a\"\nsegment = \"neck\"\nx = \"sky\"\ny = \"out\"\n");      // unknown word
     bad("name = \"x\"\n");                                                                     // no sensors
     bad("[[sensor]\n");                                                                        // not TOML
+    bad("[[sensor]]\nposition = \"a\"\nsegment = \"neck\"\nx = \"up\"\ny = \"out\"\naroud = -90\n");  // misspelt key
+    bad("[[sensor]]\nposition = \"a\"\nsegment = \"neck\"\nx = \"up\"\ny = \"out\"\nalong = \"far\"\n");  // not a number
+    bad("[[sensor]]\nsegment = \"neck\"\nx = \"up\"\ny = \"out\"\n");                      // no position
 }

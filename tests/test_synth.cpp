@@ -124,6 +124,25 @@ TEST(Synth, ResumeRedoesOnlyUnfinishedJobs) {
     EXPECT_EQ(read_imu_dataset(out, false).size(), 8u);
 }
 
+TEST(Synth, ResumeRedoesFinishedJobsWhoseFilesWentMissingOrWereCut) {
+    const std::string out = test::scratch_dir("synth_resume_damaged");
+    SynthOptions o = tiny_options(out);
+    o.bodies = "preset:male_average";
+    run_synth(o);
+    const std::string cut = csv_of(out, "j00001", "male_average");
+    const std::string before = test::scratch_dir("synth_resume_damaged_before") + "/waist.csv";
+    fs::copy_file(cut, before);
+    fs::resize_file(cut, fs::file_size(cut) / 2);       // a copy that broke off
+    fs::remove(csv_of(out, "j00002", "male_average"));  // a lost file
+    const auto untouched = fs::last_write_time(csv_of(out, "j00003", "male_average"));
+    const nlohmann::json r = run_synth(o);
+    EXPECT_EQ(r["this_run"]["jobs_run"], 2);
+    EXPECT_LT(max_difference(cut, before), 1e-3);  // redone in another batch: equal up to float rounding
+    EXPECT_TRUE(fs::exists(csv_of(out, "j00002", "male_average")));
+    EXPECT_EQ(fs::last_write_time(csv_of(out, "j00003", "male_average")), untouched);
+    EXPECT_EQ(read_imu_dataset(out).size(), 4u);
+}
+
 TEST(Synth, ShardsAddUpToTheWholeRun) {
     const std::string whole = test::scratch_dir("synth_whole"), sharded = test::scratch_dir("synth_sharded");
     run_synth(tiny_options(whole));

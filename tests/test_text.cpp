@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "core/npy.hpp"
 #include "text/sentence_similarity.hpp"
+#include "text/utf8.hpp"
 #include "text/word_tokenizer.hpp"
 #include "text/wordpiece.hpp"
 #include "test_util.hpp"
@@ -34,6 +35,18 @@ TEST(WordPiece, ReproducesTheReferenceTokenIds) {
     // A word over 100 characters is one [UNK]: [CLS] [UNK] b [SEP].
     EXPECT_EQ(tok.encode(std::string(600, 'a') + " b", 8), (std::vector<int64_t>{101, 100, 1038, 102}));
     EXPECT_EQ(tok.encode("walk walk walk walk", 4).size(), 4u);  // truncated, [SEP] kept
+}
+
+TEST(Utf8, FirstInvalidByteAsNlohmannJsonJudgesIt) {
+    EXPECT_EQ(first_invalid_utf8("a man walks \xC3\xA9 \xE2\x82\xAC \xF0\x9F\x98\x80"), std::string::npos);
+    EXPECT_EQ(first_invalid_utf8("walks \xff"), 6u);
+    EXPECT_EQ(first_invalid_utf8("ab\xC3"), 2u);              // truncated
+    EXPECT_EQ(first_invalid_utf8("\xC0\xAF"), 0u);            // overlong '/'
+    EXPECT_EQ(first_invalid_utf8("x\xE0\x80\xAF"), 1u);      // overlong, three bytes
+    EXPECT_EQ(first_invalid_utf8("\xED\xA0\x80"), 0u);       // a surrogate
+    EXPECT_EQ(first_invalid_utf8("\xF4\x90\x80\x80"), 0u);  // above U+10FFFF
+    for (const std::string bad : {"walks \xff", "ab\xC3", "\xED\xA0\x80"})
+        EXPECT_THROW(nlohmann::json(bad).dump(), nlohmann::json::type_error) << bad;
 }
 
 TEST(WordTokenizer, SplitsLikeGloVesVocabulary) {

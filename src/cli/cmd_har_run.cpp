@@ -4,8 +4,10 @@
 #include <sstream>
 
 #include "cli/command.hpp"
+#include "cli/usage.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/output_path.hpp"
 #include "diffusion/torch_threads.hpp"
 #include "har/nn/har_training.hpp"
 
@@ -30,16 +32,26 @@ std::vector<std::string> split_list(const std::string& s) {
 }
 
 void run(HarArgs a) {
-    if (a.loso == !a.test.empty()) throw Error("har run", "--test", "either --test DATASET or --loso");
-    if (a.channels != "acc" && a.channels != "acc,gyr") throw Error("--channels", "channels", "acc or acc,gyr", a.channels);
-    set_torch_threads(worker_threads());
     WindowOptions w;
     w.rate_hz = a.rate;
     w.window_s = a.window;
     w.overlap = a.overlap;
     w.gyro = a.channels == "acc,gyr";
     w.positions = split_list(a.positions);
+    WindowOptions wt = w;
+    if (!a.test_positions.empty()) wt.positions = split_list(a.test_positions);
     a.options.verbose = global_options().verbose;
+    check_usage([&] {
+        if (a.loso == !a.test.empty()) throw Error("har run", "--test", "either --test DATASET or --loso");
+        if (a.channels != "acc" && a.channels != "acc,gyr") throw Error("--channels", "channels", "acc or acc,gyr", a.channels);
+        if (wt.positions.size() != w.positions.size())
+            throw Error("--test-positions", "positions", std::to_string(w.positions.size()) + " positions, one per training position");
+        if (a.folds < 0) throw Error("har run", "--folds", "0 (one per subject) or more", std::to_string(a.folds));
+        w.validate();
+        a.options.validate();
+        check_output_path(a.out, "--out");
+    });
+    set_torch_threads(worker_threads());
     WindowSet train = make_windows(read_imu_dataset(a.train), w);
     if (!a.classes.empty()) {
         std::map<std::string, std::string> keep;
@@ -52,9 +64,6 @@ void run(HarArgs a) {
         result = leave_one_subject_out(train, a.options, a.folds);
         description = (a.folds > 0 ? std::to_string(a.folds) + "-fold leave-subjects-out on " : "leave-one-subject-out on ") + a.train;
     } else {
-        WindowOptions wt = w;
-        if (!a.test_positions.empty()) wt.positions = split_list(a.test_positions);
-        if (wt.positions.size() != w.positions.size()) throw Error("--test-positions", "positions", std::to_string(w.positions.size()) + " positions, one per training position");
         const WindowSet test = make_windows(read_imu_dataset(a.test), wt);
         result = train_and_test(train, test, a.options);
         description = "trained on " + a.train + ", tested on " + a.test;

@@ -1,12 +1,14 @@
 // t2imu imu synth: joints [F,22,3] -> bodies -> virtual accelerometers and gyroscopes.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <unistd.h>
 
 #include "cli/command.hpp"
+#include "cli/usage.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/npy.hpp"
+#include "core/output_path.hpp"
 #include "imu/imu_writer.hpp"
 #include "imu/virtual_imu.hpp"
 
@@ -32,12 +34,12 @@ std::string without_side(const std::string& position) {
 // Everything is computed before anything is written, and the folder appears complete or not at all.
 void write_outputs(const SynthArgs& a, const std::vector<BodyImu>& bodies, const nlohmann::json& meta) {
     const fs::path out(a.out);
-    const fs::path tmp = out.string() + ".partial-" + std::to_string(::getpid());
+    remove_stale_partials(a.out);
+    const fs::path tmp = partial_path_for(a.out);
     fs::remove_all(tmp);
-    fs::create_directories(tmp);
     for (const BodyImu& b : bodies) {
         const fs::path dir = tmp / b.body.name;
-        fs::create_directories(dir);
+        make_directories(dir.string(), "body folder");
         for (size_t i = 0; i < b.mounts.size(); ++i) {
             const std::string& position = b.mounts[i].placement.position;
             write_imu_csv((dir / (position + ".csv")).string(), b.signals[i]);
@@ -45,24 +47,28 @@ void write_outputs(const SynthArgs& a, const std::vector<BodyImu>& bodies, const
         }
     }
     write_file_atomic((tmp / "meta.json").string(), meta.dump(2) + "\n");
-    if (fs::exists(out)) fs::remove_all(out);
-    fs::rename(tmp, out);
+    std::error_code ec;
+    fs::remove_all(out, ec);  // the previous output, replaced whole
+    if (!ec) fs::rename(tmp, out, ec);
+    if (ec) throw Error(a.out, "rename", "a replaceable output folder (the result is in " + tmp.string() + ")", ec.message());
 }
 
 void run(const SynthArgs& a) {
-    if (!(a.rate > 0 && a.rate <= 2000)) throw Error("--rate", "rate", "0 < HZ <= 2000", std::to_string(a.rate));
-    if (!(a.fps > 0)) throw Error("--fps", "fps", "a positive frame rate", std::to_string(a.fps));
-    if (!(a.jitter >= 0 && a.jitter <= 180)) throw Error("--mount-jitter", "degrees", "0 to 180", std::to_string(a.jitter));
-    const JointSequence motion = joint_sequence_from_array(read_npy(a.joints), a.joints, 22, 4, a.fps);
-    check_motion_for_imu(motion, a.joints);
-    const std::vector<BodySpec> bodies = parse_body_specs(a.body);
-    const std::vector<SensorPlacement> sensors = parse_sensor_sets(a.sensors);
     VirtualImuOptions options;
     options.rate_hz = a.rate;
     options.mount_jitter_deg = a.jitter;
     options.seed = a.seed;
-    options.noise = parse_noise_model(a.noise);
     options.twist_smoothing_frames = a.twist_smoothing;
+    check_usage([&] {
+        if (!(a.fps > 0 && std::isfinite(a.fps))) throw Error("--fps", "fps", "a positive frame rate", std::to_string(a.fps));
+        options.validate();
+        check_output_path(a.out, "--out");
+    });
+    options.noise = parse_noise_model(a.noise);
+    const std::vector<BodySpec> bodies = parse_body_specs(a.body);
+    const std::vector<SensorPlacement> sensors = parse_sensor_sets(a.sensors);
+    const JointSequence motion = joint_sequence_from_array(read_npy(a.joints), a.joints, 22, 4, a.fps);
+    check_motion_for_imu(motion, a.joints);
     std::vector<BodyImu> results;
     for (const BodySpec& b : bodies) results.push_back(synthesize_body_imu(motion, b, sensors, options));
     write_outputs(a, results, virtual_imu_meta(results, motion, options, a.joints));

@@ -1,5 +1,7 @@
 // t2imu motion import | export: motion capture <-> SMPL-22 joints (.npy).
 #include "cli/command.hpp"
+#include "cli/usage.hpp"
+#include "core/output_path.hpp"
 #include "core/npy.hpp"
 #include "motion/bvh_export.hpp"
 #include "motion/mocap_import.hpp"
@@ -19,7 +21,10 @@ static void add_import_command(CLI::App& motion) {
         ->capture_default_str()->check(CLI::IsMember({'y', 'z'}));
     cmd->add_option("--source-fps", options.source_fps, "frame rate of an AMC clip (AMC does not record it)")
         ->capture_default_str();
-    cmd->callback([] { write_npy(out, joint_sequence_to_array(import_motion(in, options))); });
+    cmd->callback([] {
+        check_usage([] { check_output_path(out, "--out"); });
+        write_npy(out, joint_sequence_to_array(import_motion(in, options)));
+    });
 }
 
 static void add_export_command(CLI::App& motion) {
@@ -29,7 +34,10 @@ static void add_export_command(CLI::App& motion) {
     cmd->add_option("input", in, "joints .npy [F,22,3]")->required()->check(CLI::ExistingFile);
     cmd->add_option("--out", out, "output .bvh")->required();
     cmd->add_option("--fps", fps, "frame rate of the joints")->capture_default_str()->check(CLI::PositiveNumber);
-    cmd->callback([] { write_bvh(out, smpl22_to_bvh(joint_sequence_from_array(read_npy(in), in, 22, 1, fps))); });
+    cmd->callback([] {
+        check_usage([] { check_output_path(out, "--out"); });
+        write_bvh(out, smpl22_to_bvh(joint_sequence_from_array(read_npy(in), in, 22, 1, fps)));
+    });
 }
 
 static CommandRegistrar registrar([](CLI::App& root) {

@@ -5,9 +5,11 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command.hpp"
+#include "cli/usage.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/npy.hpp"
+#include "core/output_path.hpp"
 #include "diffusion/lacc_evaluation.hpp"
 #include "diffusion/text_to_motion.hpp"
 #include "diffusion/torch_threads.hpp"
@@ -26,9 +28,14 @@ struct SampleArgs {
 };
 
 void run(SampleArgs a) {
-    if (a.prompt.empty() == a.prompts.empty()) throw Error("sample", "prompt", "either --prompt TEXT or --prompts FILE");
-    if (a.seconds > 0 && a.frames > 0) throw Error("sample", "length", "either --seconds or --frames");
-    a.options.frames = a.frames > 0 ? a.frames : a.seconds > 0 ? static_cast<int>(std::lround(a.seconds * 20)) : 120;
+    check_usage([&] {
+        if (a.prompt.empty() == a.prompts.empty()) throw Error("sample", "prompt", "either --prompt TEXT or --prompts FILE");
+        if (a.seconds > 0 && a.frames > 0) throw Error("sample", "length", "either --seconds or --frames");
+        if (!a.prompt.empty()) check_prompt_text(a.prompt, "--prompt", "text");
+        a.options.frames = a.frames > 0 ? a.frames : a.seconds > 0 ? static_cast<int>(std::lround(a.seconds * 20)) : 120;
+        a.options.validate();
+        check_output_path(a.out, "--out");
+    });
     set_torch_threads(worker_threads());
     const std::vector<Prompt> prompts = a.prompt.empty() ? read_prompt_set(a.prompts) : std::vector<Prompt>{{"", a.prompt}};
     std::unique_ptr<MotionModel> model = load_motion_model(a.model, global_options().device);
@@ -37,7 +44,6 @@ void run(SampleArgs a) {
     const auto start = std::chrono::steady_clock::now();
     const std::vector<FeatureMatrix> motions = sample_motions(*model, texts, a.options);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::filesystem::create_directories(a.out);
     nlohmann::json record = {{"model", std::filesystem::absolute(a.model).string()}, {"model_training", model->meta.value("training", nlohmann::json{})},
                              {"sampler", a.options.sampler}, {"steps", a.options.sampler == "ddpm" ? model->schedule.steps : a.options.steps},
                              {"guidance", a.options.guidance}, {"eta", a.options.eta}, {"frames", a.options.frames}, {"fps", 20},
@@ -46,11 +52,16 @@ void run(SampleArgs a) {
     char name[32];
     for (size_t i = 0; i < motions.size(); ++i) {
         std::snprintf(name, sizeof name, "%04zu", i);
-        write_npy(a.out + "/" + name + "_features.npy", feature_matrix_to_array(motions[i]));
-        write_npy(a.out + "/" + name + "_joints.npy", joint_sequence_to_array(recover_from_ric(motions[i])));
         record["samples"].push_back({{"id", name}, {"prompt", prompts[i].text}, {"activity", prompts[i].activity}, {"seed", a.options.seed + i}});
     }
-    write_file_atomic(a.out + "/samples.json", record.dump(2) + "\n");
+    // Serialised before the motions are written: samples.json is what says the folder is complete.
+    const std::string samples_json = record.dump(2) + "\n";
+    for (size_t i = 0; i < motions.size(); ++i) {
+        std::snprintf(name, sizeof name, "%04zu", i);
+        write_npy(a.out + "/" + name + "_features.npy", feature_matrix_to_array(motions[i]));
+        write_npy(a.out + "/" + name + "_joints.npy", joint_sequence_to_array(recover_from_ric(motions[i])));
+    }
+    write_file_atomic(a.out + "/samples.json", samples_json);
     std::printf("%s: %zu motions of %d frames (%s, guidance %g) in %.2f s on %s (%.2f motions/s)\n", a.out.c_str(), motions.size(),
                 a.options.frames, a.options.sampler.c_str(), a.options.guidance, seconds, global_options().device.c_str(),
                 static_cast<double>(motions.size()) / std::max(seconds, 1e-9));

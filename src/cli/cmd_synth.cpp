@@ -4,7 +4,9 @@
 #include <unistd.h>
 
 #include "cli/command.hpp"
+#include "cli/usage.hpp"
 #include "core/error.hpp"
+#include "core/output_path.hpp"
 #include "diffusion/torch_threads.hpp"
 #include "pipeline/synth.hpp"
 
@@ -33,7 +35,11 @@ void parse_shard(const std::string& text, SynthOptions& o) {
 
 void run(SynthArgs a) {
     SynthOptions& o = a.options;
-    parse_shard(a.shard, o);
+    check_usage([&] {
+        parse_shard(a.shard, o);
+        o.validate();
+        check_output_path(o.out, "--out");
+    });
     o.filter = !a.no_filter;
     if (o.activity_reference == kDefaultActivityReference && !std::filesystem::exists(o.activity_reference)) {
         std::fprintf(stderr, "synth: no %s here: motions are not checked for their prompt's activity\n", kDefaultActivityReference);

@@ -1,6 +1,6 @@
 // The command table of the t2imu binary. Each src/cli/cmd_*.cpp file adds its subcommands with a static
-// CommandRegistrar, so main.cpp needs no list of them. A command parses its options, calls the library
-// and prints; it throws t2imu::Error for anything wrong, which main turns into one line and exit code 1.
+// CommandRegistrar, so main.cpp needs no list of them. A command parses its options, checks them (usage.hpp: exit 2),
+// calls the library and prints; an Error thrown while working becomes one line and exit code 1.
 #pragma once
 #include <CLI/CLI.hpp>
 #include <functional>

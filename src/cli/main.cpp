@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "cli/command.hpp"
+#include "cli/usage.hpp"
 #include "core/error.hpp"
 #include "diffusion/torch_threads.hpp"
 
@@ -54,8 +55,13 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        const int rc = app.exit(e);  // CLI11 prints help, the version, or the reason for the error
-        return rc == 0 ? 0 : 2;
+        if (e.get_exit_code() == 0) return app.exit(e);  // --help and --version print what was asked for
+        // One line, like every other error (CLI11 would add a second one pointing at --help).
+        std::fprintf(stderr, "t2imu: %s\n", e.what());
+        return 2;
+    } catch (const UsageError& e) {
+        std::fprintf(stderr, "t2imu: %s\n", e.what());
+        return 2;
     } catch (const t2imu::Error& e) {
         std::fprintf(stderr, "t2imu: %s\n", e.what());
         return 1;

@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "core/error.hpp"
+#include "core/output_path.hpp"
 
 namespace t2imu {
 
@@ -16,7 +17,7 @@ namespace fs = std::filesystem;
 
 std::string temporary_path_for(const std::string& path) {
     const fs::path p(path);
-    if (p.has_parent_path()) fs::create_directories(p.parent_path());
+    if (p.has_parent_path()) make_directories(p.parent_path().string(), "folder");
     return (p.parent_path() / ("." + p.filename().string() + ".tmp" + std::to_string(getpid()))).string();
 }
 

@@ -1,5 +1,6 @@
 #include "diffusion/text_to_motion.hpp"
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 
@@ -45,25 +46,44 @@ std::string find_clip_file(const std::string& dir, const nlohmann::json& t, cons
     throw Error(dir + "/model.json", std::string("text_encoder.") + field, std::string("an existing file: ") + what + " (as written or relative to the model folder)", written);
 }
 
-MdmConfig mdm_config(const nlohmann::json& m) {
+// A whole number in [lo, hi] from model.json; the error names the field and the range. Bounds are what a model
+// can have (a negative size would otherwise surface as a shape mismatch blamed on the weights).
+int64_t model_integer(const nlohmann::json& parent, const std::string& file, const std::string& section, const char* key, int64_t lo,
+                      int64_t hi) {
+    const std::string expected = "an integer from " + std::to_string(lo) + " to " + std::to_string(hi);
+    if (!parent.contains(key)) throw Error(file, section + "." + key, expected, "missing");
+    const nlohmann::json& v = parent.at(key);
+    if (!v.is_number_integer() || v.get<int64_t>() < lo || v.get<int64_t>() > hi) throw Error(file, section + "." + key, expected, v.dump());
+    return v.get<int64_t>();
+}
+
+constexpr int64_t kMaxWidth = 1 << 16, kMaxLayers = 256;
+
+MdmConfig mdm_config(const nlohmann::json& m, const std::string& file) {
     MdmConfig mc;
-    mc.latent_dim = m.at("latent_dim");
-    mc.ff_size = m.at("ff_size");
-    mc.num_layers = m.at("num_layers");
-    mc.num_heads = m.at("num_heads");
-    mc.dropout = m.at("dropout");
-    mc.text_dim = m.at("text_dim");
-    mc.mask_frames = m.at("mask_frames");
+    mc.latent_dim = model_integer(m, file, "mdm", "latent_dim", 1, kMaxWidth);
+    mc.ff_size = model_integer(m, file, "mdm", "ff_size", 1, kMaxWidth);
+    mc.num_layers = model_integer(m, file, "mdm", "num_layers", 1, kMaxLayers);
+    mc.num_heads = model_integer(m, file, "mdm", "num_heads", 1, mc.latent_dim);
+    if (mc.latent_dim % mc.num_heads != 0) throw Error(file, "mdm.num_heads", "a divisor of mdm.latent_dim", std::to_string(mc.num_heads));
+    const nlohmann::json& dropout = m.at("dropout");
+    if (!dropout.is_number() || !(dropout.get<double>() >= 0 && dropout.get<double>() < 1)) throw Error(file, "mdm.dropout", "a number from 0 to below 1", dropout.dump());
+    mc.dropout = dropout.get<double>();
+    mc.text_dim = model_integer(m, file, "mdm", "text_dim", 1, kMaxWidth);
+    if (!m.at("mask_frames").is_boolean()) throw Error(file, "mdm.mask_frames", "true or false", m.at("mask_frames").dump());
+    mc.mask_frames = m.at("mask_frames").get<bool>();
     return mc;
 }
 
 void load_glove_encoder(MotionModel& model, const std::string& dir, const nlohmann::json& t) {
+    const std::string file = dir + "/model.json";
     GloveEncoderConfig tc;
-    tc.model_dim = t.at("model_dim");
-    tc.layers = t.at("layers");
-    tc.heads = t.at("heads");
-    tc.ff_size = t.at("ff_size");
-    tc.out_dim = t.at("out_dim");
+    tc.model_dim = model_integer(t, file, "text_encoder", "model_dim", 1, kMaxWidth);
+    tc.layers = model_integer(t, file, "text_encoder", "layers", 1, kMaxLayers);
+    tc.heads = model_integer(t, file, "text_encoder", "heads", 1, tc.model_dim);
+    if (tc.model_dim % tc.heads != 0) throw Error(file, "text_encoder.heads", "a divisor of text_encoder.model_dim", std::to_string(tc.heads));
+    tc.ff_size = model_integer(t, file, "text_encoder", "ff_size", 1, kMaxWidth);
+    tc.out_dim = model_integer(t, file, "text_encoder", "out_dim", 1, kMaxWidth);
     model.vocab = std::make_unique<WordVectors>(WordVectors::load(find_vocab(dir, t.at("vocab").get<std::string>())));
     model.text = GloveTextEncoder(*model.vocab, tc);
     load_strict(*model.text, dir + "/text_encoder.safetensors");
@@ -95,14 +115,14 @@ std::unique_ptr<MotionModel> load_motion_model(const std::string& dir, const std
     std::string clip_prefix;
     try {
         model->meta = nlohmann::json::parse(read_file_text(dir + "/model.json"));
-        const MdmConfig mc = mdm_config(model->meta.at("mdm"));
+        const MdmConfig mc = mdm_config(model->meta.at("mdm"), dir + "/model.json");
         model->mdm = Mdm(mc);
         const auto& t = model->meta.at("text_encoder");
         const std::string kind = t.at("kind").get<std::string>();
         if (kind == "glove_transformer") load_glove_encoder(*model, dir, t);
         else if (kind == "clip") clip_prefix = load_clip_encoder(*model, dir, t, mc.text_dim);
         else throw Error(dir + "/model.json", "text_encoder.kind", "glove_transformer or clip", kind);
-        model->schedule = cosine_schedule(model->meta.at("diffusion").at("steps"));
+        model->schedule = cosine_schedule(static_cast<int>(model_integer(model->meta.at("diffusion"), dir + "/model.json", "diffusion", "steps", 1, 100000)));
     } catch (const nlohmann::json::exception& e) {
         throw Error(dir + "/model.json", "json", "a t2imu model description", e.what());
     }
@@ -117,15 +137,26 @@ std::unique_ptr<MotionModel> load_motion_model(const std::string& dir, const std
     return model;
 }
 
+void SampleOptions::validate() const {
+    if (frames < 4 || frames > 196) throw Error("sampling", "--frames", "4 to 196 (20 fps)", std::to_string(frames));
+    if (sampler != "ddpm" && sampler != "ddim" && sampler != "dpmpp") throw Error("sampling", "--sampler", "ddpm, ddim or dpmpp", sampler);
+    // ddpm takes every step of the model's schedule and ignores `steps`.
+    if (sampler != "ddpm" && (steps < 1 || steps > 10000))
+        throw Error("sampling", "--steps", "1 to 10000 denoiser evaluations", std::to_string(steps));
+    // A non-finite scale turns every feature into NaN, found only much later (inverse kinematics, the IMU stage).
+    if (!std::isfinite(guidance)) throw Error("sampling", "--guidance", "a finite scale", std::to_string(guidance));
+    if (!(eta >= 0 && eta <= 1)) throw Error("sampling", "--eta", "0 to 1", std::to_string(eta));
+    if (batch < 1) throw Error("sampling", "--batch", "at least 1", std::to_string(batch));
+}
+
 std::vector<FeatureMatrix> sample_motions(MotionModel& model, const std::vector<std::string>& prompts, const SampleOptions& o) {
-    if (o.frames < 4 || o.frames > 196) throw Error("sample", "frames", "4 to 196 (20 fps)", std::to_string(o.frames));
-    if (o.sampler != "ddpm" && o.sampler != "ddim" && o.sampler != "dpmpp") throw Error("sample", "sampler", "ddpm, ddim or dpmpp", o.sampler);
+    o.validate();
     if (!o.seeds.empty() && o.seeds.size() != prompts.size()) throw Error("sample", "seeds", "one seed per prompt", std::to_string(o.seeds.size()));
     torch::NoGradGuard no_grad;
     const GaussianDiffusion diffusion(model.schedule);
     std::vector<FeatureMatrix> out;
-    for (size_t start = 0; start < prompts.size(); start += static_cast<size_t>(std::max(o.batch, 1))) {
-        const size_t n = std::min(prompts.size() - start, static_cast<size_t>(std::max(o.batch, 1)));
+    for (size_t start = 0; start < prompts.size(); start += static_cast<size_t>(o.batch)) {
+        const size_t n = std::min(prompts.size() - start, static_cast<size_t>(o.batch));
         const std::vector<std::string> batch(prompts.begin() + static_cast<std::ptrdiff_t>(start), prompts.begin() + static_cast<std::ptrdiff_t>(start + n));
         std::vector<torch::Generator> gens;
         for (size_t i = 0; i < n; ++i) gens.push_back(at::detail::createCPUGenerator(o.seeds.empty() ? o.seed + start + i : o.seeds[start + i]));

@@ -55,9 +55,12 @@ struct SampleOptions {
     uint64_t seed = 0;
     std::vector<uint64_t> seeds;   // when given, one per prompt: sample i draws from seeds[i] instead of seed + i
     int batch = 16;
+
+    // Throws Error naming the option (--frames, --steps, --guidance...) for a value out of range or not finite.
+    void validate() const;
 };
 
-// One de-normalised feature matrix [frames, 263] per prompt.
+// One de-normalised feature matrix [frames, 263] per prompt; validates `options` first.
 std::vector<FeatureMatrix> sample_motions(MotionModel& model, const std::vector<std::string>& prompts, const SampleOptions& options);
 
 }  // namespace t2imu

@@ -25,8 +25,13 @@ void load_samples(const std::string& dir, ImuRecording& r, size_t expected) {
     r.samples.resize(t.rows.size());
     for (size_t i = 0; i < t.rows.size(); ++i) {
         r.t[i] = t.number(i, 0);
-        for (size_t c = 0; c < 6; ++c) r.samples[i][c] = t.number(i, c + 1);
-        if (i > 0 && !(r.t[i] > r.t[i - 1])) throw Error(t.source, "row " + std::to_string(i + 2), "increasing time");
+        for (size_t c = 0; c < 6; ++c) {
+            r.samples[i][c] = t.number(i, c + 1);
+            // A NaN would spread through resampling and normalisation into every window and the trained network.
+            if (!std::isfinite(r.samples[i][c]))
+                throw Error(t.source, "row " + std::to_string(i + 2) + " column '" + kSampleColumns[c + 1] + "'", "a finite number", "'" + t.rows[i][c + 1] + "'");
+        }
+        if (!std::isfinite(r.t[i]) || (i > 0 && !(r.t[i] > r.t[i - 1]))) throw Error(t.source, "row " + std::to_string(i + 2), "finite, increasing time");
     }
 }
 
@@ -54,6 +59,8 @@ std::vector<ImuRecording> read_imu_dataset(const std::string& dir, bool load) {
         rec.activity = m.rows[r][m.column("activity")];
         rec.position = m.rows[r][m.column("position")];
         rec.rate_hz = m.number(r, m.column("rate_hz"));
+        if (!(rec.rate_hz > 0 && std::isfinite(rec.rate_hz)))
+            throw Error(m.source, "row " + std::to_string(r + 2) + " column 'rate_hz'", "a positive rate", "'" + m.rows[r][m.column("rate_hz")] + "'");
         for (size_t c = 0; c < m.header.size(); ++c)
             if (std::find(kColumns.begin(), kColumns.end(), m.header[c]) == kColumns.end()) rec.extra[m.header[c]] = m.rows[r][c];
         if (load) load_samples(dir, rec, static_cast<size_t>(m.number(r, m.column("n_samples"))));

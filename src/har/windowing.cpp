@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
+#include <set>
 
 #include "core/error.hpp"
 #include "har/class_map.hpp"
@@ -26,6 +28,18 @@ std::string trial_key(const ImuRecording& r) {
 
 bool position_matches(const std::string& wanted, const std::string& position) {
     return position == wanted || position == "left_" + wanted || position == "right_" + wanted;
+}
+
+// A wanted position no recording matches is a typo or the wrong data set, not an empty result.
+void check_positions_held(const std::vector<ImuRecording>& recordings, const std::vector<std::string>& positions) {
+    std::set<std::string> held;
+    for (const ImuRecording& r : recordings) held.insert(r.position);
+    for (const std::string& p : positions) {
+        if (std::any_of(held.begin(), held.end(), [&](const std::string& h) { return position_matches(p, h); })) continue;
+        std::string list;
+        for (const std::string& h : held) list += (list.empty() ? "" : ", ") + h;
+        throw Error("--positions", p, "a position the data set holds (" + list + ")");
+    }
 }
 
 }  // namespace
@@ -56,9 +70,15 @@ std::vector<double> resample_channel(const std::vector<double>& x, double rate_i
     return out;
 }
 
+void WindowOptions::validate() const {
+    if (!(rate_hz > 0 && rate_hz <= 10000)) throw Error("windows", "--rate", "0 < HZ <= 10000", std::to_string(rate_hz));
+    if (!(window_s > 0 && window_s <= 3600)) throw Error("windows", "--window", "0 < SECONDS <= 3600", std::to_string(window_s));
+    if (!(overlap >= 0 && overlap < 1)) throw Error("windows", "--overlap", "0 <= OVERLAP < 1", std::to_string(overlap));
+    if (std::lround(window_s * rate_hz) < 1) throw Error("windows", "--window", "at least one sample at the rate", std::to_string(window_s) + " s");
+}
+
 WindowSet make_windows(const std::vector<ImuRecording>& recordings, const WindowOptions& o) {
-    if (!(o.rate_hz > 0 && o.window_s > 0 && o.overlap >= 0 && o.overlap < 1))
-        throw Error("windows", "options", "rate > 0, window > 0, 0 <= overlap < 1");
+    o.validate();
     std::vector<std::string> positions = o.positions;
     if (positions.empty()) {
         std::set<std::string> all;
@@ -66,6 +86,7 @@ WindowSet make_windows(const std::vector<ImuRecording>& recordings, const Window
         if (all.size() != 1) throw Error("--positions", "positions", "a choice: the data set holds " + std::to_string(all.size()) + " positions");
         positions = {*all.begin()};
     }
+    check_positions_held(recordings, positions);
     std::map<std::string, std::vector<const ImuRecording*>> trials;
     for (const ImuRecording& r : recordings) trials[r.dataset + "|" + trial_key(r)].push_back(&r);
     WindowSet w;
@@ -73,6 +94,7 @@ WindowSet make_windows(const std::vector<ImuRecording>& recordings, const Window
     const int per_position = o.gyro ? 6 : 3;
     w.channels = per_position * static_cast<int>(positions.size());
     const int step = std::max(1, static_cast<int>(std::lround(w.length * (1 - o.overlap))));
+    size_t longest = 0;  // samples of the longest trial with every position, to name a window that fits none
     for (const auto& [key, recs] : trials) {
         std::vector<const ImuRecording*> chosen;
         for (const std::string& p : positions) {
@@ -94,6 +116,7 @@ WindowSet make_windows(const std::vector<ImuRecording>& recordings, const Window
                 channels.push_back(resample_channel(x, r->rate_hz, o.rate_hz));
                 n = std::min(n, channels.back().size());
             }
+        longest = std::max(longest, n);
         for (size_t start = 0; start + static_cast<size_t>(w.length) <= n; start += static_cast<size_t>(step)) {
             for (int k = 0; k < w.length; ++k)
                 for (const std::vector<double>& ch : channels) w.data.push_back(static_cast<float>(ch[start + static_cast<size_t>(k)]));
@@ -101,6 +124,12 @@ WindowSet make_windows(const std::vector<ImuRecording>& recordings, const Window
             w.subjects.push_back(chosen[0]->dataset + ":" + chosen[0]->subject);
             w.groups.push_back(key);
         }
+    }
+    if (w.size() == 0 && longest > 0 && longest < static_cast<size_t>(w.length)) {
+        char expected[64], got[32];
+        std::snprintf(expected, sizeof expected, "at most the longest trial, %.3g s", static_cast<double>(longest) / o.rate_hz);
+        std::snprintf(got, sizeof got, "%g s", o.window_s);
+        throw Error("windows", "--window", expected, got);
     }
     return w;
 }

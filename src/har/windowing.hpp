@@ -21,6 +21,9 @@ struct WindowOptions {
     double rate_hz = 20, window_s = 2, overlap = 0.5;
     bool gyro = false;                   // acc only, or acc and gyr
     std::vector<std::string> positions;  // empty: the data set must hold a single position
+
+    // Throws Error naming the option (--rate, --window, --overlap) for a value out of range or not finite.
+    void validate() const;
 };
 
 struct WindowSet {
@@ -32,7 +35,8 @@ struct WindowSet {
     size_t size() const { return labels.size(); }
 };
 
-// Windows of every trial that has all requested positions; labels through map_activity ("" = dropped).
+// Windows of every trial that has all requested positions; labels through map_activity ("" = dropped). Refuses a
+// requested position no recording has, and a window longer than every trial that has the positions.
 WindowSet make_windows(const std::vector<ImuRecording>& recordings, const WindowOptions& options);
 
 // One channel resampled from rate_in to rate_out (see above).

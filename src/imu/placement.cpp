@@ -2,11 +2,12 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <set>
-#include <toml++/toml.h>
 
 #include "core/error.hpp"
+#include "core/toml_section.hpp"
 
 namespace t2imu {
 
@@ -114,30 +115,33 @@ PlacementSet builtin_placement_set(const std::string& name) {
 }
 
 PlacementSet read_placement_toml(const std::string& path) {
-    toml::table doc;
-    try {
-        doc = toml::parse_file(path);
-    } catch (const toml::parse_error& e) {
-        throw Error(path, "toml", "a valid TOML file", std::string(e.description()));
-    }
+    // Strict: a misspelt key ("aroud") or a wrong type (along = "far") is refused by name, not left at its default.
+    const toml::table doc = parse_toml_file(path);
+    TomlSection top(doc, path, "");
     PlacementSet set;
-    set.name = doc["name"].value_or(std::string("custom"));
-    const toml::array* sensors = doc["sensor"].as_array();
-    if (!sensors || sensors->empty()) throw Error(path, "sensor", "at least one [[sensor]] table");
-    for (const toml::node& node : *sensors) {
-        const toml::table* t = node.as_table();
-        if (!t) throw Error(path, "sensor", "tables ([[sensor]])");
+    set.name = "custom";
+    top.read("name", set.name);
+    std::vector<TomlSection> sensors = top.array_of_tables("sensor");
+    top.refuse_unknown_keys();
+    if (sensors.empty()) throw Error(path, "sensor", "at least one [[sensor]] table");
+    for (TomlSection& t : sensors) {
         SensorPlacement p;
-        p.position = (*t)["position"].value_or(std::string());
-        if (p.position.empty()) throw Error(path, "position", "a position name in every [[sensor]]");
-        const std::string segment = (*t)["segment"].value_or(std::string());
-        p.segment = joint_index(segment, path);
-        p.along = (*t)["along"].value_or(0.5);
-        p.around_deg = (*t)["around"].value_or(0.0);
-        p.vertex = static_cast<int>((*t)["vertex"].value_or(int64_t{-1}));
-        p.note = (*t)["note"].value_or(std::string("custom placement from ") + path);
+        std::string segment;
+        int64_t vertex = -1;
+        p.note = "custom placement from " + path;
+        t.require("position", p.position);
+        t.require("segment", segment);
+        t.read("along", p.along);
+        t.read("around", p.around_deg);
+        t.read("vertex", vertex);
+        t.read("note", p.note);
         const char* keys[3] = {"x", "y", "z"};
-        for (int a = 0; a < 3; ++a) p.axis[a] = (*t)[keys[a]].value_or(std::string());
+        for (int a = 0; a < 3; ++a) t.read(keys[a], p.axis[a]);
+        t.refuse_unknown_keys();
+        if (p.position.empty()) throw Error(path, "position", "a position name in every [[sensor]]");
+        p.segment = joint_index(segment, path);
+        if (vertex < -1 || vertex > std::numeric_limits<int>::max()) throw Error(path, p.position + " vertex", "a vertex index (0 or more)", std::to_string(vertex));
+        p.vertex = static_cast<int>(vertex);
         if (!std::isfinite(p.along) || p.along < -0.5 || p.along > 2.0) throw Error(path, p.position + " along", "-0.5 to 2", std::to_string(p.along));
         if (!std::isfinite(p.around_deg)) throw Error(path, p.position + " around", "degrees");
         check_axes(p, path);

@@ -1,6 +1,7 @@
 #include "imu/virtual_imu.hpp"
 
 #include <Eigen/Geometry>
+#include <cmath>
 
 #include "body/procedural_body.hpp"
 #include "core/error.hpp"
@@ -56,8 +57,16 @@ void sensor_track(const BodyModel& body, const FittedMotion& motion, const Senso
     }
 }
 
+void VirtualImuOptions::validate() const {
+    if (!(rate_hz > 0 && rate_hz <= 2000)) throw Error("--rate", "rate", "0 < HZ <= 2000", std::to_string(rate_hz));
+    if (!(mount_jitter_deg >= 0 && mount_jitter_deg <= 180)) throw Error("--mount-jitter", "degrees", "0 to 180", std::to_string(mount_jitter_deg));
+    if (!(twist_smoothing_frames >= 0 && std::isfinite(twist_smoothing_frames)))
+        throw Error("--twist-smoothing", "sigma", "0 or more frames", std::to_string(twist_smoothing_frames));
+}
+
 BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& spec, const std::vector<SensorPlacement>& sensors,
                             const VirtualImuOptions& options) {
+    options.validate();
     BodyImu out;
     const bool none = spec.kind == BodySpec::Kind::none;
     out.body = none ? size_body_to_motion(motion) : spec;

@@ -22,6 +22,9 @@ struct VirtualImuOptions {
     uint64_t seed = 0;
     SensorNoiseModel noise;
     double twist_smoothing_frames = 0;
+
+    // Throws Error naming the option (--rate, --mount-jitter, --twist-smoothing) for a value out of range.
+    void validate() const;
 };
 
 struct BodyImu {

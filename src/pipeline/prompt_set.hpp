@@ -1,6 +1,7 @@
 // Prompt sets (prompts/*.tsv): one prompt per line, or `activity<TAB>prompt` where activity is the class name
 // the synthetic recordings are labelled with (the IMU dataset layout's canonical names, or a real data set's
-// own). Lines starting with # and empty lines are skipped; a trailing CR is dropped.
+// own). Lines starting with # and empty lines are skipped; a trailing CR is dropped. Text must be valid UTF-8
+// without control characters: prompts end up in JSON, CSV and the text encoder, which all need that.
 #pragma once
 #include <string>
 #include <vector>
@@ -12,7 +13,13 @@ struct Prompt {
     std::string text;
 };
 
-// Refuses an unreadable or empty file, naming it.
-std::vector<Prompt> read_prompt_set(const std::string& path);
+// Whether every line must name its activity (synth labels its recordings with it).
+enum class PromptActivity { optional, required };
+
+// Refuses an unreadable or empty file, and a bad line naming the file and its line number.
+std::vector<Prompt> read_prompt_set(const std::string& path, PromptActivity activity = PromptActivity::optional);
+
+// Throws Error naming `source` and `field` unless `text` is valid UTF-8 without control characters.
+void check_prompt_text(const std::string& text, const std::string& source, const std::string& field);
 
 }  // namespace t2imu

@@ -14,6 +14,7 @@
 #include "core/csv.hpp"
 #include "core/error.hpp"
 #include "core/npy.hpp"
+#include "core/output_path.hpp"
 #include "har/imu_dataset.hpp"
 #include "imu/imu_writer.hpp"
 #include "imu/virtual_imu.hpp"
@@ -157,11 +158,27 @@ void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt&
                 const std::string path = "recordings/" + name + "/" + r.body.name + "/" + r.mounts[s].placement.position + ".csv";
                 write_imu_csv(o.out + "/" + path, r.signals[s]);
                 marker["recordings"].push_back({{"path", path}, {"body", r.body.name}, {"position", r.mounts[s].placement.position},
-                                                {"n_samples", r.signals[s].t.size()}});
+                                                {"n_samples", r.signals[s].t.size()}, {"bytes", fs::file_size(o.out + "/" + path)}});
             }
         }
     }
     write_file_atomic(o.out + "/jobs/" + name + ".json", marker.dump(1) + "\n");
+}
+
+// Whether job `job` is finished and whole: its marker reads, each recording it lists exists with the size it was
+// written with (markers from before sizes were recorded: exists), and a kept motion's joints exist. A resume redoes
+// a job whose files went missing or were cut short (a full disk, a copy that broke off).
+bool job_intact(const std::string& out, int job) {
+    const std::string path = out + "/jobs/" + job_name(job) + ".json";
+    if (!fs::exists(path)) return false;
+    const json marker = json::parse(read_file_text(path), nullptr, false);
+    if (marker.is_discarded() || !marker.is_object()) return false;
+    for (const json& r : marker.value("recordings", json::array())) {
+        std::error_code ec;
+        const uintmax_t size = fs::file_size(out + "/" + r.value("path", std::string()), ec);
+        if (ec || (r.contains("bytes") && r["bytes"] != size)) return false;
+    }
+    return !marker.value("kept", false) || fs::exists(out + "/motions/" + job_name(job) + "_joints.npy");
 }
 
 // Runs fn(i) for i in [0, n) on `threads` workers.
@@ -212,13 +229,23 @@ void check_or_write_settings(const std::string& out, const json& settings) {
     write_file_atomic(path, settings.dump(1) + "\n");
 }
 
-void check_options(const SynthOptions& o) {
-    if (o.samples_per_prompt < 1) throw Error("synth", "--samples-per-prompt", "at least 1", std::to_string(o.samples_per_prompt));
-    if (!(o.seconds >= 0.2 && o.seconds <= kMaxMotionFrames / 20.0)) throw Error("synth", "--seconds", "0.2 to 9.8", std::to_string(o.seconds));
-    if (o.shards < 1 || o.shard < 0 || o.shard >= o.shards) throw Error("synth", "--shard", "I/N with 1 <= I <= N");
-    if (o.max_retries < 0) throw Error("synth", "--retries", "0 or more", std::to_string(o.max_retries));
-    if (o.out.empty()) throw Error("synth", "--out", "an output folder");
+}  // namespace
+
+void SynthOptions::validate() const {
+    if (samples_per_prompt < 1) throw Error("synth", "--samples-per-prompt", "at least 1", std::to_string(samples_per_prompt));
+    if (!(seconds >= 0.2 && seconds <= kMaxMotionFrames / 20.0)) throw Error("synth", "--seconds", "0.2 to 9.8", std::to_string(seconds));
+    if (shards < 1 || shard < 0 || shard >= shards) throw Error("synth", "--shard", "I/N with 1 <= I <= N");
+    if (max_retries < 0) throw Error("synth", "--retries", "0 or more", std::to_string(max_retries));
+    VirtualImuOptions imu;
+    imu.rate_hz = rate_hz;
+    imu.validate();
+    if (!(min_activity_agreement >= 0 && min_activity_agreement <= 1))
+        throw Error("synth", "--min-activity-agreement", "0 to 1", std::to_string(min_activity_agreement));
+    if (out.empty()) throw Error("synth", "--out", "an output folder");
+    sampling.validate();
 }
+
+namespace {
 
 std::vector<json> read_markers(const std::string& out) {
     std::vector<json> markers;
@@ -290,9 +317,9 @@ json report_json(const std::vector<json>& markers, int total_jobs, const json& t
 }  // namespace
 
 json run_synth(const SynthOptions& o, const std::function<void(const SynthProgress&)>& progress) {
-    check_options(o);
+    o.validate();
     const auto start = Clock::now();
-    const std::vector<Prompt> prompts = read_prompt_set(o.prompts);
+    const std::vector<Prompt> prompts = read_prompt_set(o.prompts, PromptActivity::required);
     Stage stage{parse_body_specs(o.bodies), parse_sensor_sets(o.sensors), {}};
     stage.imu.rate_hz = o.rate_hz;
     stage.imu.noise = parse_noise_model(o.noise);
@@ -303,7 +330,7 @@ json run_synth(const SynthOptions& o, const std::function<void(const SynthProgre
     if (!o.activity_reference.empty()) classifier = MotionActivityClassifier::load(o.activity_reference);
     const double load_s = since(t0);
     const json described = source->describe();
-    fs::create_directories(o.out + "/jobs");
+    make_directories(o.out + "/jobs", "jobs folder");
     check_or_write_settings(o.out, settings_json(o, prompts, described));
 
     const int total = static_cast<int>(prompts.size()) * o.samples_per_prompt;
@@ -311,7 +338,7 @@ json run_synth(const SynthOptions& o, const std::function<void(const SynthProgre
     const int last = static_cast<int>(static_cast<long long>(total) * (o.shard + 1) / o.shards);
     std::vector<int> todo;
     for (int k = first; k < last; ++k)
-        if (!fs::exists(o.out + "/jobs/" + job_name(k) + ".json")) todo.push_back(k);
+        if (!job_intact(o.out, k)) todo.push_back(k);
     SynthProgress p{last - first - static_cast<int>(todo.size()), last - first, 0};
     double generate_s = 0, score_s = 0, imu_s = 0;
     const size_t batch = static_cast<size_t>(std::max(1, o.sampling.batch));

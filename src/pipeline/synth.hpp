@@ -60,6 +60,10 @@ struct SynthOptions {
     std::string device = "cpu";
     int threads = 1;                     // workers for the bodies/IMU stage
     std::string out;
+
+    // Throws Error naming the option for a value out of range, not finite or unknown; run_synth calls it before
+    // any work, and the CLI before that, so a bad value never leaves a half-made folder.
+    void validate() const;
 };
 
 struct SynthProgress {

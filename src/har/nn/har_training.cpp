@@ -189,7 +189,18 @@ Labelled labelled(const WindowSet& w, const std::vector<std::string>& classes, c
 
 }  // namespace
 
+void HarOptions::validate() const {
+    if (repeats < 1) throw Error("har", "--repeats", "at least 1 training", std::to_string(repeats));
+    // Fewer than one epoch would leave no trained state to test (it used to crash restoring the best epoch).
+    if (max_epochs < 1) throw Error("har", "--epochs", "at least 1 epoch", std::to_string(max_epochs));
+    if (patience < 1) throw Error("har", "patience", "at least 1 epoch", std::to_string(patience));
+    if (batch < 1) throw Error("har", "batch", "at least 1 window", std::to_string(batch));
+    if (!(learning_rate > 0 && std::isfinite(learning_rate))) throw Error("har", "learning_rate", "a positive number", std::to_string(learning_rate));
+    if (!(validation_share >= 0 && validation_share < 1)) throw Error("har", "validation_share", "0 to below 1", std::to_string(validation_share));
+}
+
 HarResult train_and_test(const WindowSet& train, const WindowSet& test, const HarOptions& o) {
+    o.validate();
     if (train.channels != test.channels || train.length != test.length)
         throw Error("har", "windows", "the same channels and length on both sides",
                     std::to_string(train.channels) + " vs " + std::to_string(test.channels) + " channels");
@@ -209,6 +220,7 @@ HarResult train_and_test(const WindowSet& train, const WindowSet& test, const Ha
 }
 
 HarResult leave_one_subject_out(const WindowSet& data, const HarOptions& o, int folds) {
+    o.validate();
     std::map<std::string, std::string> rename;
     for (const std::string& l : data.labels) rename[l] = l;
     const std::set<std::string> labels(data.labels.begin(), data.labels.end());

@@ -23,6 +23,9 @@ struct HarOptions {
     int max_epochs = 40, patience = 5, batch = 64;
     double learning_rate = 1e-3, validation_share = 0.15;
     bool verbose = false;
+
+    // Throws Error naming the option (--repeats, --epochs...) for a value out of range; the trainings call it.
+    void validate() const;
 };
 
 struct HarRun {

@@ -1,0 +1,82 @@
+#include "core/output_path.hpp"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <vector>
+
+#include "core/error.hpp"
+
+namespace t2imu {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// `path` absolute, without a trailing separator, so that parent_path() and filename() mean what they say.
+fs::path normalised(const std::string& path) {
+    fs::path p = fs::absolute(fs::path(path)).lexically_normal();
+    return p.has_filename() ? p : p.parent_path();
+}
+
+bool exists_no_throw(const fs::path& p) {
+    std::error_code ec;
+    return fs::exists(fs::symlink_status(p, ec));
+}
+
+}  // namespace
+
+void check_output_path(const std::string& path, const std::string& option) {
+    if (path.empty()) throw Error(option, "path", "an output path");
+    const fs::path target = normalised(path);
+    std::vector<fs::path> missing;  // the folders above `target` that do not exist yet, deepest first
+    fs::path existing = target.parent_path();
+    while (!exists_no_throw(existing)) {
+        missing.push_back(existing);
+        existing = existing.parent_path();
+    }
+    std::error_code ec;
+    if (!fs::is_directory(existing, ec)) throw Error(option, path, "a path below folders", existing.string() + " is a file");
+    if (::access(existing.c_str(), W_OK | X_OK) != 0)
+        throw Error(option, path, "a writable folder to write into", existing.string() + ": " + std::strerror(errno));
+    if (exists_no_throw(target) && fs::is_directory(target, ec) && ::access(target.c_str(), W_OK | X_OK) != 0)
+        throw Error(option, path, "a writable folder", std::strerror(errno));
+    if (missing.empty()) return;
+    // access() says yes to root on filesystems that refuse anyway (/proc): only creating the folders proves it.
+    fs::create_directories(missing.front(), ec);
+    for (const fs::path& p : missing) {
+        std::error_code ignored;  // deepest first, so each is empty when its turn comes; absent ones were never made
+        fs::remove(p, ignored);
+    }
+    if (ec) throw Error(option, path, "folders that can be created", ec.message());
+}
+
+void make_directories(const std::string& path, const std::string& field) {
+    std::error_code ec;
+    fs::create_directories(path, ec);
+    if (ec) throw Error(path, field, "a folder that can be created", ec.message());
+}
+
+std::string partial_path_for(const std::string& path) {
+    return normalised(path).string() + ".partial-" + std::to_string(::getpid());
+}
+
+void remove_stale_partials(const std::string& path) {
+    const fs::path target = normalised(path);
+    const std::string prefix = target.filename().string() + ".partial-";
+    std::error_code ec;
+    for (const fs::directory_entry& e : fs::directory_iterator(target.parent_path(), ec)) {
+        const std::string name = e.path().filename().string();
+        if (name.compare(0, prefix.size(), prefix) != 0) continue;
+        const std::string pid = name.substr(prefix.size());
+        if (pid.empty() || pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos) continue;
+        if (::kill(static_cast<pid_t>(std::stol(pid)), 0) == 0 || errno != ESRCH) continue;  // alive, or not ours to judge
+        std::error_code ignored;  // best effort: a folder we cannot remove only costs disk space
+        fs::remove_all(e.path(), ignored);
+    }
+}
+
+}  // namespace t2imu

@@ -1,0 +1,23 @@
+// Output paths checked before any work: a job that cannot write its result should say so at once, naming the
+// option, not after minutes of work with a raw std::filesystem message. Also the clean-up of folders that killed
+// runs left behind.
+#pragma once
+#include <string>
+
+namespace t2imu {
+
+// Throws Error naming `option` and `path` unless `path` (a file or folder to be written) can be made: the folders
+// above it exist or can be created, none of them is a file, and the nearest existing one is writable. Missing
+// folders are created to prove it and removed again, so a refused run leaves nothing behind.
+void check_output_path(const std::string& path, const std::string& option);
+
+// create_directories with an Error naming `path` and what it is for (`field`) instead of std::filesystem_error.
+void make_directories(const std::string& path, const std::string& field);
+
+// Removes `<path>.partial-<pid>` folders beside `path` whose process is gone (killed runs): a partial folder of a
+// live process (a concurrent run) is left alone.
+void remove_stale_partials(const std::string& path);
+// The folder a run of this process builds before renaming it onto `path`.
+std::string partial_path_for(const std::string& path);
+
+}  // namespace t2imu

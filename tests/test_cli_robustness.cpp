@@ -1,0 +1,175 @@
+// Bad input never crashes t2imu, never leaves a half-made output, and every refusal is one line naming what to
+// fix. One row per case: the arguments, the input files the row writes, the exit code (2: a flag or option value
+// refused before any work; 1: an input refused or the work failed), a fragment of the message and the paths that
+// must not exist afterwards. Each row runs in its own folder; {D} in arguments stands for it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include "body/procedural_body.hpp"
+#include "core/npy.hpp"
+#include "test_util.hpp"
+
+using namespace t2imu;
+using namespace std::string_literals;
+namespace fs = std::filesystem;
+
+namespace {
+
+using Files = std::map<std::string, std::string>;  // path relative to the row's folder -> content
+
+struct Row {
+    std::string name;
+    std::string args;
+    Files files;
+    int exit_code;
+    std::string fragment;
+    std::vector<std::string> absent;
+};
+
+// gtest names a failing row by this instead of dumping its bytes.
+void PrintTo(const Row& row, std::ostream* os) { *os << row.name; }
+
+Files operator+(Files a, const Files& b) {
+    a.insert(b.begin(), b.end());
+    return a;
+}
+
+// A tiny data set in the IMU dataset layout (har/imu_dataset.hpp): two subjects walking and running, chest,
+// 6 s at 20 Hz. `bad_cell` replaces the first acc_x value of the first recording.
+Files imu_dataset(const std::string& dir, const std::string& bad_cell = "") {
+    Files f;
+    std::string manifest = "path,dataset,subject,activity,position,rate_hz,n_samples,units\n";
+    int k = 0;
+    for (const char* subject : {"s1", "s2"})
+        for (const auto& [activity, hz] : std::vector<std::pair<std::string, double>>{{"walking", 1.0}, {"running", 3.0}}) {
+            const std::string path = subject + ("_" + activity) + "_chest.csv";
+            std::string csv = "t,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n";
+            for (int i = 0; i <= 120; ++i) {
+                const double t = i / 20.0, a = std::sin(2 * M_PI * hz * t);
+                const std::string x = k == 0 && i == 0 && !bad_cell.empty() ? bad_cell : std::to_string(a);
+                csv += std::to_string(t) + "," + x + ",9.81," + std::to_string(0.5 * a) + ",0,0,0\n";
+            }
+            f[dir + "/" + path] = csv;
+            manifest += path + ",t2imu," + subject + "," + activity + ",chest,20,121,-\n";
+            ++k;
+        }
+    f[dir + "/manifest.csv"] = manifest;
+    return f;
+}
+
+// A standing average man, 2 s at 20 fps: joints .npy [41, 22, 3].
+Files standing_joints(const std::string& path) {
+    const ProceduralBody body(paper_bodies()[2]);
+    std::vector<float> v;
+    for (int f = 0; f < 41; ++f)
+        for (const Eigen::Vector3d& j : body.rest_joints())
+            for (int c = 0; c < 3; ++c) v.push_back(static_cast<float>(j[c]));
+    const std::vector<uint8_t> bytes = serialize_npy(NdArray::from(v, {41, 22, 3}));
+    return {{path, std::string(bytes.begin(), bytes.end())}};
+}
+
+// model.json of a small GloVe-encoder model, `num_layers` written as given; nothing else of the folder exists.
+Files model_json(const std::string& num_layers) {
+    return {{"model/model.json", R"({"mdm": {"latent_dim": 32, "ff_size": 64, "num_layers": )" + num_layers +
+                                     R"(, "num_heads": 2, "dropout": 0.0, "text_dim": 16, "mask_frames": false},
+                                   "text_encoder": {"kind": "glove_transformer", "vocab": "vocab.safetensors", "model_dim": 16,
+                                                    "layers": 1, "heads": 2, "ff_size": 32, "out_dim": 16},
+                                   "diffusion": {"steps": 50}})"}};
+}
+
+const Files kPrompts = {{"p.tsv", "walking\tA man walks forward\n"}};
+const Files kFile = {{"file", "a regular file, not a folder\n"}};
+const std::string kSynth = "synth --prompts {D}/p.tsv --activity-reference '' --model {D}/no-model ";
+const std::string kHar = "har run --train {D}/imu --test {D}/imu --positions chest ";
+const std::string kSample = "sample --model {D} --prompt 'a man walks' ";
+const std::string kImuSynth = "imu synth --joints {D}/j.npy --body preset:male_average ";
+
+std::vector<Row> rows() {
+    return {
+        // 1: HAR trainings with no epoch crashed restoring the best one; no run is not a result.
+        {"HarZeroEpochs", kHar + "--repeats 1 --epochs 0 --out {D}/o.json", imu_dataset("imu"), 2, "--epochs", {"o.json"}},
+        {"HarNegativeEpochs", kHar + "--repeats 1 --epochs -1 --out {D}/o.json", imu_dataset("imu"), 2, "--epochs", {"o.json"}},
+        {"HarZeroRepeats", kHar + "--repeats 0 --out {D}/o.json", imu_dataset("imu"), 2, "--repeats", {"o.json"}},
+        {"HarOneEpochRuns", kHar + "--repeats 1 --epochs 1 --out {D}/o.json", imu_dataset("imu"), 0, "balanced accuracy", {}},
+        // 2, 11: prompts are UTF-8 text without control characters; synth needs each line's activity.
+        {"SynthInvalidUtf8Prompt", kSynth + "--out {D}/o", {{"p.tsv", "walking\tA man \xff\xfe walks\n"}}, 1, "p.tsv: line 1: expected UTF-8", {"o"}},
+        {"SynthNulInPrompt", kSynth + "--out {D}/o", {{"p.tsv", "# walks\nwalking\tA man \0 walks\n"s}}, 1, "p.tsv: line 2: expected text without control characters (got U+0000)", {"o"}},
+        {"SynthPromptWithoutTab", kSynth + "--out {D}/o", {{"p.tsv", "A man walks\n"}}, 1, "p.tsv: line 1: expected activity<TAB>prompt", {"o"}},
+        {"SampleInvalidUtf8Prompt", "sample --model {D} --prompt 'walks \xff' --out {D}/o", {}, 2, "--prompt: text: expected UTF-8", {"o"}},
+        // 3: an output that cannot be made is refused, naming the option, before any work.
+        {"ExportOutBelowFile", "motion export {D}/j.npy --out {D}/file/o.bvh", standing_joints("j.npy") + kFile, 2, "--out: ", {}},
+        {"ExportOutInProc", "motion export {D}/j.npy --out /proc/x/o.bvh", standing_joints("j.npy"), 2, "--out: /proc/x/o.bvh", {}},
+        {"ImuSynthOutInProc", kImuSynth + "--out /proc/x/o", standing_joints("j.npy"), 2, "--out: /proc/x/o", {}},
+        {"ImuSynthOutBelowFile", kImuSynth + "--out {D}/file/o", standing_joints("j.npy") + kFile, 2, "is a file", {}},
+        {"SynthOutInProc", kSynth + "--out /proc/x/o", kPrompts, 2, "--out: /proc/x/o", {}},
+        {"SampleOutBelowFile", kSample + "--out {D}/file/o", kFile, 2, "--out: ", {}},
+        {"HarOutInProc", kHar + "--repeats 1 --out /proc/x/o.json", imu_dataset("imu"), 2, "--out: /proc/x/o.json", {}},
+        // The check creates missing folders to prove it can, and removes them: a run refused later leaves none.
+        {"HarCheckedOutFoldersRemoved", "har run --train {D}/imu --test {D}/imu --positions tentacle --repeats 1 --out {D}/a/b/o.json",
+         imu_dataset("imu"), 1, "tentacle", {"a"}},
+        // 4: model.json's fields are read by name with their range.
+        {"ModelLayersNotANumber", "sample --model {D}/model --prompt walks --out {D}/o", model_json(R"("four")"), 1, "mdm.num_layers: expected an integer from 1", {"o"}},
+        {"ModelLayersNegative", "sample --model {D}/model --prompt walks --out {D}/o", model_json("-3"), 1, "mdm.num_layers: expected an integer from 1 to 256 (got -3)", {"o"}},
+        // 5: sensor sets are read strictly.
+        {"SensorTomlMisspeltKey", kImuSynth + "--sensors {D}/s.toml --out {D}/o", standing_joints("j.npy") + Files{{"s.toml", "[[sensor]]\nposition = \"wrist\"\nsegment = \"right_elbow\"\naroud = -90\nx = \"distal\"\nz = \"out\"\n"}},
+         1, "s.toml: sensor[0].aroud: expected a known key", {"o"}},
+        {"SensorTomlWrongType", kImuSynth + "--sensors {D}/s.toml --out {D}/o", standing_joints("j.npy") + Files{{"s.toml", "[[sensor]]\nposition = \"wrist\"\nsegment = \"right_elbow\"\nalong = \"far\"\nx = \"distal\"\nz = \"out\"\n"}},
+         1, "s.toml: sensor[0].along: expected", {"o"}},
+        // 6, 7: option values are checked before any work or output.
+        {"SynthGuidanceNan", kSynth + "--guidance nan --out {D}/o", kPrompts, 2, "--guidance: expected a finite scale", {"o"}},
+        {"SampleGuidanceInf", kSample + "--guidance inf --out {D}/o", {}, 2, "--guidance: expected a finite scale", {"o"}},
+        {"SynthRateZero", kSynth + "--rate 0 --out {D}/o", kPrompts, 2, "--rate", {"o"}},
+        {"SynthRateNegative", kSynth + "--rate -5 --out {D}/o", kPrompts, 2, "--rate", {"o"}},
+        {"SynthStepsZero", kSynth + "--steps 0 --out {D}/o", kPrompts, 2, "--steps", {"o"}},
+        {"SynthAgreementAboveOne", kSynth + "--min-activity-agreement 2 --out {D}/o", kPrompts, 2, "--min-activity-agreement", {"o"}},
+        {"SynthBatchZero", kSynth + "--batch 0 --out {D}/o", kPrompts, 2, "--batch", {"o"}},
+        {"ImuSynthJitterOutOfRange", kImuSynth + "--mount-jitter 500 --out {D}/o", standing_joints("j.npy"), 2, "--mount-jitter", {"o"}},
+        // 10: HAR names the position, the window and the damaged cell.
+        {"HarUnknownPosition", "har run --train {D}/imu --test {D}/imu --positions tentacle --repeats 1 --out {D}/o.json", imu_dataset("imu"), 1,
+         "--positions: tentacle: expected a position the data set holds (chest)", {"o.json"}},
+        {"HarWindowLongerThanTrials", kHar + "--window 100 --repeats 1 --out {D}/o.json", imu_dataset("imu"), 1, "--window: expected at most the longest trial", {"o.json"}},
+        {"HarNanCell", kHar + "--repeats 1 --out {D}/o.json", imu_dataset("imu", "nan"), 1, "s1_walking_chest.csv: row 2 column 'acc_x': expected a finite number", {"o.json"}},
+        // Usage errors are one line with exit code 2.
+        {"MissingRequiredOption", "synth", {}, 2, "--prompts is required", {}},
+        {"UnknownFlag", kImuSynth + "--out {D}/o --no-such-flag", standing_joints("j.npy"), 2, "--no-such-flag", {"o"}},
+        // 8: a folder a killed run left behind is removed by the next run; the output appears whole.
+        {"ImuSynthRemovesStalePartials", kImuSynth + "--out {D}/o", standing_joints("j.npy") + Files{{"o.partial-999999999/x.csv", "t\n"}}, 0, "1 bodies",
+         {"o.partial-999999999"}},
+        // Already refused before this suite: content errors of an input exit 1 and leave nothing.
+        {"ImuSynthShortJoints", "imu synth --joints {D}/p.tsv --out {D}/o", kPrompts, 1, "p.tsv", {"o"}},
+    };
+}
+
+std::string with_dir(std::string s, const std::string& dir) {
+    for (size_t at; (at = s.find("{D}")) != std::string::npos;) s.replace(at, 3, dir);
+    return s;
+}
+
+class CliRobustnessTable : public testing::TestWithParam<Row> {};
+
+TEST_P(CliRobustnessTable, Row) {
+    const Row& row = GetParam();
+    const std::string dir = test::scratch_dir("cli_robustness/" + row.name);
+    for (const auto& [path, content] : row.files) {
+        fs::create_directories((fs::path(dir) / path).parent_path());
+        std::ofstream(dir + "/" + path, std::ios::binary) << content;
+    }
+    const test::CliResult r = test::run_cli("--threads 1 " + with_dir(row.args, dir));
+    EXPECT_EQ(r.exit_code, row.exit_code) << r.output;
+    EXPECT_NE(r.output.find(row.fragment), std::string::npos) << "expected \"" << row.fragment << "\" in: " << r.output;
+    if (row.exit_code != 0) {
+        EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+        EXPECT_EQ(r.output.rfind("t2imu: ", 0), 0u) << r.output;
+    }
+    for (const std::string& path : row.absent) EXPECT_FALSE(fs::exists(dir + "/" + path)) << path;
+}
+
+INSTANTIATE_TEST_SUITE_P(CliRobustness, CliRobustnessTable, testing::ValuesIn(rows()),
+                         [](const testing::TestParamInfo<Row>& info) { return info.param.name; });
+
+}  // namespace
