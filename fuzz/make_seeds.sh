@@ -11,3 +11,7 @@ find "$scratch" -name '*.safetensors' -size -64k | head -5 | xargs -r -I{} cp {}
 head -c 20000 examples/cmu_07_05_slow_walk.bvh > fuzz/corpus-bvh/walk_head.bvh
 cp examples/cmu_07_05_slow_walk.bvh fuzz/corpus-bvh/
 find "$scratch" -name '*.bvh' -size -64k | head -5 | xargs -r -I{} cp {} fuzz/corpus-bvh/
+mkdir -p fuzz/corpus-prompt_set fuzz/corpus-sensor_toml
+cp prompts/*.tsv fuzz/corpus-prompt_set/
+find "$scratch" -name '*.toml' -size -16k | head -10 | xargs -r -I{} cp {} fuzz/corpus-sensor_toml/
+printf 'name = "belt"\n[[sensor]]\nposition = "waist"\nsegment = "pelvis"\nalong = 0.5\naround = -90\nx = "distal"\nz = "out"\n' > fuzz/corpus-sensor_toml/belt.toml

@@ -8,7 +8,7 @@
 
 #include "analysis/activity_categories.hpp"
 #include "har/class_map.hpp"
-#include "pipeline/prompt_set.hpp"
+#include "text/prompt_set.hpp"
 #include "test_util.hpp"
 
 using namespace t2imu;

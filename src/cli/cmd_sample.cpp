@@ -14,7 +14,7 @@
 #include "diffusion/text_to_motion.hpp"
 #include "diffusion/torch_threads.hpp"
 #include "motion/humanml3d.hpp"
-#include "pipeline/prompt_set.hpp"
+#include "text/prompt_set.hpp"
 
 namespace t2imu::cli {
 

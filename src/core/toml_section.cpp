@@ -6,6 +6,14 @@ namespace {
 const toml::table kEmptyTable;
 }
 
+toml::table parse_toml_text(const std::string& text, const std::string& source) {
+    try {
+        return toml::parse(text, source);
+    } catch (const toml::parse_error& e) {
+        throw Error(source, "toml", "a valid TOML file", std::string(e.description()));
+    }
+}
+
 toml::table parse_toml_file(const std::string& path) {
     try {
         return toml::parse_file(path);

@@ -12,6 +12,7 @@ namespace t2imu {
 
 // The TOML document of `path`; throws Error with the parser's message.
 toml::table parse_toml_file(const std::string& path);
+toml::table parse_toml_text(const std::string& text, const std::string& source);  // errors name `source`
 
 // One table of a config file; `name` is its dotted name in messages ("" for the top level).
 class TomlSection {

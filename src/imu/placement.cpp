@@ -6,6 +6,7 @@
 #include <random>
 #include <set>
 
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/toml_section.hpp"
 
@@ -114,9 +115,11 @@ PlacementSet builtin_placement_set(const std::string& name) {
     return set;
 }
 
-PlacementSet read_placement_toml(const std::string& path) {
+PlacementSet read_placement_toml(const std::string& path) { return parse_placement_toml(read_file_text(path), path); }
+
+PlacementSet parse_placement_toml(const std::string& text, const std::string& path) {
     // Strict: a misspelt key ("aroud") or a wrong type (along = "far") is refused by name, not left at its default.
-    const toml::table doc = parse_toml_file(path);
+    const toml::table doc = parse_toml_text(text, path);
     TomlSection top(doc, path, "");
     PlacementSet set;
     set.name = "custom";

@@ -50,6 +50,7 @@ PlacementSet builtin_placement_set(const std::string& name);
 // A custom set: `name = "..."` and [[sensor]] tables with position, segment (a joint name), along, around
 // (degrees), two of x/y/z, optional vertex and note. Errors name the file and the field.
 PlacementSet read_placement_toml(const std::string& path);
+PlacementSet parse_placement_toml(const std::string& text, const std::string& source);  // the same on a file's text
 // "--sensors realworld,hugadb" or a .toml path (or a mix); positions must be distinct across the sets.
 std::vector<SensorPlacement> parse_sensor_sets(const std::string& text);
 

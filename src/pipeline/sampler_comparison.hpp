@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "core/csv.hpp"
-#include "pipeline/prompt_set.hpp"
+#include "text/prompt_set.hpp"
 
 namespace t2imu {
 

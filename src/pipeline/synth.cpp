@@ -23,7 +23,7 @@
 #include "motion/motion_activity.hpp"
 #include "motion/normalization.hpp"
 #include "pipeline/motion_source.hpp"
-#include "pipeline/prompt_set.hpp"
+#include "text/prompt_set.hpp"
 
 namespace t2imu {
 

@@ -35,7 +35,7 @@ namespace t2imu {
 constexpr uint64_t kSeedStridePerAttempt = 1000003;
 
 struct SynthOptions {
-    std::string prompts;                 // prompt set file (pipeline/prompt_set.hpp)
+    std::string prompts;                 // prompt set file (text/prompt_set.hpp)
     int samples_per_prompt = 1;
     std::string model = "models/default";  // a model folder or retrieval:DATASET
     std::string vocab;                   // GloVe vocabulary for retrieval ("" = default)

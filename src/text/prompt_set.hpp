@@ -18,6 +18,9 @@ enum class PromptActivity { optional, required };
 
 // Refuses an unreadable or empty file, and a bad line naming the file and its line number.
 std::vector<Prompt> read_prompt_set(const std::string& path, PromptActivity activity = PromptActivity::optional);
+// The same on a prompt set's text, errors naming `source`.
+std::vector<Prompt> parse_prompt_set(const std::string& text, const std::string& source,
+                                     PromptActivity activity = PromptActivity::optional);
 
 // Throws Error naming `source` and `field` unless `text` is valid UTF-8 without control characters.
 void check_prompt_text(const std::string& text, const std::string& source, const std::string& field);
