@@ -83,7 +83,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--guidance", o.sampling.guidance, "classifier-free guidance scale (default 2.5)");
     cmd->add_option("--seconds", o.seconds, "motion length, s (default 6; at most 9.8)");
     cmd->add_option("--seed", o.sampling.seed, "seed of job 0; job k draws from seed + k");
-    cmd->add_option("--batch", o.sampling.batch, "motions per sampling batch (does not change them; default 16)");
+    cmd->add_option("--batch", o.sampling.batch, "motions per sampling batch (fixed groups of jobs; another size changes motions by float rounding only; default 16)");
     cmd->add_option("--bodies", o.bodies, "body shapes (default paper8; as imu synth --body)");
     cmd->add_option("--sensors", o.sensors, "placement sets (default realworld; as imu synth --sensors)");
     cmd->add_option("--rate", o.rate_hz, "sensor sample rate, Hz (default 50)");

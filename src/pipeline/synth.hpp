@@ -3,8 +3,9 @@
 //
 // Work is cut into jobs, one per prompt and sample (job k = prompt k / S, sample k % S for S samples per prompt),
 // each drawn from its own seed, so a job's output does not depend on which other jobs run, on the batch size
-// or on the shard beyond float rounding (jobs sampled in differently composed batches agree to ~1e-5 m/s^2;
-// the same run twice gives the same bytes). Output folder:
+// or on the shard beyond float rounding (jobs sampled in differently composed batches agree to ~1e-4 m/s^2).
+// Batches are fixed groups of job indices, drawn whole whenever one of their jobs is left to do, so the same
+// settings give the same bytes: run twice, or interrupted (even by kill -9) and resumed. Output folder:
 //   synth.json                      the settings; a resume or a second shard refuses a folder made with others
 //   jobs/<job>.json                 written last for a job: it is done (resume skips it); its prompt, seeds,
 //                                   quality scores, and its recordings or why it was dropped
