@@ -68,6 +68,14 @@ TEST(Placement, ReadsACustomTomlSet) {
     bad("[[sensor]]\nposition = \"a\"\nsegment = \"neck\"\nx = \"sky\"\ny = \"out\"\n");      // unknown word
     bad("name = \"x\"\n");                                                                     // no sensors
     bad("[[sensor]\n");                                                                        // not TOML
+    // A float where an integer belongs is refused, not converted: 4.9e47 into an integer is undefined
+    // behaviour (UBSan, fuzz/fuzz_sensor_toml).
+    try {
+        parse_placement_toml("[[sensor]]\nposition = \"a\"\nsegment = \"neck\"\nvertex = 4.9e47\nx = \"up\"\ny = \"out\"\n", "v.toml");
+        ADD_FAILURE() << "a float vertex was accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("vertex: expected an integer"), std::string::npos) << e.what();
+    }
     bad("[[sensor]]\nposition = \"a\"\nsegment = \"neck\"\nx = \"up\"\ny = \"out\"\naroud = -90\n");  // misspelt key
     bad("[[sensor]]\nposition = \"a\"\nsegment = \"neck\"\nx = \"up\"\ny = \"out\"\nalong = \"far\"\n");  // not a number
     bad("[[sensor]]\nsegment = \"neck\"\nx = \"up\"\ny = \"out\"\n");                      // no position

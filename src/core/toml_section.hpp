@@ -1,7 +1,9 @@
 // Strict reading of TOML configuration files (toml++): a key nobody reads is an error, so a typo in a config
 // is refused with its name instead of silently leaving a default in place.
 #pragma once
+#include <optional>
 #include <set>
+#include <type_traits>
 #include <string>
 #include <toml++/toml.h>
 #include <vector>
@@ -20,13 +22,17 @@ public:
     TomlSection(const toml::table& table, std::string path, std::string name)
         : table_(table), path_(std::move(path)), name_(std::move(name)) {}
 
-    // Leaves `value` unchanged when the key is absent; throws when it holds another type.
+    // Leaves `value` unchanged when the key is absent; throws when it holds another type. An integer field takes
+    // only a TOML integer: toml++ would convert a float such as 4.9e47 to an integer out of range (undefined
+    // behaviour, found by fuzz/fuzz_sensor_toml).
     template <class T> void read(const char* key, T& value) {
         read_keys_.insert(key);
         const toml::node* n = table_.get(key);
         if (!n) return;
-        const auto v = n->value<T>();
-        if (!v) throw Error(path_, field(key), "a value of the right type");
+        constexpr bool integer = std::is_integral_v<T> && !std::is_same_v<T, bool>;
+        const auto v = integer && !n->is_integer() ? std::optional<T>() : n->value<T>();
+        if (!v) throw Error(path_, field(key), integer ? "an integer" : std::is_same_v<T, bool> ? "true or false"
+                                              : std::is_floating_point_v<T> ? "a number" : "a string");
         value = *v;
     }
     void read(const char* key, std::vector<std::string>& values);  // an array of strings
