@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "motion/motion_edit.hpp"
 #include "motion/skeleton.hpp"
 #include "motion/two_bone_ik.hpp"
 
@@ -16,11 +17,6 @@ using namespace smpl22;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-void check_range(double v, double lo, double hi, const char* field) {
-    if (!(v >= lo && v <= hi))
-        throw Error("lying options", field, "in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]", std::to_string(v));
-}
 
 // spine3 and its descendants: the rib cage and what hangs off it.
 bool on_rib_cage(int j) {
@@ -37,9 +33,9 @@ void require_lying(const JointSequence& s, int f) {
 }  // namespace
 
 void validate(const LyingOptions& o) {
-    check_range(o.seconds, 1.0, 120.0, "seconds");
-    check_range(o.breaths_per_min, 8.0, 25.0, "breaths_per_min");
-    check_range(o.chest_rad, 0.0, 0.05, "chest_rad");
+    check_option_range(o.seconds, 1.0, 120.0, "lying options", "seconds");
+    check_option_range(o.breaths_per_min, 8.0, 25.0, "lying options", "breaths_per_min");
+    check_option_range(o.chest_rad, 0.0, 0.05, "lying options", "chest_rad");
 }
 
 JointSequence lying_still(const JointSequence& lie_down, const LyingOptions& o) {

@@ -17,6 +17,11 @@ using namespace smpl22;
 const std::array<LegJoints, 2> kLegs = {{{left_hip, left_knee, left_ankle, left_foot},
                                          {right_hip, right_knee, right_ankle, right_foot}}};
 
+void check_option_range(double value, double lo, double hi, const char* options, const char* field) {
+    if (!(value >= lo && value <= hi))
+        throw Error(options, field, "in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]", std::to_string(value));
+}
+
 BoneLengths bone_lengths(const JointSequence& m, int frame) {
     BoneLengths l{};
     for (int j = 1; j < kNumJoints; ++j) l[static_cast<size_t>(j)] = (m.at(frame, j) - m.at(frame, kParents[static_cast<size_t>(j)])).norm();

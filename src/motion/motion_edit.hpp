@@ -18,6 +18,9 @@ struct LegJoints {
 extern const std::array<LegJoints, 2> kLegs;  // left, right (the Foot order of foot_contacts.hpp)
 
 BoneLengths bone_lengths(const JointSequence& m, int frame);
+
+// Throws Error(`options`, `field`) unless lo <= value <= hi (NaN fails): the editing options' range checks.
+void check_option_range(double value, double lo, double hi, const char* options, const char* field);
 // Largest |length - lengths[j]| over every bone and frame (m).
 double max_bone_length_error(const JointSequence& m, const BoneLengths& lengths);
 // Sets every bone to its length along its current direction, from the pelvis outward (children move with

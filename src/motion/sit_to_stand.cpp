@@ -15,11 +15,6 @@ using namespace smpl22;
 
 namespace {
 
-void check_range(double v, double lo, double hi, const char* field) {
-    if (!(v >= lo && v <= hi))
-        throw Error("chair options", field, "in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]", std::to_string(v));
-}
-
 int frames_of(double seconds, double fps) { return static_cast<int>(std::lround(seconds * fps)); }
 
 // How far the pelvis is from standing toward the seat (horizontal and vertical, 0 standing .. 1 seated) and how
@@ -78,14 +73,14 @@ Vector3d seated_pelvis(const JointSequence& s, const ChairOptions& o, const Vect
 }  // namespace
 
 void validate(const ChairOptions& o) {
-    check_range(o.seat_height_m, 0.25, 0.60, "seat_height_m");
-    check_range(o.pelvis_above_seat_m, 0.05, 0.15, "pelvis_above_seat_m");
-    check_range(o.stand_before_s, 0.0, 10.0, "stand_before_s");
-    check_range(o.sit_down_s, 1.0, 4.0, "sit_down_s");
-    check_range(o.seated_s, 0.5, 60.0, "seated_s");
-    check_range(o.stand_up_s, 1.0, 4.0, "stand_up_s");
-    check_range(o.stand_after_s, 0.0, 10.0, "stand_after_s");
-    check_range(o.trunk_flexion_peak_rad, 0.2, 1.0, "trunk_flexion_peak_rad");
+    check_option_range(o.seat_height_m, 0.25, 0.60, "chair options", "seat_height_m");
+    check_option_range(o.pelvis_above_seat_m, 0.05, 0.15, "chair options", "pelvis_above_seat_m");
+    check_option_range(o.stand_before_s, 0.0, 10.0, "chair options", "stand_before_s");
+    check_option_range(o.sit_down_s, 1.0, 4.0, "chair options", "sit_down_s");
+    check_option_range(o.seated_s, 0.5, 60.0, "chair options", "seated_s");
+    check_option_range(o.stand_up_s, 1.0, 4.0, "chair options", "stand_up_s");
+    check_option_range(o.stand_after_s, 0.0, 10.0, "chair options", "stand_after_s");
+    check_option_range(o.trunk_flexion_peak_rad, 0.2, 1.0, "chair options", "trunk_flexion_peak_rad");
 }
 
 int stand_sit_stand_frames(const ChairOptions& o, double fps) {

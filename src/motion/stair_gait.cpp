@@ -19,11 +19,6 @@ constexpr double kSideBySide = 0.15;  // m along the walk: footholds nearer than
 constexpr double kMinTravel = 1.5;    // m: at least two steps of a walk
 constexpr double kPi = 3.14159265358979323846;
 
-void check_range(double v, double lo, double hi, const char* field) {
-    if (!(v >= lo && v <= hi))
-        throw Error("stair options", field, "in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]", std::to_string(v));
-}
-
 // A stance phase of the (retimed) walk and where it goes: moved `shift` m along the walk and raised `height` m.
 struct Hold {
     StancePhase phase;
@@ -211,11 +206,11 @@ StairOptions default_stair_options(bool ascend) {
 }
 
 void validate(const StairOptions& o) {
-    check_range(o.rise_m, 0.0, 0.22, "rise_m");
-    check_range(o.going_m, 0.22, 0.35, "going_m");
-    check_range(o.trunk_lean_rad, 0.0, 0.35, "trunk_lean_rad");
-    check_range(o.cadence_factor, 0.5, 1.0, "cadence_factor");
-    check_range(o.swing_clearance_m, 0.01, 0.10, "swing_clearance_m");
+    check_option_range(o.rise_m, 0.0, 0.22, "stair options", "rise_m");
+    check_option_range(o.going_m, 0.22, 0.35, "stair options", "going_m");
+    check_option_range(o.trunk_lean_rad, 0.0, 0.35, "stair options", "trunk_lean_rad");
+    check_option_range(o.cadence_factor, 0.5, 1.0, "stair options", "cadence_factor");
+    check_option_range(o.swing_clearance_m, 0.01, 0.10, "stair options", "swing_clearance_m");
 }
 
 StairMotion derive_stairs(const JointSequence& walk, const StairOptions& o) {
