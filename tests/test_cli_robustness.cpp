@@ -109,6 +109,13 @@ std::vector<Row> rows() {
         {"SynthOutInProc", kSynth + "--out /proc/x/o", kPrompts, 2, "--out: /proc/x/o", {}},
         {"SampleOutBelowFile", kSample + "--out {D}/file/o", kFile, 2, "--out: ", {}},
         {"HarOutInProc", kHar + "--repeats 1 --out /proc/x/o.json", imu_dataset("imu"), 2, "--out: /proc/x/o.json", {}},
+        // Every other command that writes checks its --out before any work too.
+        {"TsneOutInProc", "tsne --in {D}/x.csv --out /proc/x/y.csv", {{"x.csv", "a,b\n1,2\n3,4\n"}}, 2, "--out: /proc/x/y.csv", {}},
+        {"ReportOutBelowFile", "report --in {D} --out {D}/file/r", kFile, 2, "--out: ", {}},
+        {"FeaturesOutInProc", "features catch22 --dataset {D}/imu --out /proc/x/f.csv", imu_dataset("imu"), 2, "--out: /proc/x/f.csv", {}},
+        {"ExperimentHarSettingsCheckedOnRead", "experiment --config {D}/e.toml --out {D}/o",
+         {{"e.toml", "[[source]]\nname = \"r\"\nmodel = \"retrieval:x\"\n[[real]]\nname = \"s\"\ndataset = \"x\"\nprompts = \"p\"\nsensors = \"sisfall\"\n[har]\nmax_epochs = 0\n"}},
+         1, "e.toml: har: expected valid HAR settings", {"o"}},
         // The check creates missing folders to prove it can, and removes them: a run refused later leaves none.
         {"HarCheckedOutFoldersRemoved", "har run --train {D}/imu --test {D}/imu --positions tentacle --repeats 1 --out {D}/a/b/o.json",
          imu_dataset("imu"), 1, "tentacle", {"a"}},

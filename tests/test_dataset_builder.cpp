@@ -122,6 +122,12 @@ TEST(DatasetBuilder, LicenceFilterAndMissingFiles) {
     o.licences = {"HDM05"};  // none of these clips
     EXPECT_THROW(build_dataset(o), Error);
     EXPECT_FALSE(std::filesystem::exists(o.out_dir + ".partial-" + std::to_string(getpid())));
+    // What a killed build left (a process id no process has) goes with the next build.
+    const std::string stale = o.out_dir + ".partial-999999999";
+    std::filesystem::create_directories(stale + "/texts");
+    o.licences.clear();
+    build_dataset(o);
+    EXPECT_FALSE(std::filesystem::exists(stale));
 }
 
 TEST(DatasetBuilder, DerivedClipsCarryTheirProvenanceCountApartAndCanBeLeftOut) {

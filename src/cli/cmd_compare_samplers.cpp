@@ -4,6 +4,8 @@
 #include <cstdio>
 
 #include "cli/command.hpp"
+#include "cli/usage.hpp"
+#include "core/output_path.hpp"
 #include "core/csv.hpp"
 #include "diffusion/torch_threads.hpp"
 #include "pipeline/sampler_comparison.hpp"
@@ -19,6 +21,7 @@ struct CompareArgs {
 };
 
 void run(CompareArgs a) {
+    check_usage([&] { check_output_path(a.out, "--out"); });
     SamplerComparisonOptions& o = a.options;
     o.prompts = read_prompt_set(a.prompts);
     o.frames = static_cast<int>(std::lround(a.seconds * 20));

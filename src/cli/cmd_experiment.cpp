@@ -2,6 +2,8 @@
 #include <cstdio>
 
 #include "cli/command.hpp"
+#include "cli/usage.hpp"
+#include "core/output_path.hpp"
 #include "diffusion/torch_threads.hpp"
 #include "pipeline/experiment.hpp"
 
@@ -18,6 +20,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--repeats", repeats, "HAR trainings per row (default: the config's har.repeats)");
     cmd->callback([] {
         ExperimentConfig c = read_experiment_config(config);
+        check_usage([] { check_output_path(out, "--out"); });
         if (repeats > 0) c.har.repeats = repeats;
         c.synth.device = global_options().device;
         c.synth.threads = worker_threads();

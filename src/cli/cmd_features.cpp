@@ -8,6 +8,8 @@
 #include "analysis/catch22_table.hpp"
 #include "core/error.hpp"
 #include "cli/command.hpp"
+#include "cli/usage.hpp"
+#include "core/output_path.hpp"
 
 namespace t2imu::cli {
 
@@ -34,6 +36,7 @@ static void add_catch22_command(CLI::App& features) {
             return;
         }
         if (out.empty()) throw Error("features catch22", "--out", "an output CSV in batch mode");
+        check_usage([] { check_output_path(out, "--out"); });
         std::stringstream list(positions);
         for (std::string p; std::getline(list, p, ',');)
             if (!p.empty()) w.positions.push_back(p);

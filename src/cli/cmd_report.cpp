@@ -2,6 +2,8 @@
 #include <cstdio>
 
 #include "cli/command.hpp"
+#include "cli/usage.hpp"
+#include "core/output_path.hpp"
 #include "report/html_report.hpp"
 
 namespace t2imu::cli {
@@ -12,6 +14,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--in", in, "results folder (synth_report.json, HAR RESULT.json, L_acc CSV, t-SNE CSV, domain-gap JSON, IMU CSVs)")->required()->check(CLI::ExistingDirectory);
     cmd->add_option("--out", out, "report folder")->required();
     cmd->callback([] {
+        check_usage([] { check_output_path(out, "--out"); });
         const ReportSummary s = write_report(in, out);
         std::printf("%s/index.html: %d figures (%d synthesis reports, %d HAR results, %d L_acc tables, %d t-SNE tables, %d domain-gap results, %d traces)\n",
                     out.c_str(), s.figures, s.synth_reports, s.har_results, s.lacc_tables, s.tsne_tables, s.gap_results, s.traces);

@@ -3,6 +3,8 @@
 #include <cstdio>
 
 #include "cli/command.hpp"
+#include "cli/usage.hpp"
+#include "core/output_path.hpp"
 #include "diffusion/trainer.hpp"
 
 namespace t2imu::cli {
@@ -13,6 +15,7 @@ void on_stop_signal(int) { request_training_stop(); }
 
 void run(const std::string& config_path, bool resume, const std::string& from, int64_t steps_override) {
     TrainConfig c = read_train_config(config_path);
+    check_usage([&] { check_output_path(c.out, config_path + ": out"); });
     c.threads = worker_threads();
     c.device = global_options().device;
     c.processes = read_process_group_env();  // torchrun's RANK, WORLD_SIZE, MASTER_ADDR, MASTER_PORT, LOCAL_RANK

@@ -6,6 +6,8 @@
 #include "analysis/catch22_table.hpp"
 #include "analysis/tsne_table.hpp"
 #include "cli/command.hpp"
+#include "cli/usage.hpp"
+#include "core/output_path.hpp"
 #include "core/csv.hpp"
 
 namespace t2imu::cli {
@@ -20,6 +22,7 @@ struct TsneArgs {
 // The window table's label columns (catch22_table.hpp) and any non-numeric column are carried over beside
 // tsne_x, tsne_y; the rest are the features.
 void run(const TsneArgs& a) {
+    check_usage([&] { check_output_path(a.out, "--out"); });
     const std::set<std::string> labels(kWindowLabelColumns.begin(), kWindowLabelColumns.end());
     const TsneTable t = tsne_table(read_csv(a.in), labels, a.options, a.in);
     write_csv(a.out, t.embedding);

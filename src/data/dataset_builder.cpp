@@ -12,6 +12,7 @@
 #include "core/csv.hpp"
 #include "core/error.hpp"
 #include "core/npy.hpp"
+#include "core/output_path.hpp"
 #include "data/captions.hpp"
 #include "data/derived_clips.hpp"
 #include "data/mean_std.hpp"
@@ -160,7 +161,8 @@ BuildSummary build_into(const BuildOptions& o, const std::string& tmp);
 }  // namespace
 
 BuildSummary build_dataset(const BuildOptions& o) {
-    const std::string tmp = o.out_dir + ".partial-" + std::to_string(getpid());
+    remove_stale_partials(o.out_dir);  // what killed builds left
+    const std::string tmp = partial_path_for(o.out_dir);
     try {
         BuildSummary s = build_into(o, tmp);
         const std::string old = o.out_dir + ".old-" + std::to_string(getpid());

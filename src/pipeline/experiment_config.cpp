@@ -49,7 +49,6 @@ void read_har(TomlSection s, HarOptions& h, WindowOptions& w) {
     s.read("overlap", w.overlap);
     s.read("gyro", w.gyro);
     s.refuse_unknown_keys();
-    if (h.repeats < 1) throw Error("config", "har.repeats", "at least 1", std::to_string(h.repeats));
 }
 
 void read_lacc(TomlSection s, ExperimentLacc& l) {
@@ -105,6 +104,13 @@ ExperimentConfig read_experiment_config(const std::string& path) {
         c.real_sets.push_back(r);
     }
     read_har(top.table("har"), c.har, c.windows);
+    // Checked now, not when the first training starts after the syntheses (the messages name the options).
+    try {
+        c.har.validate();
+        c.windows.validate();
+    } catch (const Error& e) {
+        throw Error(path, "har", "valid HAR settings", e.what());
+    }
     TomlSection features = top.table("features");
     features.read("tsne_points", c.tsne_points);
     features.read("perplexity", c.tsne.perplexity);
