@@ -117,10 +117,13 @@ TEST(Synth, ResumeRedoesOnlyUnfinishedJobs) {
     const auto untouched = fs::last_write_time(csv_of(out, "j00001", "male_average"));
     fs::remove(out + "/jobs/j00002.json");  // as if killed before job 2 finished
     fs::remove(csv_of(out, "j00002", "female_short"));
+    const std::string temporary = fs::path(csv_of(out, "j00002", "male_average")).parent_path().string() + "/.waist.csv.tmp999999999";
+    std::ofstream(temporary) << "t,acc_x\n0,";  // a write the kill cut short
     const nlohmann::json r = run_synth(tiny_options(out));
     EXPECT_EQ(r["this_run"]["jobs_run"], 1);
     // Redone in its own batch (jobs 0-2, drawn whole), so with the very bytes of the uninterrupted run.
     EXPECT_EQ(read_file_text(csv_of(out, "j00002", "female_short")), read_file_text(before));
+    EXPECT_FALSE(fs::exists(temporary));
     EXPECT_EQ(fs::last_write_time(csv_of(out, "j00001", "male_average")), untouched);
     EXPECT_EQ(read_imu_dataset(out, false).size(), 8u);
 }

@@ -153,8 +153,19 @@ struct Stage {
 };
 
 // Writes the job's motion and recordings, then its marker (last: the job is done).
+// A job redone after a kill starts clean: the recordings and the temporaries (".<name>....tmpPID", core/
+// atomic_file.hpp) its killed attempt left go, so the folder ends as an uninterrupted run leaves it.
+void clear_job_outputs(const std::string& out, const std::string& name) {
+    std::error_code ignored;
+    fs::remove_all(out + "/recordings/" + name, ignored);
+    if (!fs::is_directory(out + "/motions")) return;
+    for (const auto& e : fs::directory_iterator(out + "/motions"))
+        if (e.path().filename().string().rfind("." + name, 0) == 0) fs::remove(e.path(), ignored);
+}
+
 void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt& prompt, int sample, const Drawn& d) {
     const std::string name = job_name(job);
+    clear_job_outputs(o.out, name);
     json marker = {{"job", name}, {"index", job}, {"prompt", prompt.text}, {"activity", prompt.activity}, {"sample", sample},
                    {"seed", d.seed}, {"attempts", d.attempts}, {"quality", quality_json(d.quality)}, {"kept", d.kept},
                    {"frames", d.joints.num_frames}, {"recordings", json::array()}};
