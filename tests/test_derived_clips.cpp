@@ -6,6 +6,7 @@
 
 #include "data/derived_clips.hpp"
 #include "motion/mocap_import.hpp"
+#include "motion/motion_edit.hpp"
 #include "motion/motion_quality.hpp"
 #include "motion/skeleton.hpp"
 #include "test_util.hpp"
@@ -23,15 +24,8 @@ JointSequence shared_clip(const std::string& archive, const std::string& file) {
     return root.empty() ? JointSequence() : import_motion(root + "/" + file);
 }
 
-double max_bone_change(const JointSequence& m) {
-    double worst = 0;
-    for (int j = 1; j < 22; ++j) {
-        const int p = smpl22::kParents[static_cast<size_t>(j)];
-        const double first = (m.at(0, j) - m.at(0, p)).norm();
-        for (int f = 1; f < m.num_frames; ++f) worst = std::max(worst, std::fabs((m.at(f, j) - m.at(f, p)).norm() - first));
-    }
-    return worst;
-}
+// Largest change of any bone's length from its length at frame 0 (m).
+double max_bone_change(const JointSequence& m) { return max_bone_length_error(m, bone_lengths(m, 0)); }
 
 TEST(DerivedClips, AForwardWalkGivesOneFlightOfStairs) {
     std::string archive;

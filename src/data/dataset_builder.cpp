@@ -109,13 +109,6 @@ std::vector<std::pair<int, int>> spread(const std::vector<std::pair<int, int>>& 
     return out;
 }
 
-JointSequence slice(const JointSequence& s, int begin, int end) {
-    JointSequence out(end - begin, s.num_joints, s.fps);
-    std::copy(s.positions.begin() + static_cast<long>(begin) * s.num_joints, s.positions.begin() + static_cast<long>(end) * s.num_joints,
-              out.positions.begin());
-    return out;
-}
-
 JointSequence mirrored(const JointSequence& s) {
     JointSequence out = s;
     for (int f = 0; f < s.num_frames; ++f)
@@ -221,7 +214,7 @@ void write_recording(const BuildOptions& o, const std::string& tmp, const ClipSo
     for (const auto& [begin, end] : spread(chunks(joints.num_frames, max_frames), chunks_per_file)) {
         const std::vector<CaptionLine> captions = captions_for_chunk(c, begin, end, joints.num_frames);
         if (captions.empty() || end - begin < 2) continue;
-        const JointSequence part = slice(joints, begin, end);
+        const JointSequence part = slice_frames(joints, begin, end);
         char id[16];
         std::snprintf(id, sizeof id, "%06d", tally.next_id++);
         for (bool mirror : {false, true}) {

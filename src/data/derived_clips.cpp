@@ -96,13 +96,6 @@ void derive_stairs_clip(const JointSequence& walk, const std::string& file, Deri
     out.push_back(std::move(c));
 }
 
-JointSequence window(const JointSequence& s, int begin, int frames) {
-    JointSequence out(frames, s.num_joints, s.fps);
-    std::copy(s.positions.begin() + static_cast<std::ptrdiff_t>(begin) * s.num_joints,
-              s.positions.begin() + static_cast<std::ptrdiff_t>(begin + frames) * s.num_joints, out.positions.begin());
-    return out;
-}
-
 // Standing hip-joint height above the lowest foot joint at frame 0 (m): chairs fit their sitter, and capture rigs
 // come in many sizes (ReActIdle's hip joints stand 0.66-0.95 m high).
 double hip_joint_height(const JointSequence& s) {
@@ -130,7 +123,7 @@ void derive_sit_clips(const JointSequence& standing, const std::string& file, De
         const int begin = static_cast<int>((standing.num_frames - frames) * (2 * k + 1) / (2 * kSitsPerRecording));
         DerivedClip c;
         try {
-            c.joints = stand_sit_stand(window(standing, begin, frames), o);
+            c.joints = stand_sit_stand(slice_frames(standing, begin, begin + frames), o);
         } catch (const Error&) {
             ++report.refused;
             continue;

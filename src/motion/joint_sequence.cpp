@@ -1,5 +1,7 @@
 #include "motion/joint_sequence.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 
 #include "core/error.hpp"
@@ -9,6 +11,13 @@ namespace t2imu {
 JointSequence::JointSequence(int frames, int joints, double fps_)
     : num_frames(frames), num_joints(joints), fps(fps_),
       positions(static_cast<size_t>(frames) * static_cast<size_t>(joints), Eigen::Vector3d::Zero()) {}
+
+JointSequence slice_frames(const JointSequence& s, int begin, int end) {
+    JointSequence out(end - begin, s.num_joints, s.fps);
+    std::copy(s.positions.begin() + static_cast<std::ptrdiff_t>(begin) * s.num_joints,
+              s.positions.begin() + static_cast<std::ptrdiff_t>(end) * s.num_joints, out.positions.begin());
+    return out;
+}
 
 static void require_finite(const std::vector<double>& v, const std::string& source) {
     for (size_t i = 0; i < v.size(); ++i)

@@ -23,6 +23,9 @@ struct JointSequence {
     }
 };
 
+// Frames [begin, end) of `s`, same joints and rate.
+JointSequence slice_frames(const JointSequence& s, int begin, int end);
+
 // [F, J, 3] (any float or int dtype) -> JointSequence. Refuses a wrong rank or last dimension, fewer than
 // `min_frames` frames, a joint count other than `joints` (when > 0), and NaN/inf, naming `source`.
 JointSequence joint_sequence_from_array(const NdArray& a, const std::string& source, int joints = 22,

@@ -61,13 +61,6 @@ JointSequence time_warp(const JointSequence& m, double factor) {
     return out;
 }
 
-JointSequence crop(const JointSequence& m, int start, int frames) {
-    JointSequence out(frames, m.num_joints, m.fps);
-    std::copy(m.positions.begin() + static_cast<std::ptrdiff_t>(start) * m.num_joints,
-              m.positions.begin() + static_cast<std::ptrdiff_t>(start + frames) * m.num_joints, out.positions.begin());
-    return out;
-}
-
 std::string default_vocab() {
     if (const char* env = std::getenv("T2IMU_VOCAB"); env && std::filesystem::exists(env)) return env;
     return "cache/text/glove-100k.safetensors";
@@ -131,7 +124,7 @@ public:
             const JointSequence warped = time_warp(recover_from_ric(clips_[pick].features), factor);
             const int n = std::min(frames, warped.num_frames);
             const int start = std::uniform_int_distribution<int>(0, warped.num_frames - n)(rng);
-            out.push_back(crop(warped, start, n));
+            out.push_back(slice_frames(warped, start, start + n));
             records_.push_back({{"clip", clips_[pick].id}, {"tags", tags_[pick]}, {"classifier", shown_[pick]},
                                 {"activity_asked", asked}, {"tier", tier_name(tier)}, {"tags_show_activity", tagged(pick, asked)}});
         }
