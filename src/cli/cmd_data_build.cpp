@@ -3,6 +3,8 @@
 #include <sstream>
 
 #include "cli/command.hpp"
+#include "cli/usage.hpp"
+#include "core/output_path.hpp"
 #include "data/dataset_builder.hpp"
 
 namespace t2imu::cli {
@@ -28,6 +30,10 @@ static CommandRegistrar registrar([](CLI::App& root) {
         std::string item;
         while (std::getline(in, item, ','))
             if (!item.empty()) o.licences.insert(item);
+        check_usage([] {
+            o.validate();
+            check_output_path(o.out_dir, "--out");
+        });
         const BuildSummary s = build_dataset(o);
         std::printf("%s: %d clips, %.1f minutes, %d captions, %d files skipped\n", o.out_dir.c_str(), s.clips, s.minutes,
                     s.captions, s.skipped_files);

@@ -153,7 +153,17 @@ BuildSummary build_into(const BuildOptions& o, const std::string& tmp);
 
 }  // namespace
 
+void BuildOptions::validate() const {
+    if (mocap_dir.empty()) throw Error("data build", "--mocap", "a motion-capture folder");
+    if (out_dir.empty()) throw Error("data build", "--out", "an output folder");
+    if (!(std::floor(max_seconds * kFps + 1e-9) >= 40))  // MDM leaves out motions under 40 frames
+        throw Error("data build", "--max-seconds", "at least 2 s (40 frames)", std::to_string(max_seconds));
+    if (!(max_seconds_per_file >= 0 && std::isfinite(max_seconds_per_file)))
+        throw Error("data build", "--max-seconds-per-file", "0 (no cap) or a number of seconds", std::to_string(max_seconds_per_file));
+}
+
 BuildSummary build_dataset(const BuildOptions& o) {
+    o.validate();
     remove_stale_partials(o.out_dir);  // what killed builds left
     const std::string tmp = partial_path_for(o.out_dir);
     try {
@@ -262,8 +272,6 @@ BuildSummary build_into(const BuildOptions& o, const std::string& tmp) {
     fs::remove_all(tmp);
     for (const char* sub : {"new_joints", "new_joint_vecs", "texts"}) fs::create_directories(tmp + "/" + sub);
     const int max_frames = static_cast<int>(std::floor(o.max_seconds * kFps + 1e-9));
-    if (max_frames < 40) throw Error("--max-seconds", "value", "at least 2 s (40 frames)");
-    if (!(o.max_seconds_per_file >= 0)) throw Error("--max-seconds-per-file", "value", "0 (no cap) or a number of seconds");
     const size_t chunks_per_file = o.max_seconds_per_file > 0 ? static_cast<size_t>(std::max(1.0, std::floor(o.max_seconds_per_file / o.max_seconds))) : 0;
 
     Tally tally;

@@ -40,6 +40,9 @@ struct BuildOptions {
     // up from idle standing), tagged source_dataset "edited" with their provenance in clips.csv.
     bool derive = true;
     bool strict = false;  // abort on the first clip that fails to import (default: skip it and report it)
+
+    // Throws Error naming the option unless the folders are given and the lengths are in range.
+    void validate() const;
 };
 
 struct BuildSummary {
