@@ -184,8 +184,8 @@ double lower_to_reach(JointSequence& m, const std::array<double, 2>& reach_m) {
         for (size_t leg = 0; leg < 2; ++leg)
             drop[static_cast<size_t>(f)] = std::max(drop[static_cast<size_t>(f)],
                                                     drop_to_reach(m.at(f, kLegs[leg].hip), m.at(f, kLegs[leg].ankle), reach_m[leg]));
-    // Four frames (0.2 s at 20 fps) either side: the body sinks into a deep step instead of jerking down.
-    const std::vector<double> smooth = upper_envelope(drop, 4);
+    // Eight frames (0.4 s at 20 fps) either side: the body sinks into a deep step instead of jerking down.
+    const std::vector<double> smooth = upper_envelope(drop, 8);
     double most = 0;
     for (int f = 0; f < m.num_frames; ++f) {
         const double d = smooth[static_cast<size_t>(f)];

@@ -168,13 +168,13 @@ Staircase flight_along(const JointSequence& w, const StairOptions& o) {
     return stairs;
 }
 
-// The body's rise per frame: the mean of the two feet's foothold heights, smoothed over 0.1 s (sigma 2 frames)
+// The body's rise per frame: the mean of the two feet's foothold heights, smoothed over 0.3 s (sigma 6 frames)
 // so that it climbs through each step instead of jumping when a foot lands.
 TimeSeries body_heights(const std::array<FootPath, 2>& feet) {
     const Eigen::Index n = static_cast<Eigen::Index>(feet[0].height.size());
     TimeSeries h(n, 1);
     for (Eigen::Index f = 0; f < n; ++f) h(f, 0) = 0.5 * (feet[0].height[static_cast<size_t>(f)] + feet[1].height[static_cast<size_t>(f)]);
-    return gaussian_filter1d_nearest(h, 2.0);
+    return gaussian_filter1d_nearest(h, 6.0);
 }
 
 JointSequence frame_range(const JointSequence& m, int first, int last) {
@@ -201,7 +201,7 @@ StairOptions default_stair_options(bool ascend) {
     StairOptions o;
     o.ascend = ascend;
     o.trunk_lean_rad = ascend ? 0.12 : 0.05;
-    o.cadence_factor = ascend ? 0.80 : 0.85;
+    o.cadence_factor = ascend ? 0.72 : 0.76;
     return o;
 }
 
