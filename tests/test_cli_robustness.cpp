@@ -138,6 +138,15 @@ std::vector<Row> rows() {
         {"SynthAgreementAboveOne", kSynth + "--min-activity-agreement 2 --out {D}/o", kPrompts, 2, "--min-activity-agreement", {"o"}},
         {"SynthBatchZero", kSynth + "--batch 0 --out {D}/o", kPrompts, 2, "--batch", {"o"}},
         {"ImuSynthJitterOutOfRange", kImuSynth + "--mount-jitter 500 --out {D}/o", standing_joints("j.npy"), 2, "--mount-jitter", {"o"}},
+        // Sensor realism (imu/realism.hpp): presets by name, TOML files strictly, one device model at a time.
+        {"ImuSynthUnknownRealism", kImuSynth + "--realism sisfal --out {D}/o", standing_joints("j.npy"), 2, "--realism", {"o"}},
+        {"ImuSynthRealismTomlUnknownKey", kImuSynth + "--realism {D}/r.toml --out {D}/o", standing_joints("j.npy") + Files{{"r.toml", "base = \"sisfall\"\ntilt_dg = 3\n"}},
+         2, "r.toml: tilt_dg", {"o"}},
+        {"ImuSynthRealismTomlOutOfRange", kImuSynth + "--realism {D}/r.toml --out {D}/o", standing_joints("j.npy") + Files{{"r.toml", "tissue_hz = 0.5\n"}},
+         2, "tissue_hz", {"o"}},
+        {"ImuSynthTwoDeviceModels", kImuSynth + "--realism sisfall --noise smartphone --out {D}/o", standing_joints("j.npy"), 2, "--noise", {"o"}},
+        {"ImuSynthRealismRuns", kImuSynth + "--realism sisfall --sensors sisfall --out {D}/o", standing_joints("j.npy"), 0, "1 bodies x 1 sensors", {}},
+        {"SignalStatsRateOutOfRange", "analysis signal-stats --real {D}/imu --rate 2 --out {D}/o.json", imu_dataset("imu"), 2, "--rate", {"o.json"}},
         // 10: HAR names the position, the window and the damaged cell.
         {"HarUnknownPosition", "har run --train {D}/imu --test {D}/imu --positions tentacle --repeats 1 --out {D}/o.json", imu_dataset("imu"), 1,
          "--positions: tentacle: expected a position the data set holds (chest)", {"o.json"}},

@@ -3,10 +3,14 @@
 
 #include "analysis/domain_gap.hpp"
 #include "analysis/lacc_analysis.hpp"
+#include "analysis/signal_statistics.hpp"
 #include "cli/command.hpp"
+#include "cli/usage.hpp"
 #include "core/atomic_file.hpp"
 #include "core/csv.hpp"
 #include "core/error.hpp"
+#include "core/output_path.hpp"
+#include "har/imu_dataset.hpp"
 
 namespace t2imu::cli {
 
@@ -55,9 +59,32 @@ static void add_domain_gap(CLI::App& analysis) {
     });
 }
 
+static void add_signal_stats(CLI::App& analysis) {
+    auto* cmd = analysis.add_subcommand("signal-stats", "per-activity accelerometer statistics of IMU data sets (level, spectrum, tilt), real beside synthetic (JSON)");
+    static std::string real, synthetic, position, out;
+    static double rate = 20;
+    cmd->add_option("--real", real, "an IMU data set folder (manifest.csv)")->required()->check(CLI::ExistingDirectory);
+    cmd->add_option("--synthetic", synthetic, "a second data set to compare with --real (synthetic)")->check(CLI::ExistingDirectory);
+    cmd->add_option("--position", position, "only this position (waist); default: every position");
+    cmd->add_option("--rate", rate, "resample to this rate first, Hz (HAR's 20)");
+    cmd->add_option("--out", out, "RESULT.json")->required();
+    cmd->callback([] {
+        check_usage([] {
+            if (!(rate >= 8 && rate <= 1000)) throw Error("--rate", "rate", "8 to 1000 Hz", std::to_string(rate));
+            check_output_path(out, "--out");
+        });
+        const std::vector<ImuRecording> r = read_imu_dataset(real);
+        const nlohmann::json stats = synthetic.empty() ? activity_signal_statistics(r, position, rate)
+                                                       : compare_signal_statistics(r, read_imu_dataset(synthetic), position, rate);
+        write_file_atomic(out, stats.dump(2) + "\n");
+        std::printf("%s: statistics of %zu activities\n", out.c_str(), stats.size());
+    });
+}
+
 static CommandRegistrar registrar([](CLI::App& root) {
     CLI::App& analysis = command_group(root, "analysis", "evaluation analyses");
     add_domain_gap(analysis);
+    add_signal_stats(analysis);
     auto* cmd = analysis.add_subcommand("lacc", "per-sample L_acc of two models (id,caption,l_acc) -> change per activity category");
     static LaccArgs a;
     cmd->add_option("--before", a.before, "L_acc CSV of the base model")->required()->check(CLI::ExistingFile);

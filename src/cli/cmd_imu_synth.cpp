@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 namespace {
 
 struct SynthArgs {
-    std::string joints, body = "preset:male_average", sensors = "realworld", noise = "none", out, format = "csv";
+    std::string joints, body = "preset:male_average", sensors = "realworld", noise = "none", realism = "none", out, format = "csv";
     std::string activity = "synthetic";
     double fps = 20, rate = 50, jitter = 0, twist_smoothing = 0;
     uint64_t seed = 0;
@@ -61,10 +61,11 @@ void run(const SynthArgs& a) {
     options.twist_smoothing_frames = a.twist_smoothing;
     check_usage([&] {
         if (!(a.fps > 0 && std::isfinite(a.fps))) throw Error("--fps", "fps", "a positive frame rate", std::to_string(a.fps));
+        options.noise = parse_noise_model(a.noise);
+        options.realism = parse_realism(a.realism);
         options.validate();
         check_output_path(a.out, "--out");
     });
-    options.noise = parse_noise_model(a.noise);
     const std::vector<BodySpec> bodies = parse_body_specs(a.body);
     const std::vector<SensorPlacement> sensors = parse_sensor_sets(a.sensors);
     const JointSequence motion = joint_sequence_from_array(read_npy(a.joints), a.joints, 22, 4, a.fps);
@@ -87,10 +88,11 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--body", a.body, "preset:NAME | paper8 | height=CM,mass=KG,sex=m|f | smpl:FILE.npz[,betas=..] | none; join with +");
     cmd->add_option("--sensors", a.sensors, "placement sets: realworld, sisfall, umafall, hugadb, FILE.toml (comma-separated)");
     cmd->add_option("--rate", a.rate, "output sample rate, Hz (default 50)");
-    cmd->add_option("--noise", a.noise, "sensor error model: none | smartphone | hugadb [,key=value...]");
+    cmd->add_option("--noise", a.noise, "sensor error model: none | smartphone | hugadb | sisfall | umafall [,key=value...]");
+    cmd->add_option("--realism", a.realism, "realism model: none | sisfall | umafall | hugadb | smartphone | FILE.toml (tilt, soft tissue, landings, tempo, device)");
     cmd->add_option("--mount-jitter", a.jitter, "random mounting rotation up to DEG degrees (seeded)");
     cmd->add_option("--twist-smoothing", a.twist_smoothing, "Gaussian smoothing of the segment twist over time, sigma in frames");
-    cmd->add_option("--seed", a.seed, "seed of mounting errors and noise");
+    cmd->add_option("--seed", a.seed, "seed of mounting errors, realism draws and noise");
     cmd->add_option("--format", a.format, "csv, or realworld to add RealWorld's release files")->check(CLI::IsMember({"csv", "realworld"}));
     cmd->add_option("--activity", a.activity, "activity name in RealWorld file names");
     cmd->add_option("--out", a.out, "output folder")->required();

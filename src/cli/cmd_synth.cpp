@@ -87,7 +87,8 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--bodies", o.bodies, "body shapes (default paper8; as imu synth --body)");
     cmd->add_option("--sensors", o.sensors, "placement sets (default realworld; as imu synth --sensors)");
     cmd->add_option("--rate", o.rate_hz, "sensor sample rate, Hz (default 50)");
-    cmd->add_option("--noise", o.noise, "sensor error model: none (default), smartphone, hugadb [,key=value...]");
+    cmd->add_option("--noise", o.noise, "sensor error model: none (default), smartphone, hugadb, sisfall, umafall [,key=value...]");
+    cmd->add_option("--realism", o.realism, "realism model: none (default), sisfall, umafall, hugadb, smartphone or FILE.toml");
     cmd->add_flag("--no-filter", a.no_filter, "keep every motion (the quality filter is on by default)");
     o.activity_reference = kDefaultActivityReference;
     cmd->add_option("--activity-reference", o.activity_reference,

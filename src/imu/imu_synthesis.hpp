@@ -7,10 +7,19 @@
 //   gyroscope      w = 2 vec(q^* (x) q')       angular velocity in the sensor frame (rad/s)
 // p'' and q' come from cubic splines through the motion's samples (cubic_spline.hpp), evaluated at the output
 // rate; q is made sign-continuous first, and the spline of q is renormalised (and differentiated as such).
+//
+// With attachment dynamics (soft_tissue.hpp, heel_strike.hpp) the splines are evaluated at an internal rate of
+// at least 1 kHz (a multiple of rate_hz); landing pulses are added to the body point's acceleration, the
+// attachment's spring-mass is run on that acceleration (translation) and on the segment's angular acceleration
+// in the sensor frame (rotation, small angles: the wobble angle d turns the specific force by -d x a and adds d'
+// to the gyroscope); each output sample is the mean of the internal samples within half an output period of
+// it (a box filter: a sensor's and a data set's own low-pass before decimation).
 #pragma once
 #include <Eigen/Core>
 #include <vector>
 
+#include "imu/heel_strike.hpp"
+#include "imu/soft_tissue.hpp"
 #include "motion/quaternion.hpp"
 
 namespace t2imu {
@@ -27,9 +36,16 @@ struct ImuSignals {
 // Specific force in the sensor frame for a world acceleration (m/s^2) and orientation (world from sensor).
 Eigen::Vector3d specific_force(const Quat& world_from_sensor, const Eigen::Vector3d& acceleration_world);
 
+// What lies between the body point and the sensor: off (the default) = a sensor bolted to the bone.
+struct AttachmentDynamics {
+    SoftTissue tissue;
+    ImpactPulses impacts;  // no landings = none
+    bool enabled() const { return tissue.enabled() || !impacts.time_s.empty(); }
+};
+
 // position[f] (metres, world) and orientation[f] (world from sensor) at `fps`; at least 4 frames. Samples at
 // k / rate_hz for every k within the motion's duration.
 ImuSignals synthesize_imu(const std::vector<Eigen::Vector3d>& position, const std::vector<Quat>& orientation,
-                          double fps, double rate_hz);
+                          double fps, double rate_hz, const AttachmentDynamics& dynamics = {});
 
 }  // namespace t2imu

@@ -172,7 +172,7 @@ std::vector<SensorPlacement> parse_sensor_sets(const std::string& text) {
     return out;
 }
 
-SensorMount mount_sensor(const BodyModel& body, const SensorPlacement& placement, const Matrix3d& mounting_error) {
+SensorMount mount_sensor(const BodyModel& body, const SensorPlacement& placement, const Matrix3d& mounting_error, double tilt_deg) {
     SensorMount m;
     m.placement = placement;
     SurfacePoint surface;
@@ -200,6 +200,10 @@ SensorMount mount_sensor(const BodyModel& body, const SensorPlacement& placement
     // Right-handed: x = y x z, y = z x x, z = x x y.
     r.col(third) = r.col((third + 1) % 3).cross(r.col((third + 2) % 3));
     m.rest_from_sensor = r * mounting_error;
+    // Tilt: about up x normal, which turns the normal towards -up (rest frame: Y up).
+    const Vector3d tangent = Vector3d::UnitY().cross(surface.normal);
+    if (tilt_deg != 0 && tangent.norm() > 0.1)
+        m.rest_from_sensor = Eigen::AngleAxisd(tilt_deg * M_PI / 180, tangent.normalized()).toRotationMatrix() * m.rest_from_sensor;
     return m;
 }
 

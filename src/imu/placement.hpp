@@ -55,14 +55,15 @@ PlacementSet parse_placement_toml(const std::string& text, const std::string& so
 std::vector<SensorPlacement> parse_sensor_sets(const std::string& text);
 
 // A placement resolved on one body: its anchor on the skin and the sensor's axes in rest body coordinates
-// (columns x, y, z), optionally turned by a mounting error.
+// (columns x, y, z), optionally turned by a mounting error (in the sensor frame) and tilted (realism.hpp: the
+// skin normal turned down by tilt_deg about the skin's horizontal tangent; none where the normal is vertical).
 struct SensorMount {
     SensorPlacement placement;
     BodyAnchor anchor;
     Eigen::Matrix3d rest_from_sensor;
 };
 SensorMount mount_sensor(const BodyModel& body, const SensorPlacement& placement,
-                         const Eigen::Matrix3d& mounting_error = Eigen::Matrix3d::Identity());
+                         const Eigen::Matrix3d& mounting_error = Eigen::Matrix3d::Identity(), double tilt_deg = 0);
 
 // A random rotation about a uniformly distributed axis by an angle uniform in [-max_deg, max_deg].
 Eigen::Matrix3d random_mounting_error(double max_deg, uint64_t seed);

@@ -17,11 +17,9 @@ namespace {
 
 constexpr double kG = 9.80665, kDeg = M_PI / 180;
 
-SensorNoiseModel preset(const std::string& name) {
+// The consumer 6-axis chip of the smartphone class (BMI160 / LSM6DS3 datasheet-typical values).
+SensorNoiseModel smartphone_chip() {
     SensorNoiseModel m;
-    m.name = name;
-    if (name == "none") return m;
-    if (name != "smartphone" && name != "hugadb") throw Error("--noise", "model", "none, smartphone or hugadb", name);
     m.acc_noise_density = 180e-6 * kG;
     m.gyr_noise_density = 0.007 * kDeg;
     m.acc_bias_sd = 0.040 * kG;
@@ -30,9 +28,34 @@ SensorNoiseModel preset(const std::string& name) {
     m.gyr_bias_walk = 1e-5;
     m.scale_sd = 0.01;
     m.misalignment_sd_rad = 0.5 * kDeg;
-    m.acc_range = (name == "hugadb" ? 2 : 8) * kG;
+    m.acc_range = 8 * kG;
     m.gyr_range = 2000 * kDeg;
     m.bits = 16;
+    return m;
+}
+
+SensorNoiseModel preset(const std::string& name) {
+    SensorNoiseModel m;
+    if (name == "smartphone" || name == "hugadb" || name == "umafall") {
+        m = smartphone_chip();
+        if (name == "hugadb") m.acc_range = 2 * kG;
+        if (name == "umafall") {  // SensorTag CC2650's MPU-9250: acc 300 ug/sqrt(Hz), gyro 0.01 deg/s/sqrt(Hz)
+            m.acc_noise_density = 300e-6 * kG;
+            m.gyr_noise_density = 0.01 * kDeg;
+        }
+    } else if (name == "sisfall") {
+        // ADXL345 (+-16 g, 13 bit: 3.9 mg/LSB; about 300 ug/sqrt(Hz); 0 g offset +-40 mg) and ITG-3200 (0.038
+        // deg/s/sqrt(Hz), +-2000 deg/s, 16 bit; its zero-rate offset left uncalibrated, sd taken as 3 deg/s).
+        m = smartphone_chip();
+        m.acc_noise_density = 300e-6 * kG;
+        m.gyr_noise_density = 0.038 * kDeg;
+        m.gyr_bias_sd = 3 * kDeg;
+        m.acc_range = 16 * kG;
+        m.bits = 13;
+    } else if (name != "none") {
+        throw Error("--noise", "model", "none, smartphone, hugadb, sisfall or umafall", name);
+    }
+    m.name = name;
     return m;
 }
 

@@ -57,11 +57,16 @@ void sensor_track(const BodyModel& body, const FittedMotion& motion, const Senso
     }
 }
 
+SensorNoiseModel VirtualImuOptions::device() const { return noise.enabled() ? noise : parse_noise_model(realism.device); }
+
 void VirtualImuOptions::validate() const {
     if (!(rate_hz > 0 && rate_hz <= 2000)) throw Error("--rate", "rate", "0 < HZ <= 2000", std::to_string(rate_hz));
     if (!(mount_jitter_deg >= 0 && mount_jitter_deg <= 180)) throw Error("--mount-jitter", "degrees", "0 to 180", std::to_string(mount_jitter_deg));
     if (!(twist_smoothing_frames >= 0 && std::isfinite(twist_smoothing_frames)))
         throw Error("--twist-smoothing", "sigma", "0 or more frames", std::to_string(twist_smoothing_frames));
+    realism.validate("--realism " + realism.name);
+    if (noise.enabled() && realism.device != "none")
+        throw Error("--noise", "model", "--noise none with --realism " + realism.name + " (its device model is " + realism.device + ")", noise.name);
 }
 
 BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& spec, const std::vector<SensorPlacement>& sensors,
@@ -73,21 +78,32 @@ BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& spec, c
     BodySpec build = out.body;
     if (none) build.kind = BodySpec::Kind::procedural;
     const std::unique_ptr<BodyModel> body = make_body(build);
+    const RealismModel& realism = options.realism;
+    out.tempo = draw_tempo(realism, derived_seed(options.seed, out.body.name, "", "tempo"));
+    JointSequence timed = motion;
+    timed.fps = motion.fps * out.tempo;  // a uniform time warp: the same path at tempo x the speed
     FitOptions fit;
     fit.keep_input_joints = none;
     fit.twist_smoothing_frames = options.twist_smoothing_frames;
-    const FittedMotion fitted = fit_body(motion, *body, fit);
+    const FittedMotion fitted = fit_body(timed, *body, fit);
     out.leg_scale = fitted.leg_scale;
     out.mean_error_mm = fitted.mean_error_mm;
     out.max_error_mm = fitted.max_error_mm;
+    const std::vector<Landing> landings = realism.impact_gain > 0 ? detect_landings(timed) : std::vector<Landing>();
+    const SensorNoiseModel device = options.device();
     std::vector<Vector3d> p;
     std::vector<Quat> q;
     for (const SensorPlacement& placement : sensors) {
         const Matrix3d jitter = random_mounting_error(options.mount_jitter_deg, derived_seed(options.seed, out.body.name, placement.position, "mount"));
-        out.mounts.push_back(mount_sensor(*body, placement, jitter));
+        const double tilt = draw_tilt_deg(realism, derived_seed(options.seed, out.body.name, placement.position, "tilt"));
+        out.mounts.push_back(mount_sensor(*body, placement, jitter, tilt));
+        out.tilt_deg.push_back(tilt);
         sensor_track(*body, fitted, out.mounts.back(), &p, &q);
-        ImuSignals s = synthesize_imu(p, q, motion.fps, options.rate_hz);
-        apply_sensor_noise(options.noise, derived_seed(options.seed, out.body.name, placement.position, "noise"), &s);
+        AttachmentDynamics dynamics;
+        dynamics.tissue = realism.tissue;
+        if (!landings.empty()) dynamics.impacts = impact_pulses(landings, realism.impact_gain, realism.impact_ms / 1000, placement.segment, timed.fps);
+        ImuSignals s = synthesize_imu(p, q, timed.fps, options.rate_hz, dynamics);
+        apply_sensor_noise(device, derived_seed(options.seed, out.body.name, placement.position, "noise"), &s);
         out.signals.push_back(std::move(s));
     }
     return out;
@@ -104,15 +120,17 @@ nlohmann::json virtual_imu_meta(const std::vector<BodyImu>& bodies, const JointS
     meta["frames_note"] = "world Y up, body facing +Z; acc = specific force in the sensor frame (m/s^2), gyr in rad/s";
     meta["interpolant"] = "not-a-knot cubic spline of positions and of sign-continuous quaternions";
     meta["mount_jitter_deg"] = options.mount_jitter_deg;
+    meta["realism"] = options.realism.to_json();
     meta["seed"] = options.seed;
-    meta["noise"] = {{"model", options.noise.name}, {"acc_noise_density", options.noise.acc_noise_density},
-                     {"gyr_noise_density", options.noise.gyr_noise_density}, {"acc_bias_sd", options.noise.acc_bias_sd},
-                     {"gyr_bias_sd", options.noise.gyr_bias_sd}, {"acc_range", options.noise.acc_range},
-                     {"gyr_range", options.noise.gyr_range}, {"bits", options.noise.bits}};
+    const SensorNoiseModel device = options.device();
+    meta["noise"] = {{"model", device.name}, {"acc_noise_density", device.acc_noise_density},
+                     {"gyr_noise_density", device.gyr_noise_density}, {"acc_bias_sd", device.acc_bias_sd},
+                     {"gyr_bias_sd", device.gyr_bias_sd}, {"acc_range", device.acc_range},
+                     {"gyr_range", device.gyr_range}, {"bits", device.bits}};
     meta["bodies"] = nlohmann::json::array();
     for (const BodyImu& b : bodies) {
         nlohmann::json body = {{"name", b.body.name}, {"height_m", b.body.height_m}, {"mass_kg", b.body.mass_kg},
-                               {"sex", sex_name(b.body.sex)}, {"leg_scale", b.leg_scale}};
+                               {"sex", sex_name(b.body.sex)}, {"leg_scale", b.leg_scale}, {"tempo", b.tempo}};
         body["kind"] = b.body.kind == BodySpec::Kind::smpl ? "smpl" : b.body.kind == BodySpec::Kind::none ? "none" : "procedural";
         if (b.body.kind == BodySpec::Kind::smpl) body["smpl"] = {{"path", b.body.smpl_path}, {"betas", b.body.betas}};
         nlohmann::json fit;
@@ -125,7 +143,8 @@ nlohmann::json virtual_imu_meta(const std::vector<BodyImu>& bodies, const JointS
         body["fit_error_mm"] = fit;
         body["fit_error_mean_mm"] = mean_all;
         nlohmann::json placements = nlohmann::json::array();
-        for (const SensorMount& m : b.mounts) {
+        for (size_t k = 0; k < b.mounts.size(); ++k) {
+            const SensorMount& m = b.mounts[k];
             const SensorPlacement& p = m.placement;
             nlohmann::json pj = {{"position", p.position}, {"segment", smpl22::kJointNames[static_cast<size_t>(p.segment)]},
                                  {"along", p.along}, {"around_deg", p.around_deg}, {"note", p.note},
@@ -134,6 +153,7 @@ nlohmann::json virtual_imu_meta(const std::vector<BodyImu>& bodies, const JointS
                                  {"rest_axes", {{"x", vec(m.rest_from_sensor.col(0))}, {"y", vec(m.rest_from_sensor.col(1))},
                                                 {"z", vec(m.rest_from_sensor.col(2))}}}};
             if (m.anchor.vertex >= 0) pj["vertex"] = m.anchor.vertex;
+            if (k < b.tilt_deg.size()) pj["tilt_deg"] = b.tilt_deg[k];
             placements.push_back(pj);
         }
         body["placements"] = placements;

@@ -3,7 +3,8 @@
 // For each body: fit the body to the joints (fitting.hpp), mount every placement on its skin
 // (placement.hpp), follow each sensor's position and orientation through the motion, and turn those into
 // accelerometer and gyroscope signals at the output rate (imu_synthesis.hpp), optionally corrupted by the
-// sensor error model (sensor_noise.hpp). Random parts (mounting errors, noise) are seeded per body and sensor
+// sensor error model (sensor_noise.hpp) and the realism model (realism.hpp: tempo, tilt, soft tissue, landing
+// transients, device). Random parts (mounting errors, tilt, tempo, noise) are seeded per body (and sensor)
 // from one seed, so the output does not depend on which other bodies or sensors were asked for.
 #pragma once
 #include <nlohmann/json.hpp>
@@ -12,6 +13,7 @@
 
 #include "body/fitting.hpp"
 #include "imu/placement.hpp"
+#include "imu/realism.hpp"
 #include "imu/sensor_noise.hpp"
 
 namespace t2imu {
@@ -20,16 +22,22 @@ struct VirtualImuOptions {
     double rate_hz = 50;
     double mount_jitter_deg = 0;
     uint64_t seed = 0;
-    SensorNoiseModel noise;
+    SensorNoiseModel noise;          // --noise; the realism model's device when that is "none"
+    RealismModel realism;            // --realism (realism.hpp); "none" = the ideal sensor
     double twist_smoothing_frames = 0;
 
-    // Throws Error naming the option (--rate, --mount-jitter, --twist-smoothing) for a value out of range.
+    // The device error model in effect: --noise, or else the realism model's device.
+    SensorNoiseModel device() const;
+    // Throws Error naming the option (--rate, --mount-jitter, --twist-smoothing, --realism) for a value out of
+    // range, and for a device error model given both by --noise and by the realism model.
     void validate() const;
 };
 
 struct BodyImu {
     BodySpec body;  // as used: --body none is given the height and mass it was sized to
     double leg_scale = 1;
+    double tempo = 1;  // the realism model's time warp of this recording (1 = as captured)
+    std::vector<double> tilt_deg;  // per mount: the realism model's tilt
     std::array<double, smpl22::kNumJoints> mean_error_mm{}, max_error_mm{};
     std::vector<SensorMount> mounts;
     std::vector<ImuSignals> signals;  // one per mount

@@ -94,6 +94,7 @@ private:
         o.prompts = r.set->prompts;
         o.model = r.source->model;
         o.sensors = r.set->sensors;
+        if (!r.set->realism.empty()) o.realism = r.set->realism;
         o.out = path("synth/" + r.id());
         const nlohmann::json report = run_synth(o);
         say("synth " + r.id() + ": " + std::to_string(report["motions_kept"].get<int>()) + " motions kept, " +

@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "core/toml_section.hpp"
+#include "imu/realism.hpp"
 #include "pipeline/experiment.hpp"
 
 namespace t2imu {
@@ -21,6 +22,7 @@ void read_synth(TomlSection s, SynthOptions& o) {
     s.read("samples_per_prompt", o.samples_per_prompt);
     s.read("bodies", o.bodies);
     s.read("noise", o.noise);
+    s.read("realism", o.realism);
     s.read("vocab", o.vocab);
     s.read("sampler", o.sampling.sampler);
     s.read("steps", o.sampling.steps);
@@ -98,6 +100,8 @@ ExperimentConfig read_experiment_config(const std::string& path) {
         s.require("dataset", r.dataset);
         s.require("prompts", r.prompts);
         s.require("sensors", r.sensors);
+        s.read("realism", r.realism);
+        if (!r.realism.empty()) parse_realism(r.realism);  // refused now, naming --realism or the file
         s.read("positions", r.positions);
         s.read("ceiling_folds", r.ceiling_folds);
         s.refuse_unknown_keys();

@@ -234,6 +234,7 @@ json settings_json(const SynthOptions& o, const std::vector<Prompt>& prompts, co
             {"seed", o.sampling.seed}, {"seconds", o.seconds}, {"bodies", o.bodies}, {"sensors", o.sensors}, {"noise", o.noise},
             {"rate_hz", o.rate_hz}, {"placed_on_floor", true}, {"filter", o.filter}, {"max_retries", o.max_retries},
             {"thresholds", quality_limits(o.thresholds)}};
+    if (o.realism != "none") s["realism"] = parse_realism(o.realism).to_json();  // absent: folders from before it stay valid
     // placed_on_floor is always true: it makes a resume refuse folders drawn before floor placement existed.
     // activity_check is absent without a check, so folders made before the check existed stay valid.
     if (!o.activity_reference.empty())
@@ -263,6 +264,8 @@ void SynthOptions::validate() const {
     if (max_retries < 0) throw Error("synth", "--retries", "0 or more", std::to_string(max_retries));
     VirtualImuOptions imu;
     imu.rate_hz = rate_hz;
+    imu.noise = parse_noise_model(noise);
+    imu.realism = parse_realism(realism);
     imu.validate();
     if (!(min_activity_agreement >= 0 && min_activity_agreement <= 1))
         throw Error("synth", "--min-activity-agreement", "0 to 1", std::to_string(min_activity_agreement));
@@ -348,6 +351,7 @@ json run_synth(const SynthOptions& o, const std::function<void(const SynthProgre
     Stage stage{parse_body_specs(o.bodies), parse_sensor_sets(o.sensors), {}};
     stage.imu.rate_hz = o.rate_hz;
     stage.imu.noise = parse_noise_model(o.noise);
+    stage.imu.realism = parse_realism(o.realism);
     stage.imu.seed = o.sampling.seed;
     auto t0 = Clock::now();
     std::unique_ptr<MotionSource> source = open_motion_source(o.model, o.sampling, o.device, o.vocab, o.activity_reference);

@@ -43,6 +43,7 @@ struct SynthOptions {
     SampleOptions sampling;              // sampler, steps, guidance, seed (of job 0), batch
     double seconds = 6;                  // motion length (20 fps; at most 9.8 s)
     std::string bodies = "paper8", sensors = "realworld", noise = "none";
+    std::string realism = "none";        // imu/realism.hpp: a preset or a .toml file
     double rate_hz = 50;
     bool filter = true;
     int max_retries = 2;

@@ -1,0 +1,193 @@
+#include "analysis/signal_statistics.hpp"
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <set>
+
+#include "analysis/fft.hpp"
+#include "core/error.hpp"
+#include "har/class_map.hpp"
+#include "har/windowing.hpp"
+
+namespace t2imu {
+
+namespace {
+
+constexpr double kMinSeconds = 2;
+constexpr double kMinDominantHz = 0.3;
+constexpr double kHighFrequencyHz = 3;
+
+double mean_of(const std::vector<double>& x) {
+    double s = 0;
+    for (double v : x) s += v;
+    return s / static_cast<double>(x.size());
+}
+
+double sd_of(const std::vector<double>& x) {
+    const double m = mean_of(x);
+    double s = 0;
+    for (double v : x) s += (v - m) * (v - m);
+    return std::sqrt(s / static_cast<double>(x.size()));
+}
+
+double percentile(std::vector<double> x, double p) {
+    std::sort(x.begin(), x.end());
+    const double pos = p * static_cast<double>(x.size() - 1);
+    const size_t lo = static_cast<size_t>(std::floor(pos));
+    const size_t hi = std::min(lo + 1, x.size() - 1);
+    return x[lo] + (pos - static_cast<double>(lo)) * (x[hi] - x[lo]);
+}
+
+// Periodogram |X_k|^2 of the mean-removed series, zero-padded to a power of two >= 8 n; bin k is k rate / N Hz.
+std::vector<double> periodogram(const std::vector<double>& x, size_t* length) {
+    const double m = mean_of(x);
+    const size_t n = next_power_of_two(8 * x.size());
+    std::vector<std::complex<double>> data(n);
+    for (size_t i = 0; i < x.size(); ++i) data[i] = x[i] - m;
+    fft_in_place(data);
+    std::vector<double> power(n / 2 + 1);
+    for (size_t k = 0; k < power.size(); ++k) power[k] = std::norm(data[k]);
+    *length = n;
+    return power;
+}
+
+double dominant_frequency(const std::vector<double>& x, double rate_hz) {
+    size_t n = 0;
+    const std::vector<double> p = periodogram(x, &n);
+    size_t best = 0;
+    for (size_t k = 1; k < p.size(); ++k) {
+        const double f = static_cast<double>(k) * rate_hz / static_cast<double>(n);
+        if (f >= kMinDominantHz && (best == 0 || p[k] > p[best])) best = k;
+    }
+    return static_cast<double>(best) * rate_hz / static_cast<double>(n);
+}
+
+double median_of(std::vector<double> x) { return percentile(std::move(x), 0.5); }
+
+}  // namespace
+
+const std::vector<std::string>& signal_statistic_names() {
+    static const std::vector<std::string> names = {"mean_x", "mean_y", "mean_z", "tilt_deg", "sd_x", "sd_y", "sd_z", "mag_sd",
+                                                   "mag_p05", "mag_p50", "mag_p95", "dom_x_hz", "dom_y_hz", "dom_z_hz", "jerk_rms", "hf_share"};
+    return names;
+}
+
+std::map<std::string, double> recording_signal_statistics(const ImuRecording& recording, double rate_hz) {
+    std::vector<double> axis[3];
+    for (int a = 0; a < 3; ++a) {
+        std::vector<double> x(recording.samples.size());
+        for (size_t i = 0; i < x.size(); ++i) x[i] = recording.samples[i][static_cast<size_t>(a)];
+        axis[a] = resample_channel(x, recording.rate_hz, rate_hz);
+    }
+    const size_t n = axis[0].size();
+    if (static_cast<double>(n) < kMinSeconds * rate_hz)
+        throw Error(recording.path, "samples", "at least 2 s of samples", std::to_string(n) + " at " + std::to_string(rate_hz) + " Hz");
+    std::map<std::string, double> s;
+    const char* xyz = "xyz";
+    Eigen::Vector3d mean;
+    for (int a = 0; a < 3; ++a) {
+        mean[a] = mean_of(axis[a]);
+        s[std::string("mean_") + xyz[a]] = mean[a];
+        s[std::string("sd_") + xyz[a]] = sd_of(axis[a]);
+        s[std::string("dom_") + xyz[a] + "_hz"] = dominant_frequency(axis[a], rate_hz);
+    }
+    const double largest = mean.cwiseAbs().maxCoeff();
+    s["tilt_deg"] = mean.norm() > 0 ? std::acos(std::min(1.0, largest / mean.norm())) * 180 / M_PI : 0;
+    std::vector<double> magnitude(n);
+    for (size_t i = 0; i < n; ++i) magnitude[i] = std::sqrt(axis[0][i] * axis[0][i] + axis[1][i] * axis[1][i] + axis[2][i] * axis[2][i]);
+    s["mag_sd"] = sd_of(magnitude);
+    s["mag_p05"] = percentile(magnitude, 0.05);
+    s["mag_p50"] = percentile(magnitude, 0.5);
+    s["mag_p95"] = percentile(magnitude, 0.95);
+    double jerk = 0;
+    for (size_t i = 1; i < n; ++i) jerk += std::pow((magnitude[i] - magnitude[i - 1]) * rate_hz, 2);
+    s["jerk_rms"] = std::sqrt(jerk / static_cast<double>(n - 1));
+    double high = 0, total = 0;
+    for (int a = 0; a < 3; ++a) {
+        size_t length = 0;
+        const std::vector<double> p = periodogram(axis[a], &length);
+        for (size_t k = 1; k < p.size(); ++k) {
+            total += p[k];
+            if (static_cast<double>(k) * rate_hz / static_cast<double>(length) > kHighFrequencyHz) high += p[k];
+        }
+    }
+    s["hf_share"] = total > 0 ? high / total : 0;
+    return s;
+}
+
+namespace {
+
+// Recordings at `position`, grouped by evaluation class (renamed through `coarsen` when given).
+std::map<std::string, std::vector<std::map<std::string, double>>> statistics_by_activity(
+    const std::vector<ImuRecording>& recordings, const std::string& position, double rate_hz,
+    const std::set<std::string>* this_side, const std::set<std::string>* other_side) {
+    std::map<std::string, std::vector<std::map<std::string, double>>> out;
+    for (const ImuRecording& r : recordings) {
+        if (!position.empty() && r.position != position) continue;
+        std::string label = map_activity(r.dataset, r.activity);
+        if (label.empty() || static_cast<double>(r.samples.size()) < kMinSeconds * r.rate_hz) continue;
+        if (this_side) label = coarsen_for(label, *this_side, *other_side);
+        out[label].push_back(recording_signal_statistics(r, rate_hz));
+    }
+    return out;
+}
+
+std::set<std::string> labels_of(const std::vector<ImuRecording>& recordings, const std::string& position) {
+    std::set<std::string> out;
+    for (const ImuRecording& r : recordings)
+        if (position.empty() || r.position == position) {
+            const std::string label = map_activity(r.dataset, r.activity);
+            if (!label.empty()) out.insert(label);
+        }
+    return out;
+}
+
+std::vector<double> column(const std::vector<std::map<std::string, double>>& rows, const std::string& name) {
+    std::vector<double> v;
+    for (const auto& row : rows) v.push_back(row.at(name));
+    return v;
+}
+
+double median_statistic(const std::vector<std::map<std::string, double>>& rows, const std::string& name) { return median_of(column(rows, name)); }
+
+// The interquartile range over 1.349: a normal distribution's sd, robust to a few odd recordings.
+double robust_spread(const std::vector<std::map<std::string, double>>& rows, const std::string& name) {
+    const std::vector<double> v = column(rows, name);
+    return (percentile(v, 0.75) - percentile(v, 0.25)) / 1.349;
+}
+
+}  // namespace
+
+nlohmann::json activity_signal_statistics(const std::vector<ImuRecording>& recordings, const std::string& position, double rate_hz) {
+    nlohmann::json out = nlohmann::json::object();
+    for (const auto& [activity, rows] : statistics_by_activity(recordings, position, rate_hz, nullptr, nullptr)) {
+        nlohmann::json a = {{"recordings", rows.size()}};
+        for (const std::string& name : signal_statistic_names()) a[name] = median_statistic(rows, name);
+        out[activity] = a;
+    }
+    return out;
+}
+
+nlohmann::json compare_signal_statistics(const std::vector<ImuRecording>& real, const std::vector<ImuRecording>& synthetic,
+                                         const std::string& position, double rate_hz) {
+    const std::set<std::string> real_labels = labels_of(real, position), synthetic_labels = labels_of(synthetic, position);
+    const auto r = statistics_by_activity(real, position, rate_hz, &real_labels, &synthetic_labels);
+    const auto s = statistics_by_activity(synthetic, position, rate_hz, &synthetic_labels, &real_labels);
+    nlohmann::json out = nlohmann::json::object();
+    for (const auto& [activity, real_rows] : r) {
+        const auto it = s.find(activity);
+        if (it == s.end()) continue;
+        nlohmann::json a = {{"recordings", {{"real", real_rows.size()}, {"synthetic", it->second.size()}}}};
+        for (const std::string& name : signal_statistic_names()) {
+            const double rm = median_statistic(real_rows, name), sm = median_statistic(it->second, name);
+            a[name] = {{"real", rm}, {"synthetic", sm}, {"ratio", rm != 0 ? sm / rm : std::nan("")},
+                       {"real_spread", robust_spread(real_rows, name)}, {"synthetic_spread", robust_spread(it->second, name)}};
+        }
+        out[activity] = a;
+    }
+    return out;
+}
+
+}  // namespace t2imu

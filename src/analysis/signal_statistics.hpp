@@ -1,0 +1,42 @@
+// Level and texture statistics of accelerometer recordings, per activity, real beside synthetic: what a
+// realism model is calibrated on and judged by (the two-sample test says *that* two sets differ, these say how).
+//
+// Per recording, after resampling to `rate_hz` (har/windowing.hpp's resample_channel, as HAR sees the data),
+// acceleration in the sensor frame (m/s^2, gravity included):
+//   mean_x/y/z        the mean: gravity's direction in the sensor frame while the activity goes on (m/s^2)
+//   tilt_deg          angle between the mean vector and the sensor axis nearest to it (degrees): a mounting
+//                     tilt, whatever the data set's axis convention
+//   sd_x/y/z, mag_sd  standard deviations of each axis and of the magnitude |a| (m/s^2)
+//   mag_p05/p50/p95   percentiles of |a| (m/s^2)
+//   dom_x/y/z_hz      frequency of the highest periodogram peak of each mean-removed axis in 0.3 Hz .. rate/2
+//                     (zero-padded to >= 8 x the length); walking's stride (lateral sway) or step frequency
+//   jerk_rms          root mean square of d|a|/dt by first differences (m/s^3)
+//   hf_share          share of the mean-removed acceleration power (all axes) above 3 Hz
+// Per activity (the evaluation class, class_map.hpp), the median over recordings, their count, and for two
+// sets the ratio synthetic / real of every median and each set's spread over recordings (interquartile range
+// / 1.349, a normal distribution's sd). Recordings shorter than 2 s are skipped.
+#pragma once
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "har/imu_dataset.hpp"
+
+namespace t2imu {
+
+// Statistic names in the order above.
+const std::vector<std::string>& signal_statistic_names();
+
+// One recording's statistics (names as above); throws Error for a recording under 2 s at rate_hz.
+std::map<std::string, double> recording_signal_statistics(const ImuRecording& recording, double rate_hz);
+
+// {activity: {"recordings": n, stat: median, ...}} over the recordings at `position` ("" = every position).
+nlohmann::json activity_signal_statistics(const std::vector<ImuRecording>& recordings, const std::string& position, double rate_hz);
+
+// {activity: {stat: {"real", "synthetic", "ratio", "real_spread", "synthetic_spread"}, "recordings": {...}}} for the activities
+// both sets hold (after coarsening stairs as class_map.hpp does).
+nlohmann::json compare_signal_statistics(const std::vector<ImuRecording>& real, const std::vector<ImuRecording>& synthetic,
+                                         const std::string& position, double rate_hz);
+
+}  // namespace t2imu

@@ -1,0 +1,84 @@
+#include "imu/heel_strike.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "motion/skeleton.hpp"
+
+namespace t2imu {
+
+using Eigen::Vector3d;
+
+namespace {
+
+constexpr int kMinSlowFrames = 2;
+
+// Central-difference speed of `joint` at frame f (one-sided at the ends), m/s.
+double joint_speed(const JointSequence& m, int joint, int f) {
+    const int a = std::max(0, f - 1), b = std::min(m.num_frames - 1, f + 1);
+    if (a == b) return 0;
+    return (m.at(b, joint) - m.at(a, joint)).norm() * m.fps / (b - a);
+}
+
+void landings_of(const JointSequence& m, int ankle, std::vector<Landing>* out) {
+    std::vector<bool> slow(static_cast<size_t>(m.num_frames));
+    for (int f = 0; f < m.num_frames; ++f) slow[static_cast<size_t>(f)] = joint_speed(m, ankle, f) < kLandingSpeed;
+    for (int f = 1; f + kMinSlowFrames <= m.num_frames; ++f) {
+        if (slow[static_cast<size_t>(f - 1)]) continue;
+        bool run = true;
+        for (int k = 0; k < kMinSlowFrames; ++k) run = run && slow[static_cast<size_t>(f + k)];
+        if (!run) continue;
+        out->push_back({(f - 0.5) / m.fps});
+    }
+}
+
+}  // namespace
+
+std::vector<Landing> detect_landings(const JointSequence& motion) {
+    std::vector<Landing> out;
+    if (motion.num_frames < 3) return out;
+    landings_of(motion, smpl22::left_ankle, &out);
+    landings_of(motion, smpl22::right_ankle, &out);
+    std::sort(out.begin(), out.end(), [](const Landing& a, const Landing& b) { return a.time_s < b.time_s; });
+    return out;
+}
+
+double landing_transmissibility(int segment) {
+    using namespace smpl22;
+    switch (segment) {
+        case left_knee: case right_knee: case left_ankle: case right_ankle: case left_foot: case right_foot: return 1.0;
+        case left_hip: case right_hip: return 0.6;
+        case pelvis: return 0.4;
+        case spine1: case spine2: return 0.35;
+        case spine3: case left_collar: case right_collar: return 0.3;
+        case neck: case head: return 0.2;
+        default: return 0.15;  // shoulders (upper arms), elbows (forearms), wrists (hands)
+    }
+}
+
+ImpactPulses impact_pulses(const std::vector<Landing>& landings, double gain, double duration_s, int segment, double fps) {
+    ImpactPulses p;
+    p.duration_s = duration_s;
+    p.smoothing_s = 1 / fps;
+    for (const Landing& l : landings) {
+        p.time_s.push_back(l.time_s);
+        p.delta_v.push_back(gain * landing_transmissibility(segment));
+    }
+    return p;
+}
+
+Vector3d ImpactPulses::acceleration(double t) const {
+    double a = 0;
+    const double centre_offset = duration_s / 2;
+    for (size_t i = 0; i < time_s.size(); ++i) {
+        const double s = t - time_s[i];
+        if (std::abs(s - centre_offset) > 5 * smoothing_s + duration_s) continue;
+        const double sharp = s >= 0 && s <= duration_s ? M_PI / (2 * duration_s) * std::sin(M_PI * s / duration_s) : 0;
+        const double z = (s - centre_offset) / smoothing_s;
+        const double spread = std::exp(-0.5 * z * z) / (smoothing_s * std::sqrt(2 * M_PI));
+        a += delta_v[i] * (sharp - spread);
+    }
+    return Vector3d(0, a, 0);
+}
+
+}  // namespace t2imu

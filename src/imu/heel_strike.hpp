@@ -1,0 +1,54 @@
+// Heel-strike transients that a 20 fps motion cannot hold, restored as short acceleration pulses.
+//
+// When a foot lands, the ground stops it within some 30-50 ms and a shock runs up the body: a sharp upward
+// acceleration of the shank, attenuated on its way to the trunk and head (peak accelerations in walking and
+// running: tibia 2-5 g, lower back about 1 g, head 0.5-1 g; e.g. Lafortune, Lake & Hennig 1996, "Differential
+// shock transmission response of the human body to impact severity and lower limb posture", J. Biomech. 29).
+// A motion at 20 fps (a frame every 50 ms) keeps the velocity change of the landing but spreads it over
+// several frames. Per landing we add what was lost: a half-sine pulse of `duration_s` minus a Gaussian of the
+// same area and centre with the sd of one frame (what the frames hold), both carrying the upward velocity
+// change delta_v. The difference has zero area and zero first moment, so the body's velocity and path are
+// unchanged; only the sharpness of the landing comes back. It is what sets a sensor's attachment ringing
+// (soft_tissue.hpp).
+//
+// Landings: per foot, the first frame of a run of at least two frames in which the ankle moves slower than
+// kLandingSpeed (3-D, central difference), after a frame at which it moved faster: level walking, running and
+// stairs alike (no floor height is assumed). delta_v = gain x the segment's transmissibility, the same for every
+// landing: the size of a landing is not read from the motion, because a 20 fps foot path does not carry it.
+// Scaled by the ankle's landing speed, derived stair descents landed 3-4 times harder than level walks (waist
+// jerk 90-100 against 40-45 m/s^3), against real SisFall stair trials that are gentler than their walks (40
+// against 47 m/s^3, median per recording).
+#pragma once
+#include <Eigen/Core>
+#include <vector>
+
+#include "motion/joint_sequence.hpp"
+
+namespace t2imu {
+
+constexpr double kLandingSpeed = 1.0;  // m/s: a swinging foot moves at 2-6 m/s, a planted ankle rolls below this
+
+struct Landing {
+    double time_s;  // the moment of contact: half a frame before the first slow frame
+};
+
+// Every landing of either foot in a SMPL-22 motion, in time order.
+std::vector<Landing> detect_landings(const JointSequence& motion);
+
+// The share of the shank's landing transient that reaches a sensor on the segment of proximal joint `segment`
+// (SMPL-22): 1 foot and shank, 0.6 thigh, 0.4 pelvis, 0.35 spine, 0.3 chest and shoulders, 0.2 neck and head,
+// 0.15 arms. Approximate ratios of the peak accelerations in the literature above.
+double landing_transmissibility(int segment);
+
+struct ImpactPulses {
+    std::vector<double> time_s, delta_v;  // per landing: contact time (s), upward velocity change at the sensor (m/s)
+    double duration_s = 0.04;             // the sharp landing
+    double smoothing_s = 0.05;            // the frames' spread: one frame period
+    // The extra world acceleration (m/s^2, Y up) at time t (s).
+    Eigen::Vector3d acceleration(double t) const;
+};
+
+// Pulses for a sensor on `segment`: delta_v = gain (m/s at the shank) x transmissibility; smoothing = 1 / fps.
+ImpactPulses impact_pulses(const std::vector<Landing>& landings, double gain, double duration_s, int segment, double fps);
+
+}  // namespace t2imu

@@ -1,0 +1,59 @@
+// The realism model: what stands between an ideal sensor bolted to a moving skeleton and a real recording,
+// in levers that are each seeded, switchable and measured on their own (README, "Sensor realism").
+//
+//   tilt_deg, tilt_sd_deg  mounting tilt: the sensor turned about the skin's horizontal tangent so that its
+//                          outward normal points down by tilt_deg (a belt below a belly, a strap on a tapering
+//                          limb), drawn per recording from a normal distribution (mean, sd; degrees). No tilt
+//                          where the skin faces up or down.
+//   tissue_hz, tissue_damping
+//                          the attachment's spring-mass (soft_tissue.hpp); 0 Hz = bolted to the bone
+//   impact_gain, impact_ms landing transients (heel_strike.hpp): the velocity change of a landing at the shank
+//                          (m/s; transmissibility scales it to the sensor's segment) and the duration of a
+//                          landing (ms); gain 0 = none
+//   tempo_sd               motion tempo: the motion is played at its frame rate times exp(N(0, tempo_sd)) per
+//                          recording: a uniform time warp, which keeps the path and scales every speed by the
+//                          same factor (1.0 leaves the motion as it is)
+//   device                 the sensor's own errors: a sensor_noise.hpp model ("none", a preset, overrides)
+//
+// Presets, with what each value rests on (README's ablation table measures them; a lever that did not help on
+// the shared subjects is off in the preset and says so there):
+//   none        everything off: the ideal sensor of the paper's pipeline
+//   sisfall     the SisFall belt board at the waist, calibrated on the shared SisFall subjects
+//   umafall     UMAFall's SensorTags on elastic straps, calibrated on the shared UMAFall subjects
+//   hugadb      HuGaDB's leg straps: literature values, not calibrated (the shared copy has no waist sensor)
+//   smartphone  RealWorld's phones in pockets and arm bands: literature values, not calibrated (no RealWorld data)
+// A TOML file (`--realism my.toml`) names the same keys, with `base = "PRESET"` to start from a preset; an
+// unknown key is refused.
+#pragma once
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "imu/soft_tissue.hpp"
+
+namespace t2imu {
+
+struct RealismModel {
+    std::string name = "none";
+    double tilt_deg = 0, tilt_sd_deg = 0;
+    SoftTissue tissue;
+    double impact_gain = 0, impact_ms = 40;
+    double tempo_sd = 0;
+    std::string device = "none";
+
+    // Throws Error naming `source` and the key for a value out of range.
+    void validate(const std::string& source) const;
+    nlohmann::json to_json() const;
+};
+
+const std::vector<std::string>& realism_preset_names();
+RealismModel realism_preset(const std::string& name);  // errors name --realism
+RealismModel parse_realism_toml(const std::string& text, const std::string& source);
+// A preset name or a .toml file's path (errors name --realism or the file).
+RealismModel parse_realism(const std::string& text);
+
+// Per recording draws, deterministic in the seed.
+double draw_tilt_deg(const RealismModel& model, uint64_t seed);
+double draw_tempo(const RealismModel& model, uint64_t seed);
+
+}  // namespace t2imu

@@ -1,0 +1,47 @@
+#include "imu/soft_tissue.hpp"
+
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace t2imu {
+
+using Eigen::Vector3d;
+
+void SoftTissue::validate(const std::string& source) const {
+    if (!(frequency_hz == 0 || (frequency_hz >= 1 && frequency_hz <= 200)))
+        throw Error(source, "tissue_hz", "0 (rigid) or 1 to 200 Hz", std::to_string(frequency_hz));
+    if (enabled() && !(damping_ratio > 0 && damping_ratio <= 2))
+        throw Error(source, "tissue_damping", "a damping ratio in (0, 2]", std::to_string(damping_ratio));
+}
+
+SpringMassResponse spring_mass_response(const std::vector<Vector3d>& base, double dt, const SoftTissue& tissue) {
+    const size_t n = base.size();
+    SpringMassResponse r;
+    r.displacement.assign(n, Vector3d::Zero());
+    r.velocity.assign(n, Vector3d::Zero());
+    r.acceleration.assign(n, Vector3d::Zero());
+    if (!tissue.enabled() || n == 0) return r;
+    const double w = 2 * M_PI * tissue.frequency_hz, c = 2 * tissue.damping_ratio * w, k = w * w;
+    const auto accel = [&](const Vector3d& b, const Vector3d& u, const Vector3d& v) -> Vector3d { return -b - c * v - k * u; };
+    Vector3d u = Vector3d::Zero(), v = Vector3d::Zero();
+    r.acceleration[0] = accel(base[0], u, v);
+    for (size_t i = 1; i < n; ++i) {
+        const Vector3d& b0 = base[i - 1];
+        const Vector3d& b1 = base[i];
+        const Vector3d bh = 0.5 * (b0 + b1);
+        // RK4 on (u, v) with the input linear across the step.
+        const Vector3d k1u = v, k1v = accel(b0, u, v);
+        const Vector3d k2u = v + 0.5 * dt * k1v, k2v = accel(bh, u + 0.5 * dt * k1u, v + 0.5 * dt * k1v);
+        const Vector3d k3u = v + 0.5 * dt * k2v, k3v = accel(bh, u + 0.5 * dt * k2u, v + 0.5 * dt * k2v);
+        const Vector3d k4u = v + dt * k3v, k4v = accel(b1, u + dt * k3u, v + dt * k3v);
+        u += dt / 6 * (k1u + 2 * k2u + 2 * k3u + k4u);
+        v += dt / 6 * (k1v + 2 * k2v + 2 * k3v + k4v);
+        r.displacement[i] = u;
+        r.velocity[i] = v;
+        r.acceleration[i] = accel(b1, u, v);
+    }
+    return r;
+}
+
+}  // namespace t2imu

@@ -1,0 +1,150 @@
+// The realism model (imu/realism) through the whole bodies/IMU stage: off is the ideal sensor to the byte, a
+// tempo of 1 is the identity, a static body reads gravity only whatever the attachment, the tilt and the tempo
+// are the ones drawn, landings make the attachment ring; presets and TOML files are read strictly.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "body/procedural_body.hpp"
+#include "core/error.hpp"
+#include "imu/virtual_imu.hpp"
+#include "motion/skeleton.hpp"
+
+using namespace t2imu;
+using namespace t2imu::smpl22;
+using Eigen::Vector3d;
+
+namespace {
+
+const BodySpec& average_man() { return paper_bodies()[2]; }
+
+JointSequence standing(int frames = 60) {
+    const ProceduralBody body(average_man());
+    JointSequence s(frames, kNumJoints, 20);
+    for (int f = 0; f < frames; ++f)
+        for (int j = 0; j < kNumJoints; ++j) s.at(f, j) = body.rest_joints()[j];
+    return s;
+}
+
+// The rest skeleton bouncing vertically with a sharp landing every 0.5 s: the body drops 15 cm and stops.
+JointSequence hopping() {
+    const ProceduralBody body(average_man());
+    JointSequence s(121, kNumJoints, 20);
+    for (int f = 0; f < s.num_frames; ++f) {
+        const double phase = std::fmod(f / 20.0, 0.5) / 0.5;
+        const double lift = phase < 0.5 ? 0.15 * std::sin(M_PI * phase * 2) : 0;
+        for (int j = 0; j < kNumJoints; ++j) s.at(f, j) = body.rest_joints()[j] + Vector3d(0, lift, 0);
+    }
+    return s;
+}
+
+VirtualImuOptions with(const RealismModel& m) {
+    VirtualImuOptions o;
+    o.realism = m;
+    o.seed = 7;
+    return o;
+}
+
+double mean_y(const ImuSignals& s, size_t from) {
+    double sum = 0;
+    for (size_t k = from; k < s.acc.size(); ++k) sum += s.acc[k].y();
+    return sum / static_cast<double>(s.acc.size() - from);
+}
+
+}  // namespace
+
+TEST(Realism, OffAndTempoOneAreTheIdealSensorToTheByte) {
+    const JointSequence motion = hopping();
+    const std::vector<SensorPlacement> sensors = parse_sensor_sets("umafall");
+    const BodyImu ideal = synthesize_body_imu(motion, average_man(), sensors, {});
+    RealismModel off = realism_preset("none");
+    off.name = "renamed";  // every lever off, whatever the name
+    const BodyImu same = synthesize_body_imu(motion, average_man(), sensors, with(off));
+    EXPECT_EQ(same.tempo, 1.0);
+    for (size_t s = 0; s < sensors.size(); ++s)
+        for (size_t k = 0; k < ideal.signals[s].acc.size(); ++k) {
+            EXPECT_EQ(ideal.signals[s].acc[k], same.signals[s].acc[k]);
+            EXPECT_EQ(ideal.signals[s].gyr[k], same.signals[s].gyr[k]);
+        }
+}
+
+TEST(Realism, StaticBodyOnSoftTissueReadsGravityOnly) {
+    RealismModel m = realism_preset("sisfall");
+    m.device = "none";
+    const BodyImu imu = synthesize_body_imu(standing(), average_man(), parse_sensor_sets("realworld"), with(m));
+    for (const ImuSignals& s : imu.signals)
+        for (size_t k = 0; k < s.acc.size(); ++k) {
+            EXPECT_NEAR(s.acc[k].norm(), kGravity, 1e-9);
+            EXPECT_LT(s.gyr[k].norm(), 1e-9);
+        }
+}
+
+TEST(Realism, TiltTurnsTheBeltSensorsOutwardAxisDown) {
+    RealismModel m;
+    m.tilt_deg = 15;
+    const BodyImu imu = synthesize_body_imu(standing(), average_man(), parse_sensor_sets("sisfall"), with(m));
+    ASSERT_EQ(imu.tilt_deg.size(), 1u);
+    EXPECT_EQ(imu.tilt_deg[0], 15);
+    // SisFall's board: y down, z out of the belly (forwards). Tilted 15 deg, z reads -g sin 15 deg, y -g cos 15 deg.
+    const Vector3d a = imu.signals[0].acc[10];
+    EXPECT_NEAR(a.z(), -kGravity * std::sin(15 * M_PI / 180), 1e-3);
+    EXPECT_NEAR(a.y(), -kGravity * std::cos(15 * M_PI / 180), 1e-3);
+    m.tilt_sd_deg = 5;  // drawn per recording: seeded, and different between seeds
+    EXPECT_EQ(draw_tilt_deg(m, 3), draw_tilt_deg(m, 3));
+    EXPECT_NE(draw_tilt_deg(m, 3), draw_tilt_deg(m, 4));
+}
+
+TEST(Realism, TempoPlaysTheSameMotionFasterOrSlower) {
+    RealismModel m;
+    m.tempo_sd = 0.2;
+    const JointSequence motion = hopping();
+    const BodyImu imu = synthesize_body_imu(motion, average_man(), parse_sensor_sets("sisfall"), with(m));
+    EXPECT_NE(imu.tempo, 1.0);
+    const double seconds = (motion.num_frames - 1) / (20.0 * imu.tempo);
+    EXPECT_EQ(imu.signals[0].t.size(), static_cast<size_t>(std::floor(seconds * 50 + 1e-9)) + 1);
+    // The log tempo over many seeds has the set sd.
+    double sum = 0, sum2 = 0;
+    for (uint64_t seed = 0; seed < 4000; ++seed) {
+        const double l = std::log(draw_tempo(m, seed));
+        sum += l, sum2 += l * l;
+    }
+    EXPECT_NEAR(std::sqrt(sum2 / 4000 - std::pow(sum / 4000, 2)), 0.2, 0.01);
+}
+
+TEST(Realism, LandingsMakeTheAttachmentRingAboveThreeHertz) {
+    const JointSequence motion = hopping();
+    const std::vector<SensorPlacement> waist = parse_sensor_sets("sisfall");
+    const BodyImu ideal = synthesize_body_imu(motion, average_man(), waist, {});
+    RealismModel m;
+    m.tissue = {8, 0.3};
+    m.impact_gain = 1;
+    const BodyImu soft = synthesize_body_imu(motion, average_man(), waist, with(m));
+    ASSERT_EQ(ideal.signals[0].acc.size(), soft.signals[0].acc.size());
+    // The mean reading is kept (the pulses carry no net velocity change: gravity and the bounce stay).
+    EXPECT_NEAR(mean_y(soft.signals[0], 0), mean_y(ideal.signals[0], 0), 0.05);
+    // Sample-to-sample changes (a high-pass view) grow: the landings ring.
+    double d_ideal = 0, d_soft = 0;
+    for (size_t k = 1; k < soft.signals[0].acc.size(); ++k) {
+        d_ideal += (ideal.signals[0].acc[k] - ideal.signals[0].acc[k - 1]).squaredNorm();
+        d_soft += (soft.signals[0].acc[k] - soft.signals[0].acc[k - 1]).squaredNorm();
+    }
+    EXPECT_GT(d_soft, 2 * d_ideal);
+}
+
+TEST(Realism, PresetsAndTomlFilesAreReadStrictly) {
+    for (const std::string& name : realism_preset_names()) EXPECT_NO_THROW(realism_preset(name).validate(name)) << name;
+    EXPECT_THROW(parse_realism("sisfal"), Error);
+    const RealismModel m = parse_realism_toml("base = \"sisfall\"\ntilt_deg = 20\ntissue_hz = 0\n", "mine.toml");
+    EXPECT_EQ(m.tilt_deg, 20);
+    EXPECT_FALSE(m.tissue.enabled());
+    EXPECT_EQ(m.device, "sisfall");  // kept from the base
+    EXPECT_EQ(m.name, "mine.toml");
+    EXPECT_THROW(parse_realism_toml("tilt_dg = 3\n", "mine.toml"), Error);
+    EXPECT_THROW(parse_realism_toml("tempo_sd = 2\n", "mine.toml"), Error);
+    EXPECT_THROW(parse_realism_toml("device = \"phone\"\n", "mine.toml"), Error);
+    VirtualImuOptions o;
+    o.realism = realism_preset("sisfall");
+    o.noise = parse_noise_model("smartphone");
+    EXPECT_THROW(o.validate(), Error);  // two device models
+}
