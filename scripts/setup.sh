@@ -18,6 +18,7 @@ PACKAGES=(
   libgtest-dev           # the test suite
   libbenchmark-dev       # bench/ programs
   gnuplot-nox            # PNG figures (pngcairo terminal) for reports
+  chromium               # headless screenshot test of the report (tests/test_report_render.cpp)
   libtorch-dev           # libtorch 1.13 (CPU): the diffusion model, DeepConvLSTM
   libgloo-dev            # Gloo's headers, needed by c10d's ProcessGroupGloo (data-parallel training)
   libopenblas0-openmp    # the BLAS libtorch uses; the reference BLAS is many times slower

@@ -1,6 +1,7 @@
 #include "report/figures.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 
@@ -15,6 +16,16 @@ std::string number(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.6g", v);
     return buf;
+}
+
+// Points and medians of one source's statistics: rows "x acc_sd dominant_hz" around x = activity index + offset.
+void add_stats_rows(const std::vector<SignalStats>& stats, double x, GnuplotData& points, GnuplotData& medians) {
+    for (size_t k = 0; k < stats.size(); ++k) {
+        const double jitter = 0.12 * (std::fmod(0.618034 * static_cast<double>(k), 1.0) - 0.5);  // spread, same every run
+        points.rows.push_back({number(x + jitter), number(stats[k].acc_sd_m_s2), number(stats[k].dominant_hz)});
+    }
+    if (!stats.empty())
+        medians.rows.push_back({number(x), number(median_of(stats, &SignalStats::acc_sd_m_s2)), number(median_of(stats, &SignalStats::dominant_hz))});
 }
 
 }  // namespace
@@ -97,6 +108,37 @@ void plot_confusion(const nlohmann::json& result, const std::string& png, const 
                "set ytics (" + xtics + ")\nset yrange [] reverse\nset cbrange [0:1]\nset palette defined (0 'white', 1 '#3b75af')\n"
                "set view map\nplot $cm using 1:2:3 with image notitle, $cm using 1:2:(sprintf('%.2f', $3)) with labels notitle",
                760, 680);
+}
+
+void plot_signal_stats(const std::vector<ActivityStats>& groups, const std::string& png, const std::string& title) {
+    if (groups.empty()) throw Error(png, "activities", "at least one activity to plot");
+    bool has_real = false;
+    for (const ActivityStats& g : groups) has_real = has_real || !g.real.empty();
+    const double offset = has_real ? 0.2 : 0.0;  // synthetic left of the tick, real right of it
+    GnuplotData syn{"syn", {}}, real{"real", {}}, syn_median{"msyn", {}}, real_median{"mreal", {}};
+    std::string xtics;
+    for (size_t i = 0; i < groups.size(); ++i) {
+        add_stats_rows(groups[i].synthetic, static_cast<double>(i) - offset, syn, syn_median);
+        add_stats_rows(groups[i].real, static_cast<double>(i) + offset, real, real_median);
+        xtics += std::string(i ? ", " : "") + gnuplot_label(groups[i].activity) + " " + std::to_string(i);
+    }
+    const auto panel = [&](const std::string& ylabel, int column) {
+        const std::string c = std::to_string(column);
+        std::string plot = "set ylabel '" + ylabel + "'\nplot $syn using 1:" + c + " with points pt 7 ps 0.6 lc rgb '#3b75af' title 'synthetic', "
+                           "$msyn using 1:" + c + ":(0.15) with xerrorbars pt -1 lw 3 lc rgb '#1d3f63' title 'median'";
+        if (has_real)
+            plot += ", $real using 1:" + c + " with points pt 7 ps 0.6 lc rgb '#e08a2c' title 'real', "
+                    "$mreal using 1:" + c + ":(0.15) with xerrorbars pt -1 lw 3 lc rgb '#8a4f10' notitle";
+        return plot + "\n";
+    };
+    std::vector<GnuplotData> data = {syn, syn_median};
+    if (has_real) data.insert(data.end(), {real, real_median});
+    render_png(png, data,
+               "set multiplot layout 1,2 title " + gnuplot_label(title) + "\nset grid ytics\nset key outside bottom center horizontal\n"
+               "set yrange [0:*]\nset offsets 0, 0, graph 0.08, 0\n"
+               "set xrange [-0.6:" + number(static_cast<double>(groups.size()) - 0.4) + "]\nset xtics (" + xtics + ") rotate by -35 left\n" +
+               panel("|acc| standard deviation (m/s^2)", 2) + panel("dominant frequency of |acc| (Hz)", 3) + "unset multiplot",
+               1000, 460);
 }
 
 void plot_imu_trace(const CsvTable& rec, const std::string& png, const std::string& title) {

@@ -1,5 +1,6 @@
 // The evaluation's figures (after the paper's): L_acc change per activity category (Fig. 1), t-SNE of real vs
-// synthetic features (Fig. 2), balanced accuracy per model (Fig. 3), confusion matrices, and IMU traces.
+// synthetic features (Fig. 2), balanced accuracy per model (Fig. 3), confusion matrices, signal statistics per
+// activity, and IMU traces.
 // Each takes the file the producing command wrote, as parsed there, and draws one PNG.
 #pragma once
 #include <nlohmann/json.hpp>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "core/csv.hpp"
+#include "report/signal_stats.hpp"
 
 namespace t2imu {
 
@@ -21,6 +23,10 @@ void plot_tsne(const CsvTable& tsne, const std::string& colour_column, const std
 void plot_balanced_accuracy(const std::vector<std::pair<std::string, nlohmann::json>>& results, const std::string& png);
 // A result's summed confusion matrix, each row normalised to recall.
 void plot_confusion(const nlohmann::json& result, const std::string& png, const std::string& title);
+// Per-recording signal statistics by activity, synthetic beside real where there is real data: acceleration
+// magnitude sd (left) and dominant frequency (right), one point per recording (jittered sideways), a bar at
+// each median.
+void plot_signal_stats(const std::vector<ActivityStats>& groups, const std::string& png, const std::string& title);
 // An IMU recording (t, acc_xyz, gyr_xyz): accelerometer above, gyroscope below.
 void plot_imu_trace(const CsvTable& recording, const std::string& png, const std::string& title);
 

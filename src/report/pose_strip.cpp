@@ -1,0 +1,68 @@
+#include "report/pose_strip.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include "core/error.hpp"
+#include "motion/skeleton.hpp"
+
+namespace t2imu {
+
+namespace {
+
+constexpr double kCmPerM = 100;
+
+std::string fixed1(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.1f", v);
+    return buf;
+}
+
+const char* side_colour(int joint) {
+    const char* name = smpl22::kJointNames[static_cast<size_t>(joint)];
+    if (std::strncmp(name, "left_", 5) == 0) return "#3b75af";
+    if (std::strncmp(name, "right_", 6) == 0) return "#e08a2c";
+    return "#555";
+}
+
+// One pose in panel `panel`: the floor, the 21 bones, the time label.
+std::string pose_panel(const JointSequence& joints, int frame, int panel) {
+    const double left = panel * kPanelWidthCm, centre_z = joints.at(frame, smpl22::pelvis).z();
+    const auto x = [&](int j) { return fixed1(left + kPanelWidthCm / 2 + kCmPerM * (joints.at(frame, j).z() - centre_z)); };
+    const auto y = [&](int j) { return fixed1(kHeadroomCm - kCmPerM * joints.at(frame, j).y()); };
+    std::string out = "<line x1=\"" + fixed1(left + 10) + "\" y1=\"" + fixed1(kHeadroomCm) + "\" x2=\"" + fixed1(left + kPanelWidthCm - 10) +
+                      "\" y2=\"" + fixed1(kHeadroomCm) + "\" stroke=\"#ccc\"/>\n";
+    for (int j = 1; j < smpl22::kNumJoints; ++j) {
+        const int p = smpl22::kParents[static_cast<size_t>(j)];
+        out += "<line x1=\"" + x(p) + "\" y1=\"" + y(p) + "\" x2=\"" + x(j) + "\" y2=\"" + y(j) + "\" stroke=\"" + side_colour(j) + "\"/>\n";
+    }
+    out += "<text x=\"" + fixed1(left + kPanelWidthCm / 2) + "\" y=\"" + fixed1(kHeadroomCm + kBelowFloorCm - 6) + "\">" +
+           fixed1(frame / joints.fps) + " s</text>\n";
+    return out;
+}
+
+}  // namespace
+
+std::vector<int> strip_frames(int num_frames, int poses) {
+    const int n = std::min(num_frames, poses);
+    if (n == 1) return {0};
+    std::vector<int> frames;
+    for (int k = 0; k < n; ++k) frames.push_back(static_cast<int>(std::lround(static_cast<double>(k) * (num_frames - 1) / (n - 1))));
+    return frames;
+}
+
+std::string pose_strip_svg(const JointSequence& joints, int poses) {
+    if (joints.num_joints != smpl22::kNumJoints || joints.num_frames < 1 || poses < 1)
+        throw Error("pose strip", "motion", "SMPL-22 joints, at least one frame and one pose");
+    const std::vector<int> frames = strip_frames(joints.num_frames, poses);
+    const double width = kPanelWidthCm * static_cast<double>(frames.size()), height = kHeadroomCm + kBelowFloorCm;
+    std::string out = "<svg class=\"pose-strip\" xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " + fixed1(width) + " " + fixed1(height) +
+                      "\" width=\"" + fixed1(width * kPoseStripPixelsPerCm) + "\" height=\"" + fixed1(height * kPoseStripPixelsPerCm) +
+                      "\" stroke-width=\"4\" stroke-linecap=\"round\" font-size=\"18\" text-anchor=\"middle\" fill=\"#555\">\n";
+    for (size_t k = 0; k < frames.size(); ++k) out += pose_panel(joints, frames[k], static_cast<int>(k));
+    return out + "</svg>";
+}
+
+}  // namespace t2imu
