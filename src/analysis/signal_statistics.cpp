@@ -25,12 +25,6 @@ double mean_of(const std::vector<double>& x) {
     return s / static_cast<double>(x.size());
 }
 
-double sd_of(const std::vector<double>& x) {
-    const double m = mean_of(x);
-    double s = 0;
-    for (double v : x) s += (v - m) * (v - m);
-    return std::sqrt(s / static_cast<double>(x.size()));
-}
 
 double percentile(std::vector<double> x, double p) {
     std::sort(x.begin(), x.end());
@@ -53,20 +47,29 @@ std::vector<double> periodogram(const std::vector<double>& x, size_t* length) {
     return power;
 }
 
-double dominant_frequency(const std::vector<double>& x, double rate_hz) {
+double median_of(std::vector<double> x) { return percentile(std::move(x), 0.5); }
+
+}  // namespace
+
+double standard_deviation(const std::vector<double>& x) {
+    if (x.size() < 2) return 0;
+    const double m = mean_of(x);
+    double s = 0;
+    for (double v : x) s += (v - m) * (v - m);
+    return std::sqrt(s / static_cast<double>(x.size()));
+}
+
+double dominant_frequency_hz(const std::vector<double>& x, double rate_hz, double min_hz) {
+    if (x.size() < 2) return 0;
     size_t n = 0;
     const std::vector<double> p = periodogram(x, &n);
     size_t best = 0;
     for (size_t k = 1; k < p.size(); ++k) {
         const double f = static_cast<double>(k) * rate_hz / static_cast<double>(n);
-        if (f >= kMinDominantHz && (best == 0 || p[k] > p[best])) best = k;
+        if (f >= min_hz && (best == 0 || p[k] > p[best])) best = k;
     }
     return static_cast<double>(best) * rate_hz / static_cast<double>(n);
 }
-
-double median_of(std::vector<double> x) { return percentile(std::move(x), 0.5); }
-
-}  // namespace
 
 const std::vector<std::string>& signal_statistic_names() {
     static const std::vector<std::string> names = {"mean_x", "mean_y", "mean_z", "tilt_deg", "sd_x", "sd_y", "sd_z", "mag_sd",
@@ -90,14 +93,14 @@ std::map<std::string, double> recording_signal_statistics(const ImuRecording& re
     for (int a = 0; a < 3; ++a) {
         mean[a] = mean_of(axis[a]);
         s[std::string("mean_") + xyz[a]] = mean[a];
-        s[std::string("sd_") + xyz[a]] = sd_of(axis[a]);
-        s[std::string("dom_") + xyz[a] + "_hz"] = dominant_frequency(axis[a], rate_hz);
+        s[std::string("sd_") + xyz[a]] = standard_deviation(axis[a]);
+        s[std::string("dom_") + xyz[a] + "_hz"] = dominant_frequency_hz(axis[a], rate_hz, kMinDominantHz);
     }
     const double largest = mean.cwiseAbs().maxCoeff();
     s["tilt_deg"] = mean.norm() > 0 ? std::acos(std::min(1.0, largest / mean.norm())) * 180 / M_PI : 0;
     std::vector<double> magnitude(n);
     for (size_t i = 0; i < n; ++i) magnitude[i] = std::sqrt(axis[0][i] * axis[0][i] + axis[1][i] * axis[1][i] + axis[2][i] * axis[2][i]);
-    s["mag_sd"] = sd_of(magnitude);
+    s["mag_sd"] = standard_deviation(magnitude);
     s["mag_p05"] = percentile(magnitude, 0.05);
     s["mag_p50"] = percentile(magnitude, 0.5);
     s["mag_p95"] = percentile(magnitude, 0.95);

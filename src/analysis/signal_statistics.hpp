@@ -25,6 +25,12 @@
 
 namespace t2imu {
 
+// The population standard deviation of x (divides by n; 0 for fewer than 2 values).
+double standard_deviation(const std::vector<double>& x);
+// The frequency (Hz) of the highest periodogram peak of x's mean-removed values at or above min_hz, zero-padded to
+// a power of two >= 8 x the length (so peaks fall between the plain bins too); 0 for fewer than 2 values.
+double dominant_frequency_hz(const std::vector<double>& x, double rate_hz, double min_hz);
+
 // Statistic names in the order above.
 const std::vector<std::string>& signal_statistic_names();
 

@@ -44,9 +44,9 @@ struct ExperimentRealSet {
     std::string dataset;  // IMU dataset folder (har/imu_dataset.hpp layout)
     std::string prompts;  // prompt set in this data set's class names
     std::string sensors;  // placement set the synthetic recordings are made at
-    std::string realism;  // realism model of this set's synthetic recordings ("" = [synth]'s realism)
     std::vector<std::string> positions;  // positions compared (windowing.hpp names)
     int ceiling_folds = 0;  // real-to-real ceiling: subjects dealt into this many folds (0: one per subject; -1: none)
+    std::string realism;    // realism model of this set's synthetic recordings ("" = [synth]'s realism)
 };
 
 struct ExperimentLacc {

@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <complex>
 #include <map>
 #include <set>
 
-#include "analysis/fft.hpp"
+#include "analysis/signal_statistics.hpp"
 #include "core/error.hpp"
 #include "motion/activity_names.hpp"
 
@@ -16,24 +15,8 @@ SignalStats signal_stats(const ImuRecording& r) {
     const size_t n = r.samples.size();
     if (n < 2 || !(r.rate_hz > 0)) throw Error(r.path, "samples", "at least 2 samples at a positive rate");
     std::vector<double> magnitude(n);
-    double mean = 0;
-    for (size_t i = 0; i < n; ++i) {
-        magnitude[i] = std::hypot(r.samples[i][0], r.samples[i][1], r.samples[i][2]);
-        mean += magnitude[i] / static_cast<double>(n);
-    }
-    SignalStats s;
-    std::vector<std::complex<double>> spectrum(next_power_of_two(n));
-    for (size_t i = 0; i < n; ++i) {
-        s.acc_sd_m_s2 += (magnitude[i] - mean) * (magnitude[i] - mean) / static_cast<double>(n);
-        spectrum[i] = magnitude[i] - mean;
-    }
-    s.acc_sd_m_s2 = std::sqrt(s.acc_sd_m_s2);
-    fft_in_place(spectrum);
-    size_t best = 1;
-    for (size_t k = 2; k <= spectrum.size() / 2; ++k)
-        if (std::norm(spectrum[k]) > std::norm(spectrum[best])) best = k;
-    s.dominant_hz = static_cast<double>(best) * r.rate_hz / static_cast<double>(spectrum.size());
-    return s;
+    for (size_t i = 0; i < n; ++i) magnitude[i] = std::hypot(r.samples[i][0], r.samples[i][1], r.samples[i][2]);
+    return {standard_deviation(magnitude), dominant_frequency_hz(magnitude, r.rate_hz, 0)};
 }
 
 std::string comparison_position(const std::vector<ImuRecording>& synthetic, const std::vector<ImuRecording>& real) {

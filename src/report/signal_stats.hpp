@@ -14,8 +14,8 @@ struct SignalStats {
     double dominant_hz = 0;  // frequency of the largest periodogram bin of |acc| - mean(|acc|), DC excluded (Hz)
 };
 
-// Of a loaded recording (at least 2 samples) at its rate_hz. The periodogram zero-pads to a power of two, so
-// the frequency resolution is rate_hz / next_power_of_two(samples).
+// Of a loaded recording (at least 2 samples) at its rate_hz (analysis/signal_statistics.hpp's standard_deviation
+// and dominant_frequency_hz of |acc|, DC excluded).
 SignalStats signal_stats(const ImuRecording& recording);
 
 // The statistics of the recordings at one position, per canonical activity (motion/activity_names.hpp).
