@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The sensor-realism ablation (README, "Sensor realism"): the same retrieved motions for a data set's prompts,
-# rendered with no realism model, each lever of the data set's preset alone, and the whole preset; per variant
+# rendered with no realism model, each lever alone, all of them and the data set's preset; per variant
 # the signal statistics against the real data, the classifier two-sample test on catch22 windows, and
 # synthetic-only HAR tested on the real recordings.
 # Needs cache/dataset (t2imu data build), the GloVe vocabulary and the real set unpacked (scripts/paper-experiment.sh).
@@ -10,26 +10,30 @@ cd "$(dirname "$0")/.."
 out=${1:-out/realism-sisfall}
 set=${2:-sisfall}
 repeats=${3:-3}
-variants=${4:-"none tilt landings landings+tissue tempo device all"}
+variants=${4:-"none tilt landings landings+tissue tempo device all preset"}
 real=cache/imu/$set
-t2imu="build/t2imu --threads ${THREADS:-1}"
+t2imu="${T2IMU_BIN:-build/t2imu} --threads ${THREADS:-1}"
 mkdir -p "$out/levers"
 
-# One TOML per variant: the preset with the levers not named in the variant switched off. Variants name
-# levers joined by "+": tilt, landings, tissue, tempo, device; "none" and "all" are the presets none and SET.
-declare -A off=(
-  [tilt]=$'tilt_deg = 0\ntilt_sd_deg = 0'
-  [landings]='impact_gain = 0'
-  [tissue]='tissue_hz = 0'
-  [tempo]='tempo_sd = 0'
-  [device]='device = "none"'
+# One TOML per variant, every lever set explicitly: on as below, off as 0 ("none" for the device). Tilt and
+# device take the preset's values (src/imu/realism.cpp); the levers the presets leave off take the values they
+# were measured with: landings calibrated on SisFall walking (share of power above 3 Hz 0.30 -> 0.47), soft tissue
+# from the wobbling-mass literature (imu/soft_tissue.hpp), tempo 8 %. Variants name levers joined by "+";
+# "none" is no realism model, "all" every lever, "preset" the preset SET by name.
+declare -A on_off=(
+  [tilt]=$'# preset tilt\n|tilt_deg = 0\ntilt_sd_deg = 0'
+  [landings]="impact_gain = $([ "$set" = sisfall ] && echo 0.8 || echo 1.0)|impact_gain = 0"
+  [tissue]=$'tissue_hz = 10\ntissue_damping = '"$([ "$set" = sisfall ] && echo 0.5 || echo 0.3)"'|tissue_hz = 0'
+  [tempo]='tempo_sd = 0.08|tempo_sd = 0'
+  [device]=$'# preset device\n|device = "none"'
 )
 variant_file() {  # VARIANT -> path of its TOML
-  local file="$out/levers/$1.toml"
+  local file="$out/levers/$1.toml" lever pair
   {
     echo "base = \"$set\""
     for lever in tilt landings tissue tempo device; do
-      case "+$1+" in *"+$lever+"*) ;; *) echo "${off[$lever]}" ;; esac
+      pair=${on_off[$lever]}
+      case "+$1+" in *"+$lever+"*|+all+) echo "${pair%%|*}" ;; *) echo "${pair#*|}" ;; esac
     done
   } > "$file"
   echo "$file"
@@ -39,7 +43,7 @@ variant_file() {  # VARIANT -> path of its TOML
 for v in $variants; do
   case $v in
     none) realism=none ;;
-    all) realism=$set ;;
+    preset) realism=$set ;;
     *) realism=$(variant_file "$v") ;;
   esac
   dir="$out/$v"

@@ -30,7 +30,7 @@ TEST(SignalStatistics, SinusoidsGiveTheirLevelFrequencyAndTilt) {
     const auto s = recording_signal_statistics(recording("walking", 0.9, 2.0, 16), 20);
     EXPECT_NEAR(s.at("sd_x"), 2.0 / std::sqrt(2), 0.02);
     EXPECT_NEAR(s.at("sd_y"), 1.0 / std::sqrt(2), 0.02);
-    EXPECT_NEAR(s.at("sd_z"), 0, 1e-6);
+    EXPECT_NEAR(s.at("sd_z"), 0, 1e-3);  // a constant, but for the resampling filter's edges
     EXPECT_NEAR(s.at("dom_x_hz"), 0.9, 0.02);
     EXPECT_NEAR(s.at("dom_y_hz"), 1.8, 0.02);
     EXPECT_NEAR(s.at("tilt_deg"), 16, 0.1);

@@ -144,11 +144,11 @@ TEST(StairGait, WithoutRiseThePelvisStaysAtTheWalksHeight) {
 }
 
 TEST(StairGait, StepsShortenToTheGoingAndTheCadenceSlows) {
-    // Source: 0.5 m steps, 2 steps a second. Stairs: 0.28 m steps at 0.8 of the pace.
+    // Source: 0.5 m steps, 2 steps a second. Stairs: 0.28 m steps at the default ascent pace (0.72).
     const StairMotion s = derive_stairs(procedural_walk(6.0), stairs(true));
     const StairFoothold &a = s.footholds[1], &b = s.footholds[5];
     const double step_time = (b.first_frame - a.first_frame) / kFps / 4;
-    EXPECT_NEAR(step_time, 0.5 / 0.8, 1.0 / kFps);
+    EXPECT_NEAR(step_time, 0.5 / default_stair_options(true).cadence_factor, 1.0 / kFps);
     const double travel = s.motion.at(b.first_frame, pelvis).z() - s.motion.at(a.first_frame, pelvis).z();
     EXPECT_NEAR(travel / 4, 0.28, 0.02);
 }

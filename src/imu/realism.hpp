@@ -15,13 +15,14 @@
 //                          same factor (1.0 leaves the motion as it is)
 //   device                 the sensor's own errors: a sensor_noise.hpp model ("none", a preset, overrides)
 //
-// Presets, with what each value rests on (README's ablation table measures them; a lever that did not help on
-// the shared subjects is off in the preset and says so there):
+// Presets (realism.cpp gives the figures each value rests on). The ablation on the shared SisFall subjects
+// (README, "Sensor realism") chose the levers: mounting tilt and the device model raised synthetic-only HAR,
+// landings, soft tissue and tempo lowered it, so those are off in every preset:
 //   none        everything off: the ideal sensor of the paper's pipeline
-//   sisfall     the SisFall belt board at the waist, calibrated on the shared SisFall subjects
-//   umafall     UMAFall's SensorTags on elastic straps, calibrated on the shared UMAFall subjects
-//   hugadb      HuGaDB's leg straps: literature values, not calibrated (the shared copy has no waist sensor)
-//   smartphone  RealWorld's phones in pockets and arm bands: literature values, not calibrated (no RealWorld data)
+//   sisfall     the SisFall belt board at the waist: tilt calibrated on the shared SisFall subjects, device sisfall
+//   umafall     UMAFall's SensorTags: tilt spread calibrated on the shared UMAFall subjects, device umafall
+//   hugadb      HuGaDB's leg straps: not calibrated (the shared copy has no waist sensor), device hugadb
+//   smartphone  RealWorld's phones: not calibrated (no RealWorld data), device smartphone
 // A TOML file (`--realism my.toml`) names the same keys, with `base = "PRESET"` to start from a preset; an
 // unknown key is refused.
 #pragma once
