@@ -403,7 +403,7 @@ TEST(ClipTextEncoder, ModelFolderPairsAnMdmWithClip) {
     EXPECT_LT(max_diff(model->encode_text(prompts), reference->encode(prompts)), 1e-6);
     SampleOptions o;
     o.frames = 8;
-    o.sampler = "ddim";
+    o.sampler = Sampler::ddim;
     o.steps = 2;
     const std::vector<FeatureMatrix> motions = sample_motions(*model, prompts, o);
     ASSERT_EQ(motions.size(), 2u);

@@ -39,7 +39,7 @@ Fixture make_fixture(const std::string& dir) {
     real.prompts = f.prompts;
     real.model = f.model;
     real.samples_per_prompt = 2;
-    real.sampling.sampler = "dpmpp";
+    real.sampling.sampler = Sampler::dpmpp;
     real.sampling.steps = 4;
     real.sampling.seed = 500;
     real.seconds = 4;
@@ -55,7 +55,7 @@ Fixture make_fixture(const std::string& dir) {
 ExperimentConfig tiny_config(const Fixture& f) {
     ExperimentConfig c;
     c.synth.samples_per_prompt = 2;
-    c.synth.sampling.sampler = "dpmpp";
+    c.synth.sampling.sampler = Sampler::dpmpp;
     c.synth.sampling.steps = 4;
     c.synth.seconds = 4;
     c.synth.bodies = "preset:male_average+preset:female_short";
@@ -146,7 +146,7 @@ TEST(Experiment, ShippedConfigReadsAndUnknownKeysAreRefused) {
     EXPECT_EQ(c.real_sets[0].ceiling_folds, 4);
     EXPECT_EQ(c.har.repeats, 10);
     EXPECT_DOUBLE_EQ(c.windows.rate_hz, 20);
-    EXPECT_EQ(c.synth.sampling.sampler, "dpmpp");
+    EXPECT_EQ(c.synth.sampling.sampler, Sampler::dpmpp);  // t2imu synth's default, from SynthOptions
     EXPECT_EQ(c.lacc.after, "mdm_lacc");
 
     const std::string dir = test::scratch_dir("experiment_config");

@@ -18,7 +18,7 @@ TEST(SamplerComparison, ParsesTheSamplerList) {
     const std::vector<SamplerConfig> c = parse_sampler_configs("ddpm,ddim:20,dpmpp:5");
     ASSERT_EQ(c.size(), 3u);
     EXPECT_EQ(c[0].name(), "ddpm");
-    EXPECT_EQ(c[1].sampler, "ddim");
+    EXPECT_EQ(c[1].sampler, Sampler::ddim);
     EXPECT_EQ(c[1].steps, 20);
     EXPECT_EQ(c[2].name(), "dpmpp:5");
     for (const char* bad : {"ddpm:5", "ddim", "euler:3", "ddim:1", "dpmpp:x", ""}) EXPECT_THROW(parse_sampler_configs(bad), Error) << bad;

@@ -71,3 +71,16 @@ TEST(Samplers, GaussianDataHasTheRightMoments) {
     const Moments noisy = moments(sample_ddim(s, denoiser, x, 100, 1.0, seeded_noise(6)));
     EXPECT_NEAR(noisy.sd / sd, 1.0, 0.05);  // measured 0.967: discretisation at K = 100
 }
+
+TEST(Samplers, NamesRoundTripAndOthersAreRefusedByOption) {
+    for (Sampler s : {Sampler::ddpm, Sampler::ddim, Sampler::dpmpp}) EXPECT_EQ(parse_sampler(sampler_name(s)), s);
+    EXPECT_EQ(sampler_names().size(), 3u);
+    try {
+        parse_sampler("euler", "synth.sampler");
+        FAIL() << "euler accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("synth.sampler"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(denoiser_calls(Sampler::ddpm, 20, 1000), 1000);  // every step of the schedule
+    EXPECT_EQ(denoiser_calls(Sampler::dpmpp, 20, 1000), 20);
+}

@@ -52,7 +52,7 @@ SynthOptions tiny_options(const std::string& out) {
     o.prompts = tiny().prompts;
     o.model = tiny().model;
     o.samples_per_prompt = 2;
-    o.sampling.sampler = "dpmpp";
+    o.sampling.sampler = Sampler::dpmpp;
     o.sampling.steps = 5;
     o.sampling.seed = 11;
     o.sampling.batch = 3;

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command.hpp"
+#include "cli/sampler_option.hpp"
 #include "cli/usage.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
@@ -45,7 +46,7 @@ void run(SampleArgs a) {
     const std::vector<FeatureMatrix> motions = sample_motions(*model, texts, a.options);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     nlohmann::json record = {{"model", std::filesystem::absolute(a.model).string()}, {"model_training", model->meta.value("training", nlohmann::json{})},
-                             {"sampler", a.options.sampler}, {"steps", a.options.sampler == "ddpm" ? model->schedule.steps : a.options.steps},
+                             {"sampler", sampler_name(a.options.sampler)}, {"steps", denoiser_calls(a.options.sampler, a.options.steps, model->schedule.steps)},
                              {"guidance", a.options.guidance}, {"eta", a.options.eta}, {"frames", a.options.frames}, {"fps", 20},
                              {"seed", a.options.seed}, {"device", global_options().device}, {"sampling_seconds", seconds},
                              {"samples", nlohmann::json::array()}};
@@ -63,7 +64,7 @@ void run(SampleArgs a) {
     }
     write_file_atomic(a.out + "/samples.json", samples_json);
     std::printf("%s: %zu motions of %d frames (%s, guidance %g) in %.2f s on %s (%.2f motions/s)\n", a.out.c_str(), motions.size(),
-                a.options.frames, a.options.sampler.c_str(), a.options.guidance, seconds, global_options().device.c_str(),
+                a.options.frames, sampler_name(a.options.sampler).c_str(), a.options.guidance, seconds, global_options().device.c_str(),
                 static_cast<double>(motions.size()) / std::max(seconds, 1e-9));
 }
 
@@ -98,7 +99,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--prompts", a.prompts, "prompts file: one per line, or activity<TAB>prompt");
     cmd->add_option("--seconds", a.seconds, "length in seconds (20 fps)");
     cmd->add_option("--frames", a.frames, "length in frames (at most 196; default 120)");
-    cmd->add_option("--sampler", a.options.sampler, "ddpm (default), ddim or dpmpp")->check(CLI::IsMember({"ddpm", "ddim", "dpmpp"}));
+    add_sampler_option(*cmd, a.options.sampler, "ddpm (default), ddim or dpmpp");
     cmd->add_option("--steps", a.options.steps, "denoiser evaluations for ddim/dpmpp (default 50)");
     cmd->add_option("--guidance", a.options.guidance, "classifier-free guidance scale (default 2.5)");
     cmd->add_option("--eta", a.options.eta, "ddim noise (0 = deterministic)");

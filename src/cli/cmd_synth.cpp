@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include "cli/command.hpp"
+#include "cli/sampler_option.hpp"
 #include "cli/usage.hpp"
 #include "core/error.hpp"
 #include "core/output_path.hpp"
@@ -72,13 +73,11 @@ static CommandRegistrar registrar([](CLI::App& root) {
     auto* cmd = root.add_subcommand("synth", "the main job: prompts -> motions -> bodies -> virtual sensors -> an IMU dataset");
     static SynthArgs a;
     SynthOptions& o = a.options;
-    o.sampling.sampler = "dpmpp";
-    o.sampling.steps = 20;
     cmd->add_option("--prompts", o.prompts, "prompt set: activity<TAB>prompt per line (prompts/*.tsv)")->required()->check(CLI::ExistingFile);
     cmd->add_option("--samples-per-prompt", o.samples_per_prompt, "motions per prompt (default 1)");
     cmd->add_option("--model", o.model, "model folder (default models/default) or retrieval:DATASET");
     cmd->add_option("--vocab", o.vocab, "GloVe vocabulary for retrieval (default $T2IMU_VOCAB or cache/text/glove-100k.safetensors)");
-    cmd->add_option("--sampler", o.sampling.sampler, "dpmpp (default), ddim or ddpm")->check(CLI::IsMember({"ddpm", "ddim", "dpmpp"}));
+    add_sampler_option(*cmd, o.sampling.sampler, "dpmpp (default), ddim or ddpm");
     cmd->add_option("--steps", o.sampling.steps, "denoiser evaluations for ddim/dpmpp (default 20)");
     cmd->add_option("--guidance", o.sampling.guidance, "classifier-free guidance scale (default 2.5)");
     cmd->add_option("--seconds", o.seconds, "motion length, s (default 6; at most 9.8)");

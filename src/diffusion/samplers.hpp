@@ -14,6 +14,7 @@
 // the sample (its x0 estimate), so K is the number of denoiser evaluations.
 #pragma once
 #include <functional>
+#include <string>
 #include <torch/torch.h>
 #include <vector>
 
@@ -33,5 +34,13 @@ torch::Tensor sample_ddim(const NoiseSchedule& schedule, const X0Predictor& deno
 torch::Tensor sample_dpmpp_2m(const NoiseSchedule& schedule, const X0Predictor& denoiser, torch::Tensor x_T, int steps);
 
 std::vector<int> sampling_timesteps(int schedule_steps, int steps);  // descending, first T-1, last 0
+
+// The samplers by the names options, configs and records use: "ddpm", "ddim", "dpmpp" (parsed here only).
+enum class Sampler { ddpm, ddim, dpmpp };
+const std::vector<std::string>& sampler_names();      // in the enum's order
+const std::string& sampler_name(Sampler sampler);
+Sampler parse_sampler(const std::string& name, const std::string& option = "--sampler");  // Error naming `option`
+// Denoiser evaluations per motion: DDPM takes every step of the model's schedule, the others `steps`.
+int denoiser_calls(Sampler sampler, int steps, int schedule_steps);
 
 }  // namespace t2imu

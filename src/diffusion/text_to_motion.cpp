@@ -139,9 +139,8 @@ std::unique_ptr<MotionModel> load_motion_model(const std::string& dir, const std
 
 void SampleOptions::validate() const {
     if (frames < 4 || frames > 196) throw Error("sampling", "--frames", "4 to 196 (20 fps)", std::to_string(frames));
-    if (sampler != "ddpm" && sampler != "ddim" && sampler != "dpmpp") throw Error("sampling", "--sampler", "ddpm, ddim or dpmpp", sampler);
     // ddpm takes every step of the model's schedule and ignores `steps`.
-    if (sampler != "ddpm" && (steps < 1 || steps > 10000))
+    if (sampler != Sampler::ddpm && (steps < 1 || steps > 10000))
         throw Error("sampling", "--steps", "1 to 10000 denoiser evaluations", std::to_string(steps));
     // A non-finite scale turns every feature into NaN, found only much later (inverse kinematics, the IMU stage).
     if (!std::isfinite(guidance)) throw Error("sampling", "--guidance", "a finite scale", std::to_string(guidance));
@@ -173,9 +172,11 @@ std::vector<FeatureMatrix> sample_motions(MotionModel& model, const std::vector<
             return model.mdm->forward_guided(x, t, text, o.guidance, lengths);
         };
         torch::Tensor x0;
-        if (o.sampler == "ddpm") x0 = sample_ddpm(diffusion, denoiser, x_T, noise);
-        else if (o.sampler == "ddim") x0 = sample_ddim(model.schedule, denoiser, x_T, o.steps, o.eta, noise);
-        else x0 = sample_dpmpp_2m(model.schedule, denoiser, x_T, o.steps);
+        switch (o.sampler) {
+            case Sampler::ddpm: x0 = sample_ddpm(diffusion, denoiser, x_T, noise); break;
+            case Sampler::ddim: x0 = sample_ddim(model.schedule, denoiser, x_T, o.steps, o.eta, noise); break;
+            case Sampler::dpmpp: x0 = sample_dpmpp_2m(model.schedule, denoiser, x_T, o.steps); break;
+        }
         const torch::Tensor frames = x0.squeeze(2).permute({0, 2, 1}).to(torch::kCPU, torch::kFloat64).contiguous();  // [n, F, 263], normalised
         for (size_t i = 0; i < n; ++i) {
             FeatureMatrix f(o.frames, 263);

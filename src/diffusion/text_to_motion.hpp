@@ -16,6 +16,7 @@
 #include "diffusion/glove_text_encoder.hpp"
 #include "diffusion/mdm.hpp"
 #include "diffusion/noise_schedule.hpp"
+#include "diffusion/samplers.hpp"
 #include "motion/joint_sequence.hpp"
 #include "motion/normalization.hpp"
 
@@ -48,8 +49,8 @@ std::unique_ptr<MotionModel> load_motion_model(const std::string& dir, const std
 
 struct SampleOptions {
     int frames = 120;              // 20 fps; at most 196 (HumanML3D's longest)
-    std::string sampler = "ddpm";  // ddpm | ddim | dpmpp
-    int steps = 50;                // denoiser evaluations for ddim and dpmpp (ddpm uses every step)
+    Sampler sampler = Sampler::ddpm;  // MDM's own: every step of the schedule (t2imu sample's default)
+    int steps = 50;                   // denoiser evaluations for ddim and dpmpp (ddpm uses every step)
     double guidance = 2.5;
     double eta = 0.0;              // ddim only
     uint64_t seed = 0;

@@ -24,7 +24,9 @@ void read_synth(TomlSection s, SynthOptions& o) {
     s.read("noise", o.noise);
     s.read("realism", o.realism);
     s.read("vocab", o.vocab);
-    s.read("sampler", o.sampling.sampler);
+    std::string sampler = sampler_name(o.sampling.sampler);
+    s.read("sampler", sampler);
+    o.sampling.sampler = parse_sampler(sampler, "synth.sampler");
     s.read("steps", o.sampling.steps);
     s.read("guidance", o.sampling.guidance);
     s.read("batch", o.sampling.batch);
@@ -84,8 +86,6 @@ ExperimentConfig read_experiment_config(const std::string& path) {
     const toml::table doc = parse_toml_file(path);
     TomlSection top(doc, path, "");
     ExperimentConfig c;
-    c.synth.sampling.sampler = "dpmpp";  // t2imu synth's defaults
-    c.synth.sampling.steps = 20;
     read_synth(top.table("synth"), c.synth);
     for (TomlSection s : top.array_of_tables("source")) {
         ExperimentSource src;

@@ -37,7 +37,7 @@ public:
 
     nlohmann::json describe() const override {
         return {{"kind", "diffusion"}, {"model", dir_}, {"training_step", model_->meta.value("training", nlohmann::json::object()).value("step", 0)},
-                {"sampler", sampling_.sampler}, {"steps", sampling_.sampler == "ddpm" ? model_->schedule.steps : sampling_.steps},
+                {"sampler", sampler_name(sampling_.sampler)}, {"steps", denoiser_calls(sampling_.sampler, sampling_.steps, model_->schedule.steps)},
                 {"guidance", sampling_.guidance}, {"eta", sampling_.eta}};
     }
 

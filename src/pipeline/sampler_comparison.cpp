@@ -16,7 +16,9 @@
 
 namespace t2imu {
 
-std::string SamplerConfig::name() const { return sampler == "ddpm" ? sampler : sampler + ":" + std::to_string(steps); }
+std::string SamplerConfig::name() const {
+    return sampler == Sampler::ddpm ? sampler_name(sampler) : sampler_name(sampler) + ":" + std::to_string(steps);
+}
 
 std::vector<SamplerConfig> parse_sampler_configs(const std::string& text) {
     std::vector<SamplerConfig> out;
@@ -25,14 +27,14 @@ std::vector<SamplerConfig> parse_sampler_configs(const std::string& text) {
     while (std::getline(list, item, ',')) {
         SamplerConfig c;
         const size_t colon = item.find(':');
-        c.sampler = item.substr(0, colon);
+        c.sampler = parse_sampler(item.substr(0, colon), "--samplers");
         if (colon != std::string::npos) {
             char* end = nullptr;
             c.steps = static_cast<int>(std::strtol(item.c_str() + colon + 1, &end, 10));
             if (*end != '\0' || c.steps < 2) throw Error("--samplers", "entry", "NAME:STEPS with STEPS >= 2", item);
         }
-        const bool few_step = c.sampler == "ddim" || c.sampler == "dpmpp";
-        if (!(c.sampler == "ddpm" && colon == std::string::npos) && !(few_step && c.steps >= 2))
+        const bool ddpm = c.sampler == Sampler::ddpm;
+        if (!(ddpm && colon == std::string::npos) && !(!ddpm && c.steps >= 2))
             throw Error("--samplers", "entry", "ddpm, ddim:K or dpmpp:K", item);
         out.push_back(c);
     }
@@ -163,7 +165,7 @@ CsvTable compare_samplers(const SamplerComparisonOptions& o, const std::vector<S
                           number(m.activity_checked > 0 ? static_cast<double>(m.activity_passed) / m.activity_checked : NAN)});
     };
     for (const SamplerConfig& c : configs)
-        add_row(c.name(), std::to_string(c.sampler == "ddpm" ? model->schedule.steps : c.steps),
+        add_row(c.name(), std::to_string(denoiser_calls(c.sampler, c.steps, model->schedule.steps)),
                 draw(*model, o, c, classifier ? &*classifier : nullptr));
     if (!o.captured_dataset.empty()) add_row("captured:" + o.captured_split, "", captured(o.captured_dataset, o.captured_split, model->stats));
     return t;

@@ -22,13 +22,14 @@
 #include <vector>
 
 #include "core/csv.hpp"
+#include "diffusion/samplers.hpp"
 #include "text/prompt_set.hpp"
 
 namespace t2imu {
 
 struct SamplerConfig {
-    std::string sampler;  // ddpm | ddim | dpmpp
-    int steps = 0;        // ignored for ddpm (every step of the model's schedule)
+    Sampler sampler = Sampler::ddpm;
+    int steps = 0;  // ignored for ddpm (every step of the model's schedule)
     std::string name() const;
 };
 

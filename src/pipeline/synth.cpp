@@ -257,6 +257,13 @@ void check_or_write_settings(const std::string& out, const json& settings) {
 
 }  // namespace
 
+SampleOptions synth_sampling_defaults() {
+    SampleOptions o;
+    o.sampler = Sampler::dpmpp;
+    o.steps = 20;
+    return o;
+}
+
 void SynthOptions::validate() const {
     if (samples_per_prompt < 1) throw Error("synth", "--samples-per-prompt", "at least 1", std::to_string(samples_per_prompt));
     if (!(seconds >= 0.2 && seconds <= kMaxMotionFrames / 20.0)) throw Error("synth", "--seconds", "0.2 to 9.8", std::to_string(seconds));

@@ -35,12 +35,15 @@ namespace t2imu {
 
 constexpr uint64_t kSeedStridePerAttempt = 1000003;
 
+// The sampling of t2imu synth and of the experiments: DPM-Solver++ 2M, 20 denoiser calls (README, "Samplers").
+SampleOptions synth_sampling_defaults();
+
 struct SynthOptions {
     std::string prompts;                 // prompt set file (text/prompt_set.hpp)
     int samples_per_prompt = 1;
     std::string model = "models/default";  // a model folder or retrieval:DATASET
     std::string vocab;                   // GloVe vocabulary for retrieval ("" = default)
-    SampleOptions sampling;              // sampler, steps, guidance, seed (of job 0), batch
+    SampleOptions sampling = synth_sampling_defaults();  // sampler, steps, guidance, seed (of job 0), batch
     double seconds = 6;                  // motion length (20 fps; at most 9.8 s)
     std::string bodies = "paper8", sensors = "realworld", noise = "none";
     std::string realism = "none";        // imu/realism.hpp: a preset or a .toml file
