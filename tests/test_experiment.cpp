@@ -148,6 +148,9 @@ TEST(Experiment, ShippedConfigReadsAndUnknownKeysAreRefused) {
     EXPECT_DOUBLE_EQ(c.windows.rate_hz, 20);
     EXPECT_EQ(c.synth.sampling.sampler, Sampler::dpmpp);  // t2imu synth's default, from SynthOptions
     EXPECT_EQ(c.lacc.after, "mdm_lacc");
+    EXPECT_EQ(c.synth.realism, "none");  // the paper's pipeline: the ideal sensor
+    const ExperimentConfig coverage = read_experiment_config(std::string(T2IMU_SOURCE_DIR) + "/experiments/coverage.toml");
+    EXPECT_EQ(coverage.real_sets[0].realism, "sisfall");
 
     const std::string dir = test::scratch_dir("experiment_config");
     const std::string base = read_file_text(std::string(T2IMU_SOURCE_DIR) + "/experiments/paper.toml");
@@ -170,4 +173,7 @@ TEST(Experiment, ShippedConfigReadsAndUnknownKeysAreRefused) {
     std::string unknown = base;
     unknown.replace(unknown.find("after = \"mdm_lacc\""), 18, "after = \"nothing\"");
     EXPECT_TRUE(refused(unknown, "lacc"));
+    std::string realism = base;
+    realism.replace(realism.find("sensors = \"sisfall\""), 19, "sensors = \"sisfall\"\nrealism = \"sisfal\"");
+    EXPECT_TRUE(refused(realism, "real.realism"));
 }

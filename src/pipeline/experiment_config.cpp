@@ -87,6 +87,11 @@ ExperimentConfig read_experiment_config(const std::string& path) {
     TomlSection top(doc, path, "");
     ExperimentConfig c;
     read_synth(top.table("synth"), c.synth);
+    try {
+        parse_realism(c.synth.realism);
+    } catch (const Error& e) {
+        throw Error(path, "synth.realism", "a realism preset or TOML file", e.what());
+    }
     for (TomlSection s : top.array_of_tables("source")) {
         ExperimentSource src;
         s.require("name", src.name);
@@ -101,7 +106,11 @@ ExperimentConfig read_experiment_config(const std::string& path) {
         s.require("prompts", r.prompts);
         s.require("sensors", r.sensors);
         s.read("realism", r.realism);
-        if (!r.realism.empty()) parse_realism(r.realism);  // refused now, naming --realism or the file
+        try {
+            if (!r.realism.empty()) parse_realism(r.realism);  // refused now, not after the syntheses before it
+        } catch (const Error& e) {
+            throw Error(path, "real.realism", "a realism preset or TOML file", e.what());
+        }
         s.read("positions", r.positions);
         s.read("ceiling_folds", r.ceiling_folds);
         s.refuse_unknown_keys();
