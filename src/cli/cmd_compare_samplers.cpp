@@ -7,7 +7,6 @@
 #include "cli/usage.hpp"
 #include "core/output_path.hpp"
 #include "core/csv.hpp"
-#include "diffusion/torch_threads.hpp"
 #include "pipeline/sampler_comparison.hpp"
 
 namespace t2imu::cli {
@@ -26,7 +25,6 @@ void run(CompareArgs a) {
     o.prompts = read_prompt_set(a.prompts);
     o.frames = static_cast<int>(std::lround(a.seconds * 20));
     o.device = global_options().device;
-    set_torch_threads(worker_threads());
     const CsvTable t = compare_samplers(o, parse_sampler_configs(a.samplers));
     write_csv(a.out, t);
     std::printf("%-12s %6s %9s %12s %12s %10s %9s %9s\n", "sampler", "calls", "motion/s", "acc energy", "joint acc", "descr. d",

@@ -4,7 +4,6 @@
 #include "cli/command.hpp"
 #include "cli/usage.hpp"
 #include "core/output_path.hpp"
-#include "diffusion/torch_threads.hpp"
 #include "pipeline/experiment.hpp"
 
 namespace t2imu::cli {
@@ -24,7 +23,6 @@ static CommandRegistrar registrar([](CLI::App& root) {
         if (repeats > 0) c.har.repeats = repeats;
         c.synth.device = global_options().device;
         c.synth.threads = worker_threads();
-        set_torch_threads(worker_threads());
         const nlohmann::json summary = run_experiment(c, out, [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
         std::printf("%s", experiment_summary_markdown(summary).c_str());
     });

@@ -8,7 +8,6 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/output_path.hpp"
-#include "diffusion/torch_threads.hpp"
 #include "har/nn/har_training.hpp"
 
 namespace t2imu::cli {
@@ -51,7 +50,6 @@ void run(HarArgs a) {
         a.options.validate();
         check_output_path(a.out, "--out");
     });
-    set_torch_threads(worker_threads());
     WindowSet train = make_windows(read_imu_dataset(a.train), w);
     if (!a.classes.empty()) {
         std::map<std::string, std::string> keep;

@@ -13,7 +13,6 @@
 #include "core/output_path.hpp"
 #include "diffusion/lacc_evaluation.hpp"
 #include "diffusion/text_to_motion.hpp"
-#include "diffusion/torch_threads.hpp"
 #include "motion/humanml3d.hpp"
 #include "text/prompt_set.hpp"
 
@@ -37,7 +36,6 @@ void run(SampleArgs a) {
         a.options.validate();
         check_output_path(a.out, "--out");
     });
-    set_torch_threads(worker_threads());
     const std::vector<Prompt> prompts = a.prompt.empty() ? read_prompt_set(a.prompts) : std::vector<Prompt>{{"", a.prompt}};
     std::unique_ptr<MotionModel> model = load_motion_model(a.model, global_options().device);
     std::vector<std::string> texts;
@@ -80,7 +78,6 @@ static void add_eval_lacc(CLI::App& root) {
     cmd->add_option("--seed", seed, "seed of the draws (use the same for the models you compare)");
     cmd->add_option("--out", out, "output CSV")->required();
     cmd->callback([] {
-        set_torch_threads(worker_threads());
         std::unique_ptr<MotionModel> m = load_motion_model(model, global_options().device);
         const CsvTable table = evaluate_lacc(*m, dataset, split, seed);
         write_csv(out, table);

@@ -8,7 +8,6 @@
 #include "cli/usage.hpp"
 #include "core/error.hpp"
 #include "core/output_path.hpp"
-#include "diffusion/torch_threads.hpp"
 #include "pipeline/synth.hpp"
 
 namespace t2imu::cli {
@@ -48,7 +47,6 @@ void run(SynthArgs a) {
     }
     o.device = global_options().device;
     o.threads = worker_threads();
-    set_torch_threads(worker_threads());
     const bool show = global_options().verbose || ::isatty(2);
     const nlohmann::json r = run_synth(o, [&](const SynthProgress& p) {
         if (!show) return;
