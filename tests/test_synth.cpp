@@ -183,6 +183,30 @@ TEST(Synth, RefusesAFolderMadeWithOtherSettings) {
     o.shard = 0;
     o.shards = 3;  // a shard of the same synthesis is welcome
     EXPECT_NO_THROW(run_synth(o));
+    o.shards = 1;
+    o.realism = "sisfall";  // so is another sensor realism model: refused like any other setting
+    EXPECT_THROW(run_synth(o), Error);
+}
+
+TEST(Synth, RecordsTheRealismModelAndEachRecordingsDraws) {
+    const std::string out = test::scratch_dir("synth_realism");
+    SynthOptions o = tiny_options(out);
+    o.samples_per_prompt = 1;
+    o.filter = false;  // every motion kept, so every job has recordings
+    o.realism = "sisfall";
+    const nlohmann::json report = run_synth(o);
+    EXPECT_EQ(report["realism"]["name"], "sisfall");
+    EXPECT_EQ(report["realism"]["tilt_deg"], 7.5);
+    size_t recordings = 0;
+    for (const auto& e : fs::directory_iterator(out + "/jobs")) {
+        const nlohmann::json marker = nlohmann::json::parse(read_file_text(e.path().string()));
+        for (const nlohmann::json& r : marker["recordings"]) {
+            EXPECT_EQ(r["tempo"], 1.0);  // the preset plays motions at their own tempo
+            EXPECT_TRUE(r["tilt_deg"].is_number());
+            ++recordings;
+        }
+    }
+    EXPECT_GT(recordings, 0u);
 }
 
 TEST(Synth, RetrievalGivesCapturedMotionThatPassesTheFilter) {

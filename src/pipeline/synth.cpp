@@ -183,7 +183,8 @@ void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt&
                 const std::string path = "recordings/" + name + "/" + r.body.name + "/" + r.mounts[s].placement.position + ".csv";
                 write_imu_csv(o.out + "/" + path, r.signals[s]);
                 marker["recordings"].push_back({{"path", path}, {"body", r.body.name}, {"position", r.mounts[s].placement.position},
-                                                {"n_samples", r.signals[s].t.size()}, {"bytes", fs::file_size(o.out + "/" + path)}});
+                                                {"n_samples", r.signals[s].t.size()}, {"bytes", fs::file_size(o.out + "/" + path)},
+                                                {"tempo", r.tempo}, {"tilt_deg", r.tilt_deg[s]}});
             }
         }
     }
@@ -405,6 +406,7 @@ json run_synth(const SynthOptions& o, const std::function<void(const SynthProgre
                          {"bodies_imu_write_s", imu_s}, {"manifest_s", since(t0)}, {"total_s", since(start)}, {"device", o.device},
                          {"threads", o.threads}};
     json report = report_json(markers, total, timing);
+    report["realism"] = stage.imu.realism.to_json();  // the model in effect; each recording's draws are in its job's marker
     write_file_atomic(o.out + "/synth_report.json", report.dump(1) + "\n");
     return report;
 }
