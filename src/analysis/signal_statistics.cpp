@@ -59,16 +59,25 @@ double standard_deviation(const std::vector<double>& x) {
     return std::sqrt(s / static_cast<double>(x.size()));
 }
 
+namespace {
+
+// The frequency of the highest bin at or above min_hz of a periodogram of `length` points at rate_hz.
+double peak_frequency(const std::vector<double>& p, size_t length, double rate_hz, double min_hz) {
+    size_t best = 0;
+    for (size_t k = 1; k < p.size(); ++k) {
+        const double f = static_cast<double>(k) * rate_hz / static_cast<double>(length);
+        if (f >= min_hz && (best == 0 || p[k] > p[best])) best = k;
+    }
+    return static_cast<double>(best) * rate_hz / static_cast<double>(length);
+}
+
+}  // namespace
+
 double dominant_frequency_hz(const std::vector<double>& x, double rate_hz, double min_hz) {
     if (x.size() < 2) return 0;
     size_t n = 0;
     const std::vector<double> p = periodogram(x, &n);
-    size_t best = 0;
-    for (size_t k = 1; k < p.size(); ++k) {
-        const double f = static_cast<double>(k) * rate_hz / static_cast<double>(n);
-        if (f >= min_hz && (best == 0 || p[k] > p[best])) best = k;
-    }
-    return static_cast<double>(best) * rate_hz / static_cast<double>(n);
+    return peak_frequency(p, n, rate_hz, min_hz);
 }
 
 const std::vector<std::string>& signal_statistic_names() {
@@ -90,11 +99,18 @@ std::map<std::string, double> recording_signal_statistics(const ImuRecording& re
     std::map<std::string, double> s;
     const char* xyz = "xyz";
     Eigen::Vector3d mean;
+    double high = 0, total = 0;  // power above kHighFrequencyHz and in all, every axis, DC excluded
     for (int a = 0; a < 3; ++a) {
         mean[a] = mean_of(axis[a]);
         s[std::string("mean_") + xyz[a]] = mean[a];
         s[std::string("sd_") + xyz[a]] = standard_deviation(axis[a]);
-        s[std::string("dom_") + xyz[a] + "_hz"] = dominant_frequency_hz(axis[a], rate_hz, kMinDominantHz);
+        size_t length = 0;
+        const std::vector<double> p = periodogram(axis[a], &length);
+        s[std::string("dom_") + xyz[a] + "_hz"] = peak_frequency(p, length, rate_hz, kMinDominantHz);
+        for (size_t k = 1; k < p.size(); ++k) {
+            total += p[k];
+            if (static_cast<double>(k) * rate_hz / static_cast<double>(length) > kHighFrequencyHz) high += p[k];
+        }
     }
     const double largest = mean.cwiseAbs().maxCoeff();
     s["tilt_deg"] = mean.norm() > 0 ? std::acos(std::min(1.0, largest / mean.norm())) * 180 / M_PI : 0;
@@ -107,22 +123,13 @@ std::map<std::string, double> recording_signal_statistics(const ImuRecording& re
     double jerk = 0;
     for (size_t i = 1; i < n; ++i) jerk += std::pow((magnitude[i] - magnitude[i - 1]) * rate_hz, 2);
     s["jerk_rms"] = std::sqrt(jerk / static_cast<double>(n - 1));
-    double high = 0, total = 0;
-    for (int a = 0; a < 3; ++a) {
-        size_t length = 0;
-        const std::vector<double> p = periodogram(axis[a], &length);
-        for (size_t k = 1; k < p.size(); ++k) {
-            total += p[k];
-            if (static_cast<double>(k) * rate_hz / static_cast<double>(length) > kHighFrequencyHz) high += p[k];
-        }
-    }
     s["hf_share"] = total > 0 ? high / total : 0;
     return s;
 }
 
 namespace {
 
-// Recordings at `position`, grouped by evaluation class (renamed through `coarsen` when given).
+// Recordings at `position`, grouped by evaluation class (coarsened against `other_side` when given).
 std::map<std::string, std::vector<std::map<std::string, double>>> statistics_by_activity(
     const std::vector<ImuRecording>& recordings, const std::string& position, double rate_hz,
     const std::set<std::string>* this_side, const std::set<std::string>* other_side) {

@@ -228,14 +228,14 @@ void parallel_for(int n, int threads, const std::function<void(int)>& fn) {
     if (error) std::rethrow_exception(error);
 }
 
-json settings_json(const SynthOptions& o, const std::vector<Prompt>& prompts, const json& source) {
+json settings_json(const SynthOptions& o, const std::vector<Prompt>& prompts, const json& source, const RealismModel& realism) {
     json p = json::array();
     for (const Prompt& x : prompts) p.push_back({x.activity, x.text});
     json s = {{"prompts_file", o.prompts}, {"prompts", p}, {"samples_per_prompt", o.samples_per_prompt}, {"source", source},
             {"seed", o.sampling.seed}, {"seconds", o.seconds}, {"bodies", o.bodies}, {"sensors", o.sensors}, {"noise", o.noise},
             {"rate_hz", o.rate_hz}, {"placed_on_floor", true}, {"filter", o.filter}, {"max_retries", o.max_retries},
             {"thresholds", quality_limits(o.thresholds)}};
-    if (o.realism != "none") s["realism"] = parse_realism(o.realism).to_json();  // absent: folders from before it stay valid
+    if (o.realism != "none") s["realism"] = realism.to_json();  // absent: folders from before it stay valid
     // placed_on_floor is always true: it makes a resume refuse folders drawn before floor placement existed.
     // activity_check is absent without a check, so folders made before the check existed stay valid.
     if (!o.activity_reference.empty())
@@ -368,7 +368,7 @@ json run_synth(const SynthOptions& o, const std::function<void(const SynthProgre
     const double load_s = since(t0);
     const json described = source->describe();
     make_directories(o.out + "/jobs", "jobs folder");
-    check_or_write_settings(o.out, settings_json(o, prompts, described));
+    check_or_write_settings(o.out, settings_json(o, prompts, described, stage.imu.realism));
 
     const int total = static_cast<int>(prompts.size()) * o.samples_per_prompt;
     const int first = static_cast<int>(static_cast<long long>(total) * o.shard / o.shards);
