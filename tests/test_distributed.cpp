@@ -19,8 +19,8 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/safetensors.hpp"
-#include "diffusion/distributed.hpp"
 #include "diffusion/trainer.hpp"
+#include "nn/distributed.hpp"
 #include "test_util.hpp"
 #include "tiny_model.hpp"
 

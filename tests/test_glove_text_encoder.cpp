@@ -1,7 +1,7 @@
 // The default (GloVe + transformer) text encoder: shapes, masking, unknown words, what trains and what not.
 #include <gtest/gtest.h>
 
-#include "diffusion/glove_text_encoder.hpp"
+#include "text/nn/glove_text_encoder.hpp"
 
 using namespace t2imu;
 

@@ -6,7 +6,7 @@
 #include "cli/command.hpp"
 #include "cli/usage.hpp"
 #include "core/error.hpp"
-#include "diffusion/torch_threads.hpp"
+#include "nn/threads.hpp"
 
 namespace t2imu::cli {
 

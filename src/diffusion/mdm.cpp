@@ -6,7 +6,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
-#include "core/safetensors.hpp"
+#include "nn/state_dict.hpp"
 
 namespace t2imu {
 
@@ -105,22 +105,10 @@ torch::Tensor MdmImpl::forward_guided(const torch::Tensor& x, const torch::Tenso
 }
 
 void load_mdm_weights(Mdm& model, const std::string& path, const std::string& other_prefix) {
-    const SafeTensors st = read_safetensors(path);
-    std::set<std::string> used;
-    torch::NoGradGuard no_grad;
-    for (auto& p : model->named_parameters()) {
-        const auto it = st.tensors.find(p.key());
-        if (it == st.tensors.end()) throw Error(path, p.key(), "a tensor of shape " + c10::str(p.value().sizes()), "missing");
-        const NdArray& a = it->second;
-        if (std::vector<int64_t>(p.value().sizes().begin(), p.value().sizes().end()) != a.shape)
-            throw Error(path, p.key(), "shape " + c10::str(p.value().sizes()), a.shape_str());
-        std::vector<float> v = a.to<float>();
-        p.value().copy_(torch::from_blob(v.data(), a.shape, torch::kFloat));
-        used.insert(p.key());
-    }
-    for (const auto& [name, a] : st.tensors)
-        if (!used.count(name) && (other_prefix.empty() || name.rfind(other_prefix, 0) != 0))
-            throw Error(path, name, "a key of the MDM state dict", "an unexpected tensor " + a.shape_str());
+    StateDictLayout layout;
+    if (!other_prefix.empty()) layout.foreign = [other_prefix](const std::string& key) { return key.rfind(other_prefix, 0) == 0; };
+    layout.owner = "a key of the MDM state dict";
+    load_state_dict(*model, path, layout);
 }
 
 }  // namespace t2imu

@@ -6,27 +6,12 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
-#include "core/safetensors.hpp"
 #include "diffusion/samplers.hpp"
+#include "nn/state_dict.hpp"
 
 namespace t2imu {
 
 namespace {
-
-void load_strict(torch::nn::Module& m, const std::string& path) {
-    const SafeTensors st = read_safetensors(path);
-    torch::NoGradGuard no_grad;
-    size_t used = 0;
-    for (auto& p : m.named_parameters()) {
-        const auto it = st.tensors.find(p.key());
-        if (it == st.tensors.end() || it->second.shape != std::vector<int64_t>(p.value().sizes().begin(), p.value().sizes().end()))
-            throw Error(path, p.key(), "a tensor of shape " + c10::str(p.value().sizes()), it == st.tensors.end() ? "missing" : it->second.shape_str());
-        std::vector<float> v = it->second.to<float>();
-        p.value().copy_(torch::from_blob(v.data(), it->second.shape, torch::kFloat));
-        ++used;
-    }
-    if (used != st.tensors.size()) throw Error(path, "tensors", std::to_string(used) + " parameters", std::to_string(st.tensors.size()));
-}
 
 std::string find_vocab(const std::string& dir, const std::string& written) {
     namespace fs = std::filesystem;
@@ -38,7 +23,7 @@ std::string find_vocab(const std::string& dir, const std::string& written) {
                 written);
 }
 
-std::string find_clip_file(const std::string& dir, const nlohmann::json& t, const char* field, const char* what) {
+std::string find_encoder_file(const std::string& dir, const nlohmann::json& t, const char* field, const char* what) {
     namespace fs = std::filesystem;
     const std::string written = t.at(field).get<std::string>();
     if (fs::exists(written)) return written;
@@ -86,14 +71,14 @@ void load_glove_encoder(MotionModel& model, const std::string& dir, const nlohma
     tc.out_dim = model_integer(t, file, "text_encoder", "out_dim", 1, kMaxWidth);
     model.vocab = std::make_unique<WordVectors>(WordVectors::load(find_vocab(dir, t.at("vocab").get<std::string>())));
     model.text = GloveTextEncoder(*model.vocab, tc);
-    load_strict(*model.text, dir + "/text_encoder.safetensors");
+    load_state_dict(*model.text, dir + "/text_encoder.safetensors");
 }
 
 // Returns the prefix of CLIP's keys inside weights.safetensors ("clip_model.", MDM's name) when the CLIP weights
 // are that same file, so that the MDM loader skips them; "" otherwise.
 std::string load_clip_encoder(MotionModel& model, const std::string& dir, const nlohmann::json& t, int64_t text_dim) {
-    const std::string weights = find_clip_file(dir, t, "weights", "CLIP's text-tower weights as safetensors (README: CLIP text encoder)");
-    const std::string merges = find_clip_file(dir, t, "merges", "CLIP's bpe_simple_vocab_16e6.txt.gz");
+    const std::string weights = find_encoder_file(dir, t, "weights", "CLIP's text-tower weights as safetensors (README: CLIP text encoder)");
+    const std::string merges = find_encoder_file(dir, t, "merges", "CLIP's bpe_simple_vocab_16e6.txt.gz");
     ClipTextConfig cc = read_clip_text_config(weights);
     cc.mdm_text_tokens = t.value("text_tokens", cc.mdm_text_tokens);
     if (cc.embed_dim != text_dim) throw Error(weights, "text_projection", std::to_string(text_dim) + " outputs (mdm.text_dim)", std::to_string(cc.embed_dim));
@@ -104,10 +89,30 @@ std::string load_clip_encoder(MotionModel& model, const std::string& dir, const 
     return std::filesystem::exists(mdm_weights) && std::filesystem::equivalent(weights, mdm_weights) ? "clip_model." : "";
 }
 
+void load_minilm_encoder(MotionModel& model, const std::string& dir, const nlohmann::json& t, int64_t text_dim) {
+    const std::string file = dir + "/model.json";
+    const std::string weights = find_encoder_file(dir, t, "weights", "the sentence encoder's BertModel weights as safetensors");
+    const std::string vocab = find_encoder_file(dir, t, "vocab", "its WordPiece vocab.txt");
+    const BertConfig bc = read_bert_config(weights, model_integer(t, file, "text_encoder", "heads", 1, kMaxWidth));
+    if (bc.hidden != text_dim) throw Error(weights, "embeddings.word_embeddings.weight", std::to_string(text_dim) + " columns (mdm.text_dim)", std::to_string(bc.hidden));
+    const int64_t max_tokens = t.contains("max_tokens") ? model_integer(t, file, "text_encoder", "max_tokens", 2, bc.max_positions) : std::min<int64_t>(256, bc.max_positions);
+    model.minilm = BertEncoder(bc);
+    load_bert_weights(model.minilm, weights);
+    model.minilm->set_tokenizer(std::make_shared<const WordPieceTokenizer>(WordPieceTokenizer::from_vocab_file(vocab)), static_cast<size_t>(max_tokens));
+}
+
 }  // namespace
 
 torch::Tensor MotionModel::encode_text(const std::vector<std::string>& captions) {
-    return clip ? clip->encode(captions) : text->encode(captions);
+    if (clip) return clip->encode(captions);
+    if (minilm) return minilm->encode(captions);
+    return text->encode(captions);
+}
+
+torch::nn::Module& MotionModel::text_module() {
+    if (clip) return *clip;
+    if (minilm) return *minilm;
+    return *text;
 }
 
 std::unique_ptr<MotionModel> load_motion_model(const std::string& dir, const std::string& device) {
@@ -121,7 +126,8 @@ std::unique_ptr<MotionModel> load_motion_model(const std::string& dir, const std
         const std::string kind = t.at("kind").get<std::string>();
         if (kind == "glove_transformer") load_glove_encoder(*model, dir, t);
         else if (kind == "clip") clip_prefix = load_clip_encoder(*model, dir, t, mc.text_dim);
-        else throw Error(dir + "/model.json", "text_encoder.kind", "glove_transformer or clip", kind);
+        else if (kind == "minilm") load_minilm_encoder(*model, dir, t, mc.text_dim);
+        else throw Error(dir + "/model.json", "text_encoder.kind", "glove_transformer, clip or minilm", kind);
         model->schedule = cosine_schedule(static_cast<int>(model_integer(model->meta.at("diffusion"), dir + "/model.json", "diffusion", "steps", 1, 100000)));
     } catch (const nlohmann::json::exception& e) {
         throw Error(dir + "/model.json", "json", "a t2imu model description", e.what());
@@ -131,9 +137,8 @@ std::unique_ptr<MotionModel> load_motion_model(const std::string& dir, const std
     model->device = torch::Device(device);
     model->mdm->to(model->device);
     model->mdm->eval();
-    torch::nn::Module& text = model->clip ? static_cast<torch::nn::Module&>(*model->clip) : *model->text;
-    text.to(model->device);
-    text.eval();
+    model->text_module().to(model->device);
+    model->text_module().eval();
     return model;
 }
 

@@ -12,13 +12,14 @@
 #include <string>
 #include <vector>
 
-#include "diffusion/clip_text_encoder.hpp"
-#include "diffusion/glove_text_encoder.hpp"
 #include "diffusion/mdm.hpp"
 #include "diffusion/noise_schedule.hpp"
 #include "diffusion/samplers.hpp"
 #include "motion/joint_sequence.hpp"
 #include "motion/normalization.hpp"
+#include "text/nn/bert_encoder.hpp"
+#include "text/nn/clip_text_encoder.hpp"
+#include "text/nn/glove_text_encoder.hpp"
 
 namespace t2imu {
 
@@ -27,12 +28,14 @@ struct MotionModel {
     Mdm mdm{nullptr};
     GloveTextEncoder text{nullptr};      // text_encoder.kind "glove_transformer" (t2imu train's models)
     ClipTextEncoder clip{nullptr};       // text_encoder.kind "clip" (official MDM checkpoints)
+    BertEncoder minilm{nullptr};         // text_encoder.kind "minilm" (frozen sentence vectors)
     NoiseSchedule schedule;
     FeatureStats stats;
     nlohmann::json meta;  // model.json
     torch::Device device{torch::kCPU};
 
     torch::Tensor encode_text(const std::vector<std::string>& captions);  // [B, text_dim] by whichever encoder is loaded
+    torch::nn::Module& text_module();                                     // that encoder
 };
 
 // model.json's text_encoder names the encoder:
@@ -44,6 +47,10 @@ struct MotionModel {
 //     paths as written, then relative to the model folder. text_tokens is MDM's tokenizer context (22 for
 //     HumanML3D and KIT, 77 for other data sets). The weights may be weights.safetensors itself, an MDM state
 //     dict that kept its CLIP under clip_model.; otherwise a clip_model.* key there is refused like any other.
+//   {"kind": "minilm", "weights": PATH, "vocab": PATH, "heads": 12[, "max_tokens": 256]}: a frozen BERT-family
+//     sentence encoder (text/nn/bert_encoder.hpp; all-MiniLM-L6-v2's model.safetensors and vocab.txt, mean
+//     pooled, unit length); sizes from the weights, the head count given; mdm.text_dim must equal its width
+//     (384 for MiniLM). Paths as for clip.
 // `device` is cpu, cuda or cuda:N.
 std::unique_ptr<MotionModel> load_motion_model(const std::string& dir, const std::string& device = "cpu");
 

@@ -13,12 +13,12 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/npy.hpp"
-#include "core/safetensors.hpp"
 #include "data/hml3d_dataset.hpp"
 #include "diffusion/gaussian_diffusion.hpp"
 #include "diffusion/losses.hpp"
 #include "diffusion/recover_from_ric_torch.hpp"
-#include "diffusion/torch_threads.hpp"
+#include "nn/state_dict.hpp"
+#include "nn/threads.hpp"
 
 namespace t2imu {
 
@@ -149,32 +149,6 @@ LossTerms mdm_loss_terms(const torch::Tensor& x0, const torch::Tensor& x0_hat, c
 
 namespace {
 
-void save_parameters(const torch::nn::Module& m, const std::string& path) {
-    SafeTensors st;
-    for (const auto& p : m.named_parameters()) {
-        const torch::Tensor v = p.value().detach().to(torch::kCPU, torch::kFloat32).contiguous();
-        std::vector<float> data(v.data_ptr<float>(), v.data_ptr<float>() + v.numel());
-        st.tensors[p.key()] = NdArray::from(data, std::vector<int64_t>(v.sizes().begin(), v.sizes().end()));
-    }
-    write_safetensors(path, st);
-}
-
-void load_parameters(torch::nn::Module& m, const std::string& path) {
-    const SafeTensors st = read_safetensors(path);
-    torch::NoGradGuard no_grad;
-    std::set<std::string> used;
-    for (auto& p : m.named_parameters()) {
-        const auto it = st.tensors.find(p.key());
-        if (it == st.tensors.end() || it->second.shape != std::vector<int64_t>(p.value().sizes().begin(), p.value().sizes().end()))
-            throw Error(path, p.key(), "a tensor of shape " + c10::str(p.value().sizes()), it == st.tensors.end() ? "missing" : it->second.shape_str());
-        std::vector<float> v = it->second.to<float>();
-        p.value().copy_(torch::from_blob(v.data(), it->second.shape, torch::kFloat));
-        used.insert(p.key());
-    }
-    for (const auto& [name, a] : st.tensors)
-        if (!used.count(name)) throw Error(path, name, "a parameter of the model", "an unexpected tensor " + a.shape_str());
-}
-
 torch::Tensor text_tensor(const std::string& s) {
     return torch::from_blob(const_cast<char*>(s.data()), {static_cast<int64_t>(s.size())}, torch::kUInt8).clone();
 }
@@ -256,8 +230,8 @@ void write_model(const Training& tr, const TrainConfig& c, const Hml3dDataset& d
             params[i].copy_(tr.ema[i]);
         }
     }
-    save_parameters(*tr.mdm, c.out + "/weights.safetensors");
-    save_parameters(*tr.text, c.out + "/text_encoder.safetensors");
+    save_state_dict(*tr.mdm, c.out + "/weights.safetensors");
+    save_state_dict(*tr.text, c.out + "/text_encoder.safetensors");
     if (!saved.empty()) {
         torch::NoGradGuard no_grad;
         for (size_t i = 0; i < params.size(); ++i) params[i].copy_(saved[i]);
@@ -343,8 +317,8 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
     const torch::Device device = training_device(c.device, c.processes);
     Training tr{Mdm(mc), GloveTextEncoder(vocab, c.text), nullptr, {}, noise_generator(device, c.seed, several), std::mt19937_64(c.seed + 1), 0};
     if (!init_from.empty()) {
-        load_parameters(*tr.mdm, init_from + "/weights.safetensors");
-        load_parameters(*tr.text, init_from + "/text_encoder.safetensors");
+        load_state_dict(*tr.mdm, init_from + "/weights.safetensors");
+        load_state_dict(*tr.text, init_from + "/text_encoder.safetensors");
     }
     tr.mdm->to(device);
     tr.text->to(device);

@@ -24,9 +24,9 @@
 #include <cstdint>
 #include <string>
 
-#include "diffusion/distributed.hpp"
-#include "diffusion/glove_text_encoder.hpp"
 #include "diffusion/mdm.hpp"
+#include "nn/distributed.hpp"
+#include "text/nn/glove_text_encoder.hpp"
 
 namespace t2imu {
 

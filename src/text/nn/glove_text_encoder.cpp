@@ -1,4 +1,4 @@
-#include "diffusion/glove_text_encoder.hpp"
+#include "text/nn/glove_text_encoder.hpp"
 
 #include <cmath>
 

@@ -1,39 +1,17 @@
-#include "diffusion/clip_text_encoder.hpp"
+#include "text/nn/clip_text_encoder.hpp"
 
 #include <cmath>
 #include <limits>
 #include <set>
 
 #include "core/error.hpp"
-#include "core/safetensors.hpp"
+#include "nn/state_dict.hpp"
 
 namespace t2imu {
 
 namespace {
 
-// libtorch module names hold no dots: OpenAI's dotted names come from nested, otherwise empty holder modules.
-torch::nn::Module& holder_for(torch::nn::Module& root, const std::string& dotted_prefix) {
-    torch::nn::Module* m = &root;
-    size_t start = 0;
-    for (size_t dot = dotted_prefix.find('.'); dot != std::string::npos; start = dot + 1, dot = dotted_prefix.find('.', start)) {
-        const std::string name = dotted_prefix.substr(start, dot - start);
-        torch::nn::Module* next = nullptr;
-        for (const auto& child : m->named_children())
-            if (child.key() == name) next = child.value().get();
-        m = next ? next : m->register_module(name, std::make_shared<torch::nn::Module>()).get();
-    }
-    return *m;
-}
-
 std::string leaf(const std::string& path) { return path.substr(path.rfind('.') + 1); }
-
-template <class M> M module_at(torch::nn::Module& root, const std::string& path, M module) {
-    return holder_for(root, path).register_module(leaf(path), module);
-}
-
-torch::Tensor parameter_at(torch::nn::Module& root, const std::string& path, torch::Tensor value) {
-    return holder_for(root, path).register_parameter(leaf(path), value);
-}
 
 bool starts_with(const std::string& s, const std::string& p) { return s.compare(0, p.size(), p) == 0; }
 bool ends_with(const std::string& s, const std::string& p) { return s.size() >= p.size() && s.compare(s.size() - p.size(), p.size(), p) == 0; }
@@ -86,36 +64,27 @@ bool ignored(const Layout& layout, const std::string& key) {
     return starts_with(name, "visual.") || name == "logit_scale" || name == "context_length" || name == "vocab_size" || name == "input_resolution";
 }
 
-std::vector<int64_t> sizes_of(const torch::Tensor& t) { return std::vector<int64_t>(t.sizes().begin(), t.sizes().end()); }
-
-std::string shape_str(const std::vector<int64_t>& s) { return c10::str(c10::IntArrayRef(s)); }
-
-torch::Tensor to_tensor(const NdArray& a) {
-    std::vector<float> v = a.to<float>();
-    return torch::from_blob(v.data(), a.shape, torch::kFloat).clone();
-}
-
 }  // namespace
 
 ClipTextEncoderImpl::ClipTextEncoderImpl(const ClipTextConfig& c) : config_(c) {
     if (c.width % c.heads != 0) throw Error("clip", "heads", "a divisor of the width " + std::to_string(c.width), std::to_string(c.heads));
     const int64_t W = c.width;
-    token_embedding_ = module_at(*this, "token_embedding", torch::nn::Embedding(c.vocab_size, W));
-    positional_embedding_ = parameter_at(*this, "positional_embedding", torch::randn({c.context_length, W}) * 0.01);
+    token_embedding_ = register_module_at(*this, "token_embedding", torch::nn::Embedding(c.vocab_size, W));
+    positional_embedding_ = register_parameter_at(*this, "positional_embedding", torch::randn({c.context_length, W}) * 0.01);
     for (int64_t i = 0; i < c.layers; ++i) {
         const std::string p = "transformer.resblocks." + std::to_string(i) + ".";
         Block b;
-        b.ln_1 = module_at(*this, p + "ln_1", torch::nn::LayerNorm(torch::nn::LayerNormOptions({W})));
-        b.in_proj_weight = parameter_at(*this, p + "attn.in_proj_weight", torch::randn({3 * W, W}) / std::sqrt(static_cast<double>(W)));
-        b.in_proj_bias = parameter_at(*this, p + "attn.in_proj_bias", torch::zeros({3 * W}));
-        b.out_proj = module_at(*this, p + "attn.out_proj", torch::nn::Linear(W, W));
-        b.ln_2 = module_at(*this, p + "ln_2", torch::nn::LayerNorm(torch::nn::LayerNormOptions({W})));
-        b.c_fc = module_at(*this, p + "mlp.c_fc", torch::nn::Linear(W, 4 * W));
-        b.c_proj = module_at(*this, p + "mlp.c_proj", torch::nn::Linear(4 * W, W));
+        b.ln_1 = register_module_at(*this, p + "ln_1", torch::nn::LayerNorm(torch::nn::LayerNormOptions({W})));
+        b.in_proj_weight = register_parameter_at(*this, p + "attn.in_proj_weight", torch::randn({3 * W, W}) / std::sqrt(static_cast<double>(W)));
+        b.in_proj_bias = register_parameter_at(*this, p + "attn.in_proj_bias", torch::zeros({3 * W}));
+        b.out_proj = register_module_at(*this, p + "attn.out_proj", torch::nn::Linear(W, W));
+        b.ln_2 = register_module_at(*this, p + "ln_2", torch::nn::LayerNorm(torch::nn::LayerNormOptions({W})));
+        b.c_fc = register_module_at(*this, p + "mlp.c_fc", torch::nn::Linear(W, 4 * W));
+        b.c_proj = register_module_at(*this, p + "mlp.c_proj", torch::nn::Linear(4 * W, W));
         blocks_.push_back(b);
     }
-    ln_final_ = module_at(*this, "ln_final", torch::nn::LayerNorm(torch::nn::LayerNormOptions({W})));
-    text_projection_ = parameter_at(*this, "text_projection", torch::randn({W, c.embed_dim}) / std::sqrt(static_cast<double>(W)));
+    ln_final_ = register_module_at(*this, "ln_final", torch::nn::LayerNorm(torch::nn::LayerNormOptions({W})));
+    text_projection_ = register_parameter_at(*this, "text_projection", torch::randn({W, c.embed_dim}) / std::sqrt(static_cast<double>(W)));
     // Frozen in MDM: never trained here either.
     for (auto& p : parameters()) p.set_requires_grad(false);
 }
@@ -169,30 +138,15 @@ torch::Tensor ClipTextEncoderImpl::encode(const std::vector<std::string>& captio
 void load_clip_text_weights(ClipTextEncoder& model, const std::string& path) {
     const SafeTensors st = read_safetensors(path);
     const Layout layout = detect_layout(st, path);
-    std::set<std::string> used;
-    torch::NoGradGuard no_grad;
-    for (auto& p : model->named_parameters()) {
-        const std::vector<int64_t> want = sizes_of(p.value());
-        const std::vector<std::string> keys = layout.hugging_face ? hugging_face_keys(p.key()) : std::vector<std::string>{layout.prefix + p.key()};
+    StateDictLayout keys;
+    keys.source = [layout](const std::string& name) {
+        if (!layout.hugging_face) return TensorSource{{layout.prefix + name}, false};
         // Hugging Face stores q, k, v apart (each a third of in_proj) and the projection as a Linear weight (P^T).
-        std::vector<int64_t> part = want;
-        if (keys.size() == 3) part[0] /= 3;
-        if (layout.hugging_face && p.key() == "text_projection") std::swap(part[0], part[1]);
-        std::vector<torch::Tensor> parts;
-        for (const std::string& key : keys) {
-            const auto it = st.tensors.find(key);
-            if (it == st.tensors.end()) throw Error(path, key, "a tensor of shape " + shape_str(part), "missing");
-            if (it->second.shape != part) throw Error(path, key, "shape " + shape_str(part), it->second.shape_str());
-            parts.push_back(to_tensor(it->second));
-            used.insert(key);
-        }
-        torch::Tensor value = parts.size() == 1 ? parts[0] : torch::cat(parts, 0);
-        if (layout.hugging_face && p.key() == "text_projection") value = value.t();
-        p.value().copy_(value);
-    }
-    for (const auto& [key, a] : st.tensors)
-        if (!used.count(key) && !ignored(layout, key))
-            throw Error(path, key, "a key of CLIP's text tower", "an unexpected tensor " + a.shape_str());
+        return TensorSource{hugging_face_keys(name), name == "text_projection"};
+    };
+    keys.foreign = [layout](const std::string& key) { return ignored(layout, key); };
+    keys.owner = "a key of CLIP's text tower";
+    load_state_dict(*model, st, path, keys);
 }
 
 ClipTextConfig read_clip_text_config(const std::string& path) {

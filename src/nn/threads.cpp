@@ -1,4 +1,4 @@
-#include "diffusion/torch_threads.hpp"
+#include "nn/threads.hpp"
 
 #include <torch/torch.h>
 

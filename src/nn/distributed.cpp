@@ -1,4 +1,4 @@
-#include "diffusion/distributed.hpp"
+#include "nn/distributed.hpp"
 
 // The Torch package defines USE_C10D_GLOO on its users when libtorch was built with Gloo (Debian's is).
 #ifndef USE_C10D_GLOO
