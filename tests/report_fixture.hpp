@@ -13,7 +13,7 @@
 #pragma once
 #include <string>
 
-#include "har/imu_dataset.hpp"
+#include "imu/imu_dataset.hpp"
 #include "motion/joint_sequence.hpp"
 
 namespace t2imu::test {

@@ -9,7 +9,7 @@
 
 #include "analysis/catch22.hpp"
 #include "core/csv.hpp"
-#include "har/imu_dataset.hpp"
+#include "imu/imu_dataset.hpp"
 #include "core/error.hpp"
 #include "test_util.hpp"
 

@@ -10,7 +10,7 @@
 #include "core/csv.hpp"
 #include "core/npy.hpp"
 #include "core/zip_archive.hpp"
-#include "har/realworld.hpp"
+#include "har/datasets/realworld.hpp"
 #include "test_util.hpp"
 
 using namespace t2imu;
@@ -59,6 +59,7 @@ TEST(CliImuSynth, WritesOneCsvPerBodyAndPositionWithMeta) {
     for (const auto& b : meta["bodies"]) EXPECT_TRUE(fs::exists(dir + "/out/" + b["name"].get<std::string>() + "/left_thigh.csv"));
 }
 
+// imu/realworld_export.cpp (what --format realworld writes), read back by har/datasets/realworld.cpp.
 TEST(CliImuSynth, RealWorldFilesReadBackThroughTheRealWorldLoader) {
     const std::string dir = test::scratch_dir("cli_imu_synth_rw");
     const auto r = test::run_cli("imu synth --joints " + write_standing(dir) + " --body preset:male_tall --sensors realworld"

@@ -39,7 +39,7 @@ Files operator+(Files a, const Files& b) {
     return a;
 }
 
-// A tiny data set in the IMU dataset layout (har/imu_dataset.hpp): two subjects walking and running, chest,
+// A tiny data set in the IMU dataset layout (imu/imu_dataset.hpp): two subjects walking and running, chest,
 // 6 s at 20 Hz. `bad_cell` replaces the first acc_x value of the first recording.
 Files imu_dataset(const std::string& dir, const std::string& bad_cell = "") {
     Files f;

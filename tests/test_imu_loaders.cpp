@@ -4,10 +4,10 @@
 #include <cmath>
 #include <filesystem>
 
-#include "har/hugadb.hpp"
-#include "har/imu_dataset.hpp"
-#include "har/sisfall.hpp"
-#include "har/umafall.hpp"
+#include "har/datasets/hugadb.hpp"
+#include "imu/imu_dataset.hpp"
+#include "har/datasets/sisfall.hpp"
+#include "har/datasets/umafall.hpp"
 #include "test_util.hpp"
 
 using namespace t2imu;

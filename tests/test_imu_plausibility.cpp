@@ -10,7 +10,7 @@
 #include <complex>
 #include <map>
 
-#include "har/imu_dataset.hpp"
+#include "imu/imu_dataset.hpp"
 #include "imu/virtual_imu.hpp"
 #include "motion/mocap_import.hpp"
 #include "test_util.hpp"

@@ -6,7 +6,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/zip_archive.hpp"
-#include "har/realworld.hpp"
+#include "har/datasets/realworld.hpp"
 #include "test_util.hpp"
 
 using namespace t2imu;

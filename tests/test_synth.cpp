@@ -13,7 +13,7 @@
 #include "core/error.hpp"
 #include "core/npy.hpp"
 #include "diffusion/trainer.hpp"
-#include "har/imu_dataset.hpp"
+#include "imu/imu_dataset.hpp"
 #include "motion/joint_sequence.hpp"
 #include "motion/motion_activity.hpp"
 #include "pipeline/synth.hpp"

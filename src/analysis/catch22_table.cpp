@@ -5,6 +5,9 @@
 
 #include "analysis/catch22.hpp"
 #include "core/error.hpp"
+#include "core/parallel.hpp"
+#include "core/progress.hpp"
+#include "imu/imu_dataset.hpp"
 
 namespace t2imu {
 
@@ -12,14 +15,14 @@ std::vector<std::string> window_channel_names(const WindowOptions& o) {
     std::vector<std::string> names;
     const std::vector<std::string> positions = o.positions.empty() ? std::vector<std::string>{"sensor"} : o.positions;
     for (const std::string& p : positions)
-        for (const char* c : {"acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z"}) {
-            if (!o.gyro && c[0] == 'g') continue;
-            names.push_back(p + "_" + c);
+        for (size_t c = 1; c < imu_sample_columns().size(); ++c) {  // the six signals after t
+            if (!o.gyro && imu_sample_columns()[c].rfind("gyr", 0) == 0) continue;
+            names.push_back(p + "_" + imu_sample_columns()[c]);
         }
     return names;
 }
 
-CsvTable catch22_window_table(const WindowSet& w, const std::vector<std::string>& channel_names, bool catch24) {
+CsvTable catch22_window_table(const WindowSet& w, const std::vector<std::string>& channel_names, bool catch24, int threads) {
     if (static_cast<int>(channel_names.size()) != w.channels)
         throw Error("catch22 table", "channels", std::to_string(w.channels) + " names", std::to_string(channel_names.size()));
     CsvTable t;
@@ -27,14 +30,12 @@ CsvTable catch22_window_table(const WindowSet& w, const std::vector<std::string>
     const size_t features = catch24 ? 24 : 22;
     for (const std::string& c : channel_names)
         for (size_t f = 0; f < features; ++f) t.header.push_back(c + "_" + catch24_short_names()[f]);
-    std::string previous_group;
-    int index = 0;
-    char buf[32];
-    std::vector<double> series(static_cast<size_t>(w.length));
-    for (size_t i = 0; i < w.size(); ++i) {
-        index = w.groups[i] == previous_group ? index + 1 : 0;
-        previous_group = w.groups[i];
-        std::vector<std::string> row = {w.subjects[i], w.groups[i], w.labels[i], std::to_string(index)};
+    t.rows.resize(w.size());
+    Progress progress("catch22", w.size(), "windows");
+    parallel_for(w.size(), threads, [&](size_t i) {
+        std::vector<std::string> row = {w.subjects[i], w.groups[i], w.labels[i], ""};
+        std::vector<double> series(static_cast<size_t>(w.length));
+        char buf[32];
         for (int c = 0; c < w.channels; ++c) {
             for (int k = 0; k < w.length; ++k) series[static_cast<size_t>(k)] = w.data[(i * static_cast<size_t>(w.length) + static_cast<size_t>(k)) * static_cast<size_t>(w.channels) + static_cast<size_t>(c)];
             std::vector<double> values;
@@ -48,7 +49,13 @@ CsvTable catch22_window_table(const WindowSet& w, const std::vector<std::string>
                 row.push_back(buf);
             }
         }
-        t.rows.push_back(std::move(row));
+        t.rows[i] = std::move(row);
+        progress.advance();
+    });
+    // The window's index within its trial: consecutive windows of one group count up from 0.
+    for (size_t i = 0, index = 0; i < w.size(); ++i) {
+        index = i > 0 && w.groups[i] == w.groups[i - 1] ? index + 1 : 0;
+        t.rows[i][3] = std::to_string(index);
     }
     return t;
 }

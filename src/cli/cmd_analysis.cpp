@@ -10,7 +10,7 @@
 #include "core/csv.hpp"
 #include "core/error.hpp"
 #include "core/output_path.hpp"
-#include "har/imu_dataset.hpp"
+#include "imu/imu_dataset.hpp"
 
 namespace t2imu::cli {
 

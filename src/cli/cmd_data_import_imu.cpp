@@ -2,11 +2,11 @@
 #include <cstdio>
 
 #include "cli/command.hpp"
-#include "har/hugadb.hpp"
-#include "har/imu_dataset.hpp"
-#include "har/realworld.hpp"
-#include "har/sisfall.hpp"
-#include "har/umafall.hpp"
+#include "har/datasets/hugadb.hpp"
+#include "imu/imu_dataset.hpp"
+#include "har/datasets/realworld.hpp"
+#include "har/datasets/sisfall.hpp"
+#include "har/datasets/umafall.hpp"
 
 namespace t2imu::cli {
 

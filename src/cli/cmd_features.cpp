@@ -47,7 +47,7 @@ static void add_catch22_command(CLI::App& features) {
             if (all.size() == 1) w.positions = {*all.begin()};  // name the columns after it
         }
         const WindowSet windows = make_windows(recordings, w);
-        write_csv(out, catch22_window_table(windows, window_channel_names(w), catch24));
+        write_csv(out, catch22_window_table(windows, window_channel_names(w), catch24, worker_threads()));
         std::printf("%s: %zu windows x %d channels\n", out.c_str(), windows.size(), windows.channels);
     });
 }

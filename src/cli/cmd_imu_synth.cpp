@@ -9,7 +9,8 @@
 #include "core/error.hpp"
 #include "core/npy.hpp"
 #include "core/output_path.hpp"
-#include "imu/imu_writer.hpp"
+#include "imu/imu_dataset.hpp"
+#include "imu/realworld_export.hpp"
 #include "imu/virtual_imu.hpp"
 
 namespace t2imu::cli {
@@ -42,7 +43,7 @@ void write_outputs(const SynthArgs& a, const std::vector<BodyImu>& bodies, const
         make_directories(dir.string(), "body folder");
         for (size_t i = 0; i < b.mounts.size(); ++i) {
             const std::string& position = b.mounts[i].placement.position;
-            write_imu_csv((dir / (position + ".csv")).string(), b.signals[i]);
+            write_imu_recording((dir / (position + ".csv")).string(), b.signals[i]);
             if (a.format == "realworld") write_realworld_csv(dir.string(), a.activity, without_side(position), b.signals[i]);
         }
     }

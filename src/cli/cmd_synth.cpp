@@ -1,7 +1,6 @@
 // t2imu synth: the main job, prompts -> motions -> bodies -> virtual sensors -> an IMU dataset.
 #include <cstdio>
 #include <filesystem>
-#include <unistd.h>
 
 #include "cli/command.hpp"
 #include "cli/sampler_option.hpp"
@@ -47,15 +46,7 @@ void run(SynthArgs a) {
     }
     o.device = global_options().device;
     o.threads = worker_threads();
-    const bool show = global_options().verbose || ::isatty(2);
-    const nlohmann::json r = run_synth(o, [&](const SynthProgress& p) {
-        if (!show) return;
-        const double rate = p.seconds > 0 ? p.done / p.seconds : 0;
-        std::fprintf(stderr, "\rsynth: %d/%d jobs, %.1f s, ETA %.0f s   ", p.done, p.total, p.seconds,
-                     rate > 0 ? (p.total - p.done) / rate : 0.0);
-        std::fflush(stderr);
-    });
-    if (show) std::fprintf(stderr, "\n");
+    const nlohmann::json r = run_synth(o);
     const auto& t = r["this_run"];
     std::printf("%s: %d of %d jobs done (%d motions kept, %d of them below the activity agreement, %d dropped, %d regenerated), %d recordings; this run: %d jobs in %.1f s "
                 "(motions %.1f s, quality %.1f s, bodies+IMU+write %.1f s)\n",

@@ -6,6 +6,7 @@
 #include "cli/command.hpp"
 #include "cli/usage.hpp"
 #include "core/error.hpp"
+#include "core/progress.hpp"
 #include "nn/threads.hpp"
 
 namespace t2imu::cli {
@@ -44,7 +45,8 @@ int main(int argc, char** argv) {
     app.add_option("--threads", g_options.threads, "worker threads, libtorch's included (default: all cores)")
         ->check(CLI::NonNegativeNumber)
         ->each([](const std::string&) { t2imu::set_torch_threads(worker_threads()); });
-    app.add_flag("-v,--verbose", g_options.verbose, "progress and details on stderr");
+    app.add_flag("-v,--verbose", g_options.verbose, "progress and details on stderr, also in a pipe")
+        ->each([](const std::string&) { t2imu::set_progress_output(t2imu::ProgressOutput::always); });
     app.add_option("--device", g_options.device, "where the diffusion model trains and samples: cpu, cuda, cuda:N (default cpu)")
         ->check([](const std::string& d) {
             return d == "cpu" || d.rfind("cuda", 0) == 0 ? std::string() : std::string("cpu, cuda or cuda:N");

@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "core/npy.hpp"
 #include "core/output_path.hpp"
+#include "core/progress.hpp"
 #include "data/captions.hpp"
 #include "data/derived_clips.hpp"
 #include "data/mean_std.hpp"
@@ -278,7 +279,9 @@ BuildSummary build_into(const BuildOptions& o, const std::string& tmp) {
     nlohmann::json skipped = nlohmann::json::array();
     BuildSummary summary;
     DeriveReport derive_report;
+    Progress progress("data build", sources.size(), "files");
     for (const auto& [file, c] : sources) {
+        progress.advance();
         if (c.captions.empty()) continue;
         if (!o.licences.empty() && !o.licences.count(c.source_dataset)) continue;
         JointSequence joints;

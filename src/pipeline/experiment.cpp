@@ -18,7 +18,7 @@
 #include "core/error.hpp"
 #include "diffusion/lacc_evaluation.hpp"
 #include "diffusion/text_to_motion.hpp"
-#include "har/imu_dataset.hpp"
+#include "imu/imu_dataset.hpp"
 #include "report/html_report.hpp"
 #include "text/sentence_similarity.hpp"
 #include "text/word_vectors.hpp"
@@ -104,7 +104,7 @@ private:
     void features(const std::string& file, const std::string& dataset, const ExperimentRealSet& set) {
         if (fs::exists(file)) return;
         const WindowSet& w = windows(dataset, set);
-        write_csv(file, catch22_window_table(w, window_channel_names(windows_for(set)), false));
+        write_csv(file, catch22_window_table(w, window_channel_names(windows_for(set)), false, c_.synth.threads));
         say("catch22 of " + std::to_string(w.size()) + " windows: " + file);
     }
 

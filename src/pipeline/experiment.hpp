@@ -41,7 +41,7 @@ struct ExperimentSource {
 
 struct ExperimentRealSet {
     std::string name;     // column name in tables and file names
-    std::string dataset;  // IMU dataset folder (har/imu_dataset.hpp layout)
+    std::string dataset;  // IMU dataset folder (imu/imu_dataset.hpp layout)
     std::string prompts;  // prompt set in this data set's class names
     std::string sensors;  // placement set the synthetic recordings are made at
     std::vector<std::string> positions;  // positions compared (windowing.hpp names)

@@ -1,22 +1,20 @@
 #include "pipeline/synth.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <map>
-#include <mutex>
 #include <optional>
-#include <thread>
 
 #include "core/atomic_file.hpp"
 #include "core/csv.hpp"
 #include "core/error.hpp"
 #include "core/npy.hpp"
 #include "core/output_path.hpp"
-#include "har/imu_dataset.hpp"
-#include "imu/imu_writer.hpp"
+#include "core/parallel.hpp"
+#include "core/progress.hpp"
+#include "imu/imu_dataset.hpp"
 #include "imu/virtual_imu.hpp"
 #include "motion/bvh_export.hpp"
 #include "motion/activity_names.hpp"
@@ -181,7 +179,7 @@ void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt&
             const BodyImu r = synthesize_body_imu(d.joints, b, stage.sensors, imu);
             for (size_t s = 0; s < r.mounts.size(); ++s) {
                 const std::string path = "recordings/" + name + "/" + r.body.name + "/" + r.mounts[s].placement.position + ".csv";
-                write_imu_csv(o.out + "/" + path, r.signals[s]);
+                write_imu_recording(o.out + "/" + path, r.signals[s]);
                 marker["recordings"].push_back({{"path", path}, {"body", r.body.name}, {"position", r.mounts[s].placement.position},
                                                 {"n_samples", r.signals[s].t.size()}, {"bytes", fs::file_size(o.out + "/" + path)},
                                                 {"tempo", r.tempo}, {"tilt_deg", r.tilt_deg[s]}});
@@ -205,27 +203,6 @@ bool job_intact(const std::string& out, int job) {
         if (ec || (r.contains("bytes") && r["bytes"] != size)) return false;
     }
     return !marker.value("kept", false) || fs::exists(out + "/motions/" + job_name(job) + "_joints.npy");
-}
-
-// Runs fn(i) for i in [0, n) on `threads` workers.
-void parallel_for(int n, int threads, const std::function<void(int)>& fn) {
-    std::vector<std::thread> workers;
-    std::atomic<int> next{0};
-    std::exception_ptr error;
-    std::mutex error_mutex;
-    for (int w = 0; w < std::max(1, std::min(threads, n)); ++w)
-        workers.emplace_back([&] {
-            for (int i; (i = next++) < n;) {
-                try {
-                    fn(i);
-                } catch (...) {
-                    std::lock_guard<std::mutex> lock(error_mutex);
-                    if (!error) error = std::current_exception();
-                }
-            }
-        });
-    for (std::thread& t : workers) t.join();
-    if (error) std::rethrow_exception(error);
 }
 
 json settings_json(const SynthOptions& o, const std::vector<Prompt>& prompts, const json& source, const RealismModel& realism) {
@@ -296,15 +273,21 @@ std::vector<json> read_markers(const std::string& out) {
 
 // Rows for every recording of every marker; `source` is the model folder or retrieval:DATASET as given.
 void write_manifest(const SynthOptions& o, const std::vector<json>& markers) {
-    CsvTable m;
-    m.header = {"path", "dataset", "subject", "activity", "position", "rate_hz", "n_samples", "units", "source", "prompt", "body", "seed", "job"};
-    char rate[32];
-    std::snprintf(rate, sizeof rate, "%g", o.rate_hz);
+    std::vector<ImuRecording> rows;
     for (const json& j : markers)
-        for (const json& r : j["recordings"])
-            m.rows.push_back({r["path"], "t2imu", r["body"], j["activity"], r["position"], rate, std::to_string(r["n_samples"].get<size_t>()),
-                              kImuUnits, o.model, j["prompt"], r["body"], std::to_string(j["seed"].get<uint64_t>()), j["job"]});
-    write_csv(o.out + "/manifest.csv", m);
+        for (const json& r : j["recordings"]) {
+            ImuRecording row;
+            row.path = r["path"];
+            row.dataset = "t2imu";
+            row.subject = r["body"];
+            row.activity = j["activity"];
+            row.position = r["position"];
+            row.rate_hz = o.rate_hz;
+            row.n_samples = r["n_samples"].get<size_t>();
+            row.extra = {{"source", o.model}, {"prompt", j["prompt"]}, {"body", r["body"]}, {"seed", std::to_string(j["seed"].get<uint64_t>())}, {"job", j["job"]}};
+            rows.push_back(std::move(row));
+        }
+    write_imu_manifest(o.out, rows, {"source", "prompt", "body", "seed", "job"});
 }
 
 double median(std::vector<double> v) {
@@ -352,7 +335,7 @@ json report_json(const std::vector<json>& markers, int total_jobs, const json& t
 
 }  // namespace
 
-json run_synth(const SynthOptions& o, const std::function<void(const SynthProgress&)>& progress) {
+json run_synth(const SynthOptions& o) {
     o.validate();
     const auto start = Clock::now();
     const std::vector<Prompt> prompts = read_prompt_set(o.prompts, PromptActivity::required);
@@ -376,7 +359,7 @@ json run_synth(const SynthOptions& o, const std::function<void(const SynthProgre
     std::vector<bool> todo(static_cast<size_t>(last - first));
     for (int k = first; k < last; ++k) todo[static_cast<size_t>(k - first)] = !job_intact(o.out, k);
     const int jobs_to_run = static_cast<int>(std::count(todo.begin(), todo.end(), true));
-    SynthProgress p{last - first - jobs_to_run, last - first, 0};
+    Progress progress("synth", static_cast<size_t>(jobs_to_run), "jobs");
     double generate_s = 0, score_s = 0, imu_s = 0;
     for (const std::vector<int>& jobs : job_groups(first, last, o.sampling.batch)) {
         if (std::none_of(jobs.begin(), jobs.end(), [&](int k) { return todo[static_cast<size_t>(k - first)]; })) continue;
@@ -389,16 +372,15 @@ json run_synth(const SynthOptions& o, const std::function<void(const SynthProgre
         }
         const std::vector<Drawn> drawn = draw_filtered(*source, jobs, texts, labels, expected, classifier ? &*classifier : nullptr, o, &generate_s, &score_s);
         t0 = Clock::now();
-        parallel_for(static_cast<int>(jobs.size()), o.threads, [&](int i) {
-            const int k = jobs[static_cast<size_t>(i)];
+        parallel_for(jobs.size(), o.threads, [&](size_t i) {
+            const int k = jobs[i];
             if (!todo[static_cast<size_t>(k - first)]) return;  // done before the interruption, with these very bytes
-            write_job(o, stage, k, prompts[static_cast<size_t>(k / o.samples_per_prompt)], k % o.samples_per_prompt, drawn[static_cast<size_t>(i)]);
+            write_job(o, stage, k, prompts[static_cast<size_t>(k / o.samples_per_prompt)], k % o.samples_per_prompt, drawn[i]);
+            progress.advance();
         });
         imu_s += since(t0);
-        p.done += static_cast<int>(std::count_if(jobs.begin(), jobs.end(), [&](int k) { return todo[static_cast<size_t>(k - first)]; }));
-        p.seconds = since(start);
-        if (progress) progress(p);
     }
+    progress.finish();
     t0 = Clock::now();
     const std::vector<json> markers = read_markers(o.out);
     write_manifest(o, markers);

@@ -1,4 +1,4 @@
-// The main job: prompts -> motions -> bodies -> virtual sensors -> an IMU dataset (har/imu_dataset.hpp's
+// The main job: prompts -> motions -> bodies -> virtual sensors -> an IMU dataset (imu/imu_dataset.hpp's
 // layout) with the motions that made it.
 //
 // Work is cut into jobs, one per prompt and sample (job k = prompt k / S, sample k % S for S samples per prompt),
@@ -71,13 +71,8 @@ struct SynthOptions {
     void validate() const;
 };
 
-struct SynthProgress {
-    int done = 0, total = 0;  // jobs of this shard
-    double seconds = 0;
-};
-
 // Runs (or resumes) the jobs of this shard, then rebuilds the manifest and the report from every marker in the
-// folder. Returns the report (synth_report.json). `progress` is called after each batch of jobs.
-nlohmann::json run_synth(const SynthOptions& options, const std::function<void(const SynthProgress&)>& progress = {});
+// folder. Returns the report (synth_report.json). Progress over this run's jobs: core/progress.hpp.
+nlohmann::json run_synth(const SynthOptions& options);
 
 }  // namespace t2imu

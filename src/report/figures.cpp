@@ -6,6 +6,7 @@
 #include <map>
 
 #include "core/error.hpp"
+#include "imu/imu_dataset.hpp"
 #include "report/gnuplot.hpp"
 
 namespace t2imu {
@@ -143,11 +144,10 @@ void plot_signal_stats(const std::vector<ActivityStats>& groups, const std::stri
 
 void plot_imu_trace(const CsvTable& rec, const std::string& png, const std::string& title) {
     GnuplotData d{"imu", {}};
-    const size_t t = rec.column("t");
-    const std::vector<size_t> cols = {rec.column("acc_x"), rec.column("acc_y"), rec.column("acc_z"),
-                                      rec.column("gyr_x"), rec.column("gyr_y"), rec.column("gyr_z")};
+    std::vector<size_t> cols;  // t, then acc xyz and gyr xyz: the gnuplot columns 1 to 7 below
+    for (const std::string& name : imu_sample_columns()) cols.push_back(rec.column(name));
     for (const auto& row : rec.rows) {
-        std::vector<std::string> r = {row[t]};
+        std::vector<std::string> r;
         for (size_t c : cols) r.push_back(row[c]);
         d.rows.push_back(r);
     }

@@ -9,7 +9,7 @@
 #include "core/atomic_file.hpp"
 #include "core/csv.hpp"
 #include "core/error.hpp"
-#include "har/imu_dataset.hpp"
+#include "imu/imu_dataset.hpp"
 #include "report/figures.hpp"
 #include "report/html_page.hpp"
 #include "report/synth_section.hpp"

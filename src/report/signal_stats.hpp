@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "har/imu_dataset.hpp"
+#include "imu/imu_dataset.hpp"
 
 namespace t2imu {
 

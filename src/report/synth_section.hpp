@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "har/imu_dataset.hpp"
+#include "imu/imu_dataset.hpp"
 #include "report/html_page.hpp"
 
 namespace t2imu {

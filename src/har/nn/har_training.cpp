@@ -10,6 +10,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/progress.hpp"
 #include "har/class_map.hpp"
 #include "har/nn/deepconvlstm.hpp"
 
@@ -211,10 +212,11 @@ HarResult train_and_test(const WindowSet& train, const WindowSet& test, const Ha
     const Labelled tr = labelled(train, r.classes, rename_train), te = labelled(test, r.classes, rename_test);
     r.train_windows = tr.index.size();
     r.test_windows = te.index.size();
+    Progress progress("HAR", static_cast<size_t>(o.repeats), "trainings");
     for (int k = 0; k < o.repeats; ++k) {
-        if (o.verbose) std::fprintf(stderr, "run %d/%d\n", k + 1, o.repeats);
         r.runs.push_back(fit_and_test(tr, te, static_cast<int>(r.classes.size()), o, o.seed + static_cast<uint64_t>(k)));
         r.run_names.push_back("seed " + std::to_string(o.seed + static_cast<uint64_t>(k)));
+        progress.advance();
     }
     return r;
 }
@@ -232,6 +234,7 @@ HarResult leave_one_subject_out(const WindowSet& data, const HarOptions& o, int 
     std::vector<std::set<std::string>> held_out(k);
     size_t i = 0;
     for (const std::string& s : subjects) held_out[i++ % k].insert(s);
+    Progress progress("HAR", k, "folds");
     for (size_t fold = 0; fold < k; ++fold) {
         std::string name;
         for (const std::string& s : held_out[fold]) name += (name.empty() ? "" : "+") + s;
@@ -241,6 +244,7 @@ HarResult leave_one_subject_out(const WindowSet& data, const HarOptions& o, int 
         r.run_names.push_back(name);
         r.train_windows += tr.index.size();
         r.test_windows += te.index.size();
+        progress.advance();
     }
     return r;
 }

@@ -1,4 +1,4 @@
-#include "har/sisfall.hpp"
+#include "har/datasets/sisfall.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
-#include "har/release_files.hpp"
+#include "har/datasets/release_files.hpp"
 #include "har/resample_poly.hpp"
 
 namespace t2imu {

@@ -1,4 +1,4 @@
-#include "har/hugadb.hpp"
+#include "har/datasets/hugadb.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
-#include "har/release_files.hpp"
+#include "har/datasets/release_files.hpp"
 
 namespace t2imu {
 

@@ -1,4 +1,4 @@
-#include "har/release_files.hpp"
+#include "har/datasets/release_files.hpp"
 
 #include <algorithm>
 #include <filesystem>

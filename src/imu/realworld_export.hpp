@@ -1,14 +1,11 @@
-// Virtual IMU signals on disk: the project's per-position CSV and the RealWorld HAR release layout.
+// Virtual IMU signals in the RealWorld HAR release layout (the paper's test set; har/datasets/realworld.hpp reads it), for
+// users who feed synthetic data to tools written for RealWorld. The project's own layout is imu/imu_dataset.hpp.
 #pragma once
 #include <string>
 
 #include "imu/imu_synthesis.hpp"
 
 namespace t2imu {
-
-// `t,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z` (s, m/s^2 with gravity, rad/s), the IMU dataset layout's recording
-// file. Atomic.
-void write_imu_csv(const std::string& path, const ImuSignals& s);
 
 // RealWorld's release files in `dir`: acc_<activity>_<position>.csv and Gyroscope_<activity>_<position>.csv
 // with `id,attr_time,attr_x,attr_y,attr_z` (id from 1, attr_time in ms from `start_ms`). Atomic.

@@ -1,4 +1,4 @@
-#include "har/realworld.hpp"
+#include "har/datasets/realworld.hpp"
 
 #include <algorithm>
 #include <cmath>

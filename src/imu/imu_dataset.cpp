@@ -1,0 +1,142 @@
+#include "imu/imu_dataset.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <set>
+#include <string_view>
+
+#include "core/atomic_file.hpp"
+#include "core/csv.hpp"
+#include "core/error.hpp"
+
+namespace t2imu {
+
+namespace {
+
+const std::vector<std::string> kColumns = {"path", "dataset", "subject", "activity", "position", "rate_hz", "n_samples", "units"};
+const std::vector<std::string> kSampleColumns = {"t", "acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z"};
+
+std::string sample_header() {
+    std::string line;
+    for (const std::string& c : kSampleColumns) line += (line.empty() ? "" : ",") + c;
+    return line;
+}
+
+void load_samples(const std::string& dir, ImuRecording& r, size_t expected) {
+    const CsvTable t = read_csv(dir + "/" + r.path);
+    if (t.header != kSampleColumns) throw Error(t.source, "header", sample_header());
+    if (t.rows.size() != expected)
+        throw Error(t.source, "rows", std::to_string(expected) + " samples as the manifest says", std::to_string(t.rows.size()));
+    r.t.resize(t.rows.size());
+    r.samples.resize(t.rows.size());
+    for (size_t i = 0; i < t.rows.size(); ++i) {
+        r.t[i] = t.number(i, 0);
+        for (size_t c = 0; c < 6; ++c) {
+            r.samples[i][c] = t.number(i, c + 1);
+            // A NaN would spread through resampling and normalisation into every window and the trained network.
+            if (!std::isfinite(r.samples[i][c]))
+                throw Error(t.source, "row " + std::to_string(i + 2) + " column '" + kSampleColumns[c + 1] + "'", "a finite number", "'" + t.rows[i][c + 1] + "'");
+        }
+        if (!std::isfinite(r.t[i]) || (i > 0 && !(r.t[i] > r.t[i - 1]))) throw Error(t.source, "row " + std::to_string(i + 2), "finite, increasing time");
+    }
+}
+
+// At most `decimals` digits after the point, trailing zeros dropped ("0", "0.05", "-9.8066").
+void append_number(std::string& out, double v, int decimals) {
+    char buf[48];
+    const int n = std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    std::string_view s(buf, static_cast<size_t>(n));
+    if (s.find('.') != std::string_view::npos) {
+        while (s.back() == '0') s.remove_suffix(1);
+        if (s.back() == '.') s.remove_suffix(1);
+    }
+    if (s == "-0") s = "0";
+    out.append(s);
+}
+
+void append_sample_row(std::string& out, double t, const double* six, int decimals) {
+    append_number(out, t, 4);  // rates to 10 kHz
+    for (int c = 0; c < 6; ++c) {
+        out += ',';
+        append_number(out, six[c], decimals);
+    }
+    out += '\n';
+}
+
+}  // namespace
+
+const std::vector<std::string>& imu_sample_columns() { return kSampleColumns; }
+
+std::vector<ImuRecording> read_imu_dataset(const std::string& dir, bool load) {
+    const CsvTable m = read_csv(dir + "/manifest.csv");
+    for (const std::string& c : kColumns) m.column(c);
+    std::vector<ImuRecording> out;
+    for (size_t r = 0; r < m.rows.size(); ++r) {
+        ImuRecording rec;
+        rec.path = m.rows[r][m.column("path")];
+        rec.dataset = m.rows[r][m.column("dataset")];
+        rec.subject = m.rows[r][m.column("subject")];
+        rec.activity = m.rows[r][m.column("activity")];
+        rec.position = m.rows[r][m.column("position")];
+        rec.rate_hz = m.number(r, m.column("rate_hz"));
+        if (!(rec.rate_hz > 0 && std::isfinite(rec.rate_hz)))
+            throw Error(m.source, "row " + std::to_string(r + 2) + " column 'rate_hz'", "a positive rate", "'" + m.rows[r][m.column("rate_hz")] + "'");
+        for (size_t c = 0; c < m.header.size(); ++c)
+            if (std::find(kColumns.begin(), kColumns.end(), m.header[c]) == kColumns.end()) rec.extra[m.header[c]] = m.rows[r][c];
+        rec.n_samples = static_cast<size_t>(m.number(r, m.column("n_samples")));
+        if (load) load_samples(dir, rec, rec.n_samples);
+        out.push_back(std::move(rec));
+    }
+    return out;
+}
+
+void write_imu_dataset(const std::string& dir, const std::vector<ImuRecording>& recordings, int decimals) {
+    std::vector<ImuRecording> written;
+    for (const ImuRecording& r : recordings) {
+        if (r.t.size() != r.samples.size()) throw Error(r.path, "samples", "one time per sample");
+        std::string text = sample_header() + "\n";
+        text.reserve(text.size() + r.t.size() * 64);
+        for (size_t i = 0; i < r.t.size(); ++i) append_sample_row(text, r.t[i], r.samples[i].data(), decimals);
+        write_file_atomic(dir + "/" + r.path, text);
+        ImuRecording row = r;
+        row.n_samples = r.samples.size();
+        row.t.clear();
+        row.samples.clear();
+        written.push_back(std::move(row));
+    }
+    write_imu_manifest(dir, written);
+}
+
+void write_imu_recording(const std::string& path, const ImuSignals& s, int decimals) {
+    std::string text = sample_header() + "\n";
+    text.reserve(text.size() + s.t.size() * 64);
+    for (size_t k = 0; k < s.t.size(); ++k) {
+        const double six[6] = {s.acc[k].x(), s.acc[k].y(), s.acc[k].z(), s.gyr[k].x(), s.gyr[k].y(), s.gyr[k].z()};
+        append_sample_row(text, s.t[k], six, decimals);
+    }
+    write_file_atomic(path, text);
+}
+
+void write_imu_manifest(const std::string& dir, const std::vector<ImuRecording>& recordings, const std::vector<std::string>& extra_order) {
+    CsvTable manifest;
+    manifest.header = kColumns;
+    std::set<std::string> extra;
+    for (const ImuRecording& r : recordings)
+        for (const auto& [k, v] : r.extra) extra.insert(k);
+    std::vector<std::string> extra_columns;
+    for (const std::string& k : extra_order)
+        if (extra.erase(k)) extra_columns.push_back(k);
+    extra_columns.insert(extra_columns.end(), extra.begin(), extra.end());
+    manifest.header.insert(manifest.header.end(), extra_columns.begin(), extra_columns.end());
+    for (const ImuRecording& r : recordings) {
+        char rate[32];
+        std::snprintf(rate, sizeof rate, "%g", r.rate_hz);
+        std::vector<std::string> row = {r.path, r.dataset, r.subject, r.activity, r.position, rate, std::to_string(r.n_samples), kImuUnits};
+        for (const std::string& k : extra_columns) row.push_back(r.extra.count(k) ? r.extra.at(k) : "");
+        manifest.rows.push_back(row);
+    }
+    write_csv(dir + "/manifest.csv", manifest);
+}
+
+}  // namespace t2imu
