@@ -12,8 +12,8 @@ using namespace t2imu::catch22_detail;
 using t2imu::test::Catch22Reference;
 
 TEST(Catch22Symbolic, Pnn40CountsIncrementsAbove40Milliseconds) {
-    // Increments 0.05 (yes), 0.01 (no), -0.06 (yes), 0.041 (yes): 3 of 4.
-    EXPECT_DOUBLE_EQ(pnn40({0, 0.05, 0.06, 0.0, 0.041}), 0.75);
+    // Increments 0.05 (yes), 0.01 (no), -0.06 (yes), 0.041 (yes), 0.035 (no): 3 of 5.
+    EXPECT_DOUBLE_EQ(pnn40({0, 0.05, 0.06, 0.0, 0.041, 0.076}), 0.6);
     EXPECT_DOUBLE_EQ(pnn40({0, 0.01, 0.02, 0.03}), 0.0);
 }
 
