@@ -70,7 +70,9 @@ TEST(SkeletonMap, LeftAndRightAreMirrored) {
             const int k = smpl22::kMirror[j];
             const JointSource &a = m.joints[j], &b = m.joints[k];
             EXPECT_DOUBLE_EQ(a.t, b.t) << m.flavour << " " << smpl22::kJointNames[j];
-            if (k != j) EXPECT_NE(a.from, b.from) << m.flavour << " " << smpl22::kJointNames[j];
+            if (k != j) {
+                EXPECT_NE(a.from, b.from) << m.flavour << " " << smpl22::kJointNames[j];
+            }
             // Each SMPL joint has its own source point.
             EXPECT_TRUE(used.insert(a.from + ">" + a.to + "@" + std::to_string(a.t)).second) << m.flavour << " " << smpl22::kJointNames[j];
         }
