@@ -1,5 +1,5 @@
-// Motion descriptors against motions whose statistics are known by construction (HumanML3D's rest skeleton
-// moved rigidly), and the activity classifier against reference sets whose answers are known.
+// The activity classifier against reference sets whose answers are known (the motion descriptors it reads are
+// tested in test_motion_descriptors.cpp).
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -12,90 +12,6 @@
 
 namespace t2imu {
 namespace {
-
-// HumanML3D's target skeleton in its rest pose (upright, legs straight, facing +Z), lowest joint on the floor.
-std::array<Eigen::Vector3d, smpl22::kNumJoints> rest_pose() {
-    std::array<Eigen::Vector3d, smpl22::kNumJoints> p;
-    for (int j = 0; j < smpl22::kNumJoints; ++j)
-        p[j] = smpl22::kParents[j] < 0 ? Eigen::Vector3d(Eigen::Vector3d::Zero()) : Eigen::Vector3d(p[smpl22::kParents[j]] + smpl22::kTargetOffsets[j]);
-    double lowest = INFINITY;
-    for (const Eigen::Vector3d& x : p) lowest = std::min(lowest, x.y());
-    for (Eigen::Vector3d& x : p) x.y() -= lowest;
-    return p;
-}
-
-// The rest pose rotated by `pose` about the pelvis, then displaced by offset(t) at t = frame / 20 s.
-template <class Offset>
-JointSequence rigid_motion(int frames, const Eigen::Matrix3d& pose, Offset offset) {
-    const auto rest = rest_pose();
-    JointSequence m(frames, smpl22::kNumJoints, smpl22::kFps);
-    for (int f = 0; f < frames; ++f)
-        for (int j = 0; j < smpl22::kNumJoints; ++j)
-            m.at(f, j) = rest[0] + pose * (rest[j] - rest[0]) + offset(f / smpl22::kFps);
-    return m;
-}
-
-double descriptor(const MotionDescriptors& d, const std::string& name) {
-    for (size_t i = 0; i < kNumMotionDescriptors; ++i)
-        if (name == kMotionDescriptorNames[i]) return d[i];
-    ADD_FAILURE() << "no descriptor " << name;
-    return NAN;
-}
-
-TEST(MotionDescriptors, WalkingPaceTranslationOfAnUprightBody) {
-    const MotionDescriptors d = describe_motion(rigid_motion(60, Eigen::Matrix3d::Identity(),
-                                                             [](double t) { return Eigen::Vector3d(0, 0, 1.2 * t); }));
-    EXPECT_NEAR(descriptor(d, "root_speed_m_s"), 1.2, 1e-9);
-    EXPECT_NEAR(descriptor(d, "foot_speed_m_s"), 1.2, 1e-9);
-    EXPECT_NEAR(descriptor(d, "wrist_speed_m_s"), 0.0, 1e-9);  // relative to the pelvis
-    EXPECT_NEAR(descriptor(d, "pelvis_height_sd_m"), 0.0, 1e-9);
-    EXPECT_NEAR(descriptor(d, "root_vertical_speed_sd_m_s"), 0.0, 1e-9);
-    EXPECT_NEAR(descriptor(d, "climb_rate_m_s"), 0.0, 1e-9);
-    EXPECT_EQ(descriptor(d, "airborne_fraction"), 0.0);
-    // Upright: legs straight under the hips, trunk vertical, head about 0.5 m over the pelvis, pelvis about 0.9 m up.
-    EXPECT_LT(descriptor(d, "thigh_tilt_rad"), 0.1);
-    EXPECT_LT(descriptor(d, "knee_flexion_rad"), 0.1);
-    EXPECT_LT(descriptor(d, "trunk_tilt_rad"), 0.15);
-    EXPECT_GT(descriptor(d, "head_above_pelvis_m"), 0.4);
-    EXPECT_NEAR(descriptor(d, "pelvis_height_m"), 0.9, 0.1);
-}
-
-TEST(MotionDescriptors, LyingBodyHasItsHeadAtPelvisHeight) {
-    // Rotated -90 degrees about X: the head points along -Z, the face up. The rest skeleton carries its head
-    // about 0.1 m forward of the spine, which lying on the back turns into height.
-    const Eigen::Matrix3d on_back = Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
-    const MotionDescriptors d = describe_motion(rigid_motion(40, on_back, [](double) { return Eigen::Vector3d::Zero(); }));
-    EXPECT_NEAR(descriptor(d, "head_above_pelvis_m"), 0.0, 0.15);
-    EXPECT_NEAR(descriptor(d, "trunk_tilt_rad"), M_PI / 2, 0.15);
-    EXPECT_NEAR(descriptor(d, "thigh_tilt_rad"), M_PI / 2, 0.1);
-    EXPECT_NEAR(descriptor(d, "root_speed_m_s"), 0.0, 1e-12);
-}
-
-TEST(MotionDescriptors, SteadyClimbIsNotFlight) {
-    const MotionDescriptors d = describe_motion(rigid_motion(80, Eigen::Matrix3d::Identity(),
-                                                             [](double t) { return Eigen::Vector3d(0, 0.2 * t, 0.4 * t); }));
-    EXPECT_NEAR(descriptor(d, "climb_rate_m_s"), 0.2, 1e-9);
-    EXPECT_NEAR(descriptor(d, "root_vertical_speed_sd_m_s"), 0.0, 1e-9);
-    EXPECT_EQ(descriptor(d, "airborne_fraction"), 0.0);
-    // Going down the same slope: the sign tells stairs down from up.
-    const MotionDescriptors down = describe_motion(rigid_motion(80, Eigen::Matrix3d::Identity(),
-                                                                [](double t) { return Eigen::Vector3d(0, 1.0 - 0.2 * t, 0.4 * t); }));
-    EXPECT_NEAR(descriptor(down, "climb_rate_m_s"), -0.2, 1e-9);
-}
-
-TEST(MotionDescriptors, JumpIsAirborneForItsFlightFrames) {
-    // 60 frames on the floor but frames 20..29, 0.3 m up: 10 of 60 frames in flight.
-    const MotionDescriptors d = describe_motion(rigid_motion(60, Eigen::Matrix3d::Identity(), [](double t) {
-        const int f = static_cast<int>(std::lround(t * smpl22::kFps));
-        return Eigen::Vector3d(0, f >= 20 && f < 30 ? 0.3 : 0.0, 0);
-    }));
-    EXPECT_NEAR(descriptor(d, "airborne_fraction"), 10.0 / 60.0, 1e-12);
-    EXPECT_NEAR(descriptor(d, "climb_rate_m_s"), 0.0, 0.02);
-}
-
-TEST(MotionDescriptors, RefusesTooFewFrames) {
-    EXPECT_THROW(describe_motion(JointSequence(2, smpl22::kNumJoints, 20.0)), Error);
-}
 
 // An example whose descriptors are all `value` but descriptor 0, which is `x`.
 ActivityExample example(const std::string& activity, const std::string& subject, double x, double value = 0) {

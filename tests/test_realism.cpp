@@ -1,14 +1,19 @@
 // The realism model (imu/realism) through the whole bodies/IMU stage: off is the ideal sensor to the byte, a
 // tempo of 1 is the identity, a static body reads gravity only whatever the attachment, the tilt and the tempo
-// are the ones drawn, landings make the attachment ring; presets and TOML files are read strictly.
+// are the ones drawn, landings make the attachment ring; presets and TOML files are read strictly. And realism.cpp
+// on its own: what every preset turns on, the draws' distributions, validation naming the key, the JSON form
+// read back as a TOML file, and .toml paths.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
+#include <functional>
 
 #include "body/procedural_body.hpp"
 #include "core/error.hpp"
+#include "imu/realism.hpp"
 #include "imu/virtual_imu.hpp"
+#include "test_util.hpp"
 #include "motion/skeleton.hpp"
 
 using namespace t2imu;
@@ -147,4 +152,101 @@ TEST(Realism, PresetsAndTomlFilesAreReadStrictly) {
     o.realism = realism_preset("sisfall");
     o.noise = parse_noise_model("smartphone");
     EXPECT_THROW(o.validate(), Error);  // two device models
+}
+
+namespace {
+std::string realism_error(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "no error";
+}
+bool mentions(const std::string& m, const std::string& part) { return m.find(part) != std::string::npos; }
+}  // namespace
+
+TEST(Realism, PresetsTurnOnOnlyTiltAndTheirOwnDevice) {
+    // realism.hpp: "none" is the ideal sensor; landings, soft tissue and tempo are off in every preset; each
+    // other preset uses the device model of the same name; the calibrated ones spread the tilt over recordings.
+    EXPECT_EQ(realism_preset_names(), (std::vector<std::string>{"none", "sisfall", "umafall", "hugadb", "smartphone"}));
+    const RealismModel none = realism_preset("none");
+    EXPECT_EQ(none.tilt_deg, 0);
+    EXPECT_EQ(none.tilt_sd_deg, 0);
+    EXPECT_EQ(none.device, "none");
+    for (const std::string& name : realism_preset_names()) {
+        const RealismModel m = realism_preset(name);
+        EXPECT_EQ(m.name, name);
+        EXPECT_EQ(m.device, name);
+        EXPECT_FALSE(m.tissue.enabled()) << name;
+        EXPECT_EQ(m.impact_gain, 0) << name;
+        EXPECT_EQ(m.tempo_sd, 0) << name;
+        EXPECT_NO_THROW(parse_noise_model(m.device)) << name;
+    }
+    EXPECT_GT(realism_preset("sisfall").tilt_sd_deg, 0);
+    EXPECT_GT(realism_preset("umafall").tilt_sd_deg, 0);
+    const std::string m = realism_error([] { realism_preset("sisfal"); });
+    EXPECT_TRUE(mentions(m, "--realism") && mentions(m, "sisfal")) << m;
+}
+
+TEST(Realism, DrawsFollowTheModelsDistributions) {
+    RealismModel m;
+    m.tilt_deg = 7.5;
+    EXPECT_EQ(draw_tilt_deg(m, 1), 7.5);  // no spread: the mean itself
+    EXPECT_EQ(draw_tempo(m, 1), 1.0);     // no tempo spread: the motion as it is
+    m.tilt_sd_deg = 10;
+    double sum = 0, sum2 = 0;
+    const int n = 4000;
+    for (int seed = 0; seed < n; ++seed) {
+        const double t = draw_tilt_deg(m, static_cast<uint64_t>(seed));
+        sum += t, sum2 += t * t;
+    }
+    const double mean = sum / n, sd = std::sqrt(sum2 / n - mean * mean);
+    EXPECT_NEAR(mean, 7.5, 4 * 10 / std::sqrt(double(n)));
+    EXPECT_NEAR(sd, 10, 0.5);
+}
+
+TEST(Realism, ValidationNamesTheKeyOutOfRange) {
+    const std::pair<const char*, std::function<void(RealismModel&)>> cases[] = {
+        {"tilt_deg", [](RealismModel& m) { m.tilt_deg = 91; }},
+        {"tilt_deg", [](RealismModel& m) { m.tilt_deg = NAN; }},
+        {"tilt_sd_deg", [](RealismModel& m) { m.tilt_sd_deg = -1; }},
+        {"impact_gain", [](RealismModel& m) { m.impact_gain = 11; }},
+        {"impact_ms", [](RealismModel& m) { m.impact_ms = 4; }},
+        {"tempo_sd", [](RealismModel& m) { m.tempo_sd = 0.6; }},
+    };
+    for (const auto& [key, spoil] : cases) {
+        RealismModel m;
+        EXPECT_NO_THROW(m.validate("mine.toml"));
+        spoil(m);
+        const std::string e = realism_error([&] { m.validate("mine.toml"); });
+        EXPECT_TRUE(mentions(e, "mine.toml") && mentions(e, key)) << key << ": " << e;
+    }
+    const std::string e = realism_error([] { parse_realism_toml("tilt_deg = \"steep\"\n", "typed.toml"); });
+    EXPECT_TRUE(mentions(e, "typed.toml") && mentions(e, "tilt_deg") && mentions(e, "a number")) << e;
+}
+
+TEST(Realism, JsonFormReadsBackAsTheSameModel) {
+    RealismModel m = realism_preset("umafall");
+    m.tilt_deg = -4.5;
+    m.tissue = {9, 0.4};
+    m.impact_gain = 0.8;
+    m.impact_ms = 30;
+    m.tempo_sd = 0.1;
+    const nlohmann::json j = m.to_json();
+    // Every key but the name as a TOML file, from the "none" base: the same model.
+    std::string toml;
+    for (const auto& [key, value] : j.items())
+        if (key != "name") toml += key + " = " + value.dump() + "\n";
+    const std::string dir = test::scratch_dir("realism_json");
+    const std::string path = dir + "/model.toml";
+    std::ofstream(path) << toml;
+    const RealismModel back = parse_realism(path);
+    EXPECT_EQ(back.name, path);
+    nlohmann::json expected = j, got = back.to_json();
+    expected.erase("name");
+    got.erase("name");
+    EXPECT_EQ(got, expected) << toml;
+    const std::string e = realism_error([&] { parse_realism(dir + "/absent.toml"); });
+    EXPECT_TRUE(mentions(e, dir + "/absent.toml")) << e;
 }

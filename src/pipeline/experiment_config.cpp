@@ -11,14 +11,15 @@ namespace t2imu {
 
 namespace {
 
-uint64_t read_seed(TomlSection& s, const char* key, uint64_t value) {
+// `field`: the key's dotted name, for the message (which names the file, as every config error does).
+uint64_t read_seed(TomlSection& s, const char* key, uint64_t value, const std::string& path, const std::string& field) {
     int64_t v = static_cast<int64_t>(value);
     s.read(key, v);
-    if (v < 0) throw Error("config", key, "a seed >= 0", std::to_string(v));
+    if (v < 0) throw Error(path, field, "a seed >= 0", std::to_string(v));
     return static_cast<uint64_t>(v);
 }
 
-void read_synth(TomlSection s, SynthOptions& o) {
+void read_synth(TomlSection s, SynthOptions& o, const std::string& path) {
     s.read("samples_per_prompt", o.samples_per_prompt);
     s.read("bodies", o.bodies);
     s.read("noise", o.noise);
@@ -26,11 +27,15 @@ void read_synth(TomlSection s, SynthOptions& o) {
     s.read("vocab", o.vocab);
     std::string sampler = sampler_name(o.sampling.sampler);
     s.read("sampler", sampler);
-    o.sampling.sampler = parse_sampler(sampler, "synth.sampler");
+    try {
+        o.sampling.sampler = parse_sampler(sampler, "synth.sampler");
+    } catch (const Error&) {
+        throw Error(path, "synth.sampler", "ddpm, ddim or dpmpp", sampler);
+    }
     s.read("steps", o.sampling.steps);
     s.read("guidance", o.sampling.guidance);
     s.read("batch", o.sampling.batch);
-    o.sampling.seed = read_seed(s, "seed", o.sampling.seed);
+    o.sampling.seed = read_seed(s, "seed", o.sampling.seed, path, "synth.seed");
     s.read("seconds", o.seconds);
     s.read("rate_hz", o.rate_hz);
     s.read("filter", o.filter);
@@ -41,9 +46,9 @@ void read_synth(TomlSection s, SynthOptions& o) {
     s.refuse_unknown_keys();
 }
 
-void read_har(TomlSection s, HarOptions& h, WindowOptions& w) {
+void read_har(TomlSection s, HarOptions& h, WindowOptions& w, const std::string& path) {
     s.read("repeats", h.repeats);
-    h.seed = read_seed(s, "seed", h.seed);
+    h.seed = read_seed(s, "seed", h.seed, path, "har.seed");
     s.read("max_epochs", h.max_epochs);
     s.read("patience", h.patience);
     s.read("batch", h.batch);
@@ -55,13 +60,13 @@ void read_har(TomlSection s, HarOptions& h, WindowOptions& w) {
     s.refuse_unknown_keys();
 }
 
-void read_lacc(TomlSection s, ExperimentLacc& l) {
+void read_lacc(TomlSection s, ExperimentLacc& l, const std::string& path) {
     s.read("before", l.before);
     s.read("after", l.after);
     s.read("dataset", l.dataset);
     s.read("split", l.split);
     s.read("vocab", l.vocab);
-    l.seed = read_seed(s, "seed", l.seed);
+    l.seed = read_seed(s, "seed", l.seed, path, "lacc.seed");
     s.read("tau", l.tau);
     s.refuse_unknown_keys();
 }
@@ -86,7 +91,7 @@ ExperimentConfig read_experiment_config(const std::string& path) {
     const toml::table doc = parse_toml_file(path);
     TomlSection top(doc, path, "");
     ExperimentConfig c;
-    read_synth(top.table("synth"), c.synth);
+    read_synth(top.table("synth"), c.synth, path);
     try {
         parse_realism(c.synth.realism);
     } catch (const Error& e) {
@@ -116,7 +121,7 @@ ExperimentConfig read_experiment_config(const std::string& path) {
         s.refuse_unknown_keys();
         c.real_sets.push_back(r);
     }
-    read_har(top.table("har"), c.har, c.windows);
+    read_har(top.table("har"), c.har, c.windows, path);
     // Checked now, not when the first training starts after the syntheses (the messages name the options).
     try {
         c.har.validate();
@@ -127,9 +132,9 @@ ExperimentConfig read_experiment_config(const std::string& path) {
     TomlSection features = top.table("features");
     features.read("tsne_points", c.tsne_points);
     features.read("perplexity", c.tsne.perplexity);
-    c.feature_seed = read_seed(features, "seed", c.feature_seed);
+    c.feature_seed = read_seed(features, "seed", c.feature_seed, path, "features.seed");
     features.refuse_unknown_keys();
-    read_lacc(top.table("lacc"), c.lacc);
+    read_lacc(top.table("lacc"), c.lacc, path);
     top.refuse_unknown_keys();
     check_names(c, path);
     return c;

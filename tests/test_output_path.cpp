@@ -1,0 +1,91 @@
+// Output paths checked before work: missing folders are proven creatable and removed again, a file in the way
+// and an empty path are refused naming the option; make_directories; the partial-folder name; stale partial
+// folders of dead processes removed, a live process's kept.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.hpp"
+#include "core/output_path.hpp"
+#include "test_util.hpp"
+
+using namespace t2imu;
+namespace fs = std::filesystem;
+
+namespace {
+template <class F> std::string error_of(F f) {
+    try {
+        f();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "no Error thrown";
+    return "";
+}
+bool has(const std::string& message, const std::string& part) { return message.find(part) != std::string::npos; }
+}  // namespace
+
+TEST(OutputPath, MissingFoldersAreProvenAndLeftUnmade) {
+    const std::string dir = test::scratch_dir("output_path_missing");
+    EXPECT_NO_THROW(check_output_path(dir + "/a/b/c/out.csv", "--out"));
+    EXPECT_FALSE(fs::exists(dir + "/a"));  // nothing left behind
+    EXPECT_NO_THROW(check_output_path(dir + "/existing.csv", "--out"));
+    EXPECT_NO_THROW(check_output_path(dir + "/run/", "--out"));  // a folder to be made, with a trailing slash
+    EXPECT_FALSE(fs::exists(dir + "/run"));
+}
+
+TEST(OutputPath, AFileInTheWayAndAnEmptyPathAreRefused) {
+    const std::string dir = test::scratch_dir("output_path_file");
+    std::ofstream(dir + "/file.txt") << "x";
+    std::string m = error_of([&] { check_output_path(dir + "/file.txt/sub/out.csv", "--report"); });
+    EXPECT_TRUE(has(m, "--report") && has(m, dir + "/file.txt") && has(m, "is a file")) << m;
+    m = error_of([&] { check_output_path("", "--out"); });
+    EXPECT_TRUE(has(m, "--out") && has(m, "an output path")) << m;
+    m = error_of([&] { make_directories(dir + "/file.txt/sub", "output folder"); });
+    EXPECT_TRUE(has(m, dir + "/file.txt/sub") && has(m, "output folder")) << m;
+    EXPECT_EQ(fs::file_size(dir + "/file.txt"), 1u);  // untouched
+}
+
+TEST(OutputPath, MakeDirectoriesCreatesNestedFolders) {
+    const std::string dir = test::scratch_dir("output_path_make");
+    make_directories(dir + "/x/y/z", "jobs");
+    EXPECT_TRUE(fs::is_directory(dir + "/x/y/z"));
+    EXPECT_NO_THROW(make_directories(dir + "/x/y/z", "jobs"));  // existing is fine
+}
+
+TEST(OutputPath, PartialPathIsAbsoluteWithThisProcessId) {
+    const std::string dir = test::scratch_dir("output_path_partial");
+    const std::string suffix = ".partial-" + std::to_string(::getpid());
+    EXPECT_EQ(partial_path_for(dir + "/out"), dir + "/out" + suffix);
+    EXPECT_EQ(partial_path_for(dir + "/./sub/../out/"), dir + "/out" + suffix);  // normalised, no trailing slash
+    const fs::path cwd = fs::current_path();
+    fs::current_path(dir);
+    EXPECT_EQ(partial_path_for("rel"), (fs::path(dir) / "rel").string() + suffix);
+    fs::current_path(cwd);
+}
+
+TEST(OutputPath, RemovesOnlyStalePartialsOfThisPath) {
+    const std::string dir = test::scratch_dir("output_path_stale");
+    // A process id that is surely gone: a child that has exited and been reaped.
+    const pid_t child = fork();
+    if (child == 0) _exit(0);
+    ASSERT_GT(child, 0);
+    waitpid(child, nullptr, 0);
+    const std::string dead = dir + "/out.partial-" + std::to_string(child);
+    const std::string live = dir + "/out.partial-" + std::to_string(::getpid());
+    const std::string other = dir + "/other.partial-" + std::to_string(child);
+    const std::string odd = dir + "/out.partial-abc";
+    for (const std::string& p : {dead, live, other, odd}) {
+        fs::create_directories(p + "/inner");
+        std::ofstream(p + "/inner/f.txt") << "x";
+    }
+    remove_stale_partials(dir + "/out");
+    EXPECT_FALSE(fs::exists(dead));
+    EXPECT_TRUE(fs::exists(live));   // a live process (this one)
+    EXPECT_TRUE(fs::exists(other));  // another output's partial
+    EXPECT_TRUE(fs::exists(odd));    // not a process id
+}

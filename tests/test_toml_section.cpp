@@ -1,0 +1,137 @@
+// Strict TOML reading: typed reads, absent keys leaving defaults, required keys, arrays of strings, sub-tables
+// and arrays of tables with dotted names in messages, unknown keys refused by name, parser errors naming the
+// source.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/error.hpp"
+#include "core/toml_section.hpp"
+#include "test_util.hpp"
+
+using namespace t2imu;
+
+namespace {
+// The message of the Error `f` throws ("" and a test failure when it throws none).
+template <class F> std::string error_of(F f) {
+    try {
+        f();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "no Error thrown";
+    return "";
+}
+bool has(const std::string& message, const std::string& part) { return message.find(part) != std::string::npos; }
+}  // namespace
+
+TEST(TomlSection, ReadsTypedValuesAndLeavesAbsentOnesAlone) {
+    const toml::table doc = parse_toml_text("name = \"walk\"\nsteps = 50\nrate = 20.5\nfilter = true\n", "cfg.toml");
+    TomlSection s(doc, "cfg.toml", "");
+    std::string name;
+    int steps = 0;
+    double rate = 0, missing = 7.25;
+    bool filter = false;
+    s.read("name", name);
+    s.read("steps", steps);
+    s.read("rate", rate);
+    s.read("filter", filter);
+    s.read("missing", missing);
+    EXPECT_EQ(name, "walk");
+    EXPECT_EQ(steps, 50);
+    EXPECT_DOUBLE_EQ(rate, 20.5);
+    EXPECT_TRUE(filter);
+    EXPECT_DOUBLE_EQ(missing, 7.25);  // absent: unchanged
+    EXPECT_NO_THROW(s.refuse_unknown_keys());
+}
+
+TEST(TomlSection, WrongTypesAreRefusedNamingTheField) {
+    const toml::table doc = parse_toml_text("[synth]\nsteps = 4.9e47\nname = 3\nflag = \"yes\"\nrate = \"fast\"\n", "cfg.toml");
+    TomlSection top(doc, "cfg.toml", "");
+    TomlSection synth = top.table("synth");
+    int steps = 0;
+    std::string name;
+    bool flag = false;
+    double rate = 0;
+    // An integer field takes only a TOML integer (a float out of range must not be converted).
+    std::string m = error_of([&] { synth.read("steps", steps); });
+    EXPECT_TRUE(has(m, "cfg.toml") && has(m, "synth.steps") && has(m, "an integer")) << m;
+    m = error_of([&] { synth.read("name", name); });
+    EXPECT_TRUE(has(m, "synth.name") && has(m, "a string")) << m;
+    m = error_of([&] { synth.read("flag", flag); });
+    EXPECT_TRUE(has(m, "synth.flag") && has(m, "true or false")) << m;
+    m = error_of([&] { synth.read("rate", rate); });
+    EXPECT_TRUE(has(m, "synth.rate") && has(m, "a number")) << m;
+    EXPECT_EQ(steps, 0);  // nothing assigned on failure
+}
+
+TEST(TomlSection, RequiredKeysAndArraysOfStrings) {
+    const toml::table doc = parse_toml_text("positions = [\"waist\", \"wrist\"]\nmixed = [\"a\", 2]\nnot_array = \"a\"\n", "c.toml");
+    TomlSection s(doc, "c.toml", "");
+    std::vector<std::string> positions = {"old"}, other;
+    s.read("positions", positions);
+    EXPECT_EQ(positions, (std::vector<std::string>{"waist", "wrist"}));
+    std::string m = error_of([&] { s.read("mixed", other); });
+    EXPECT_TRUE(has(m, "mixed") && has(m, "an array of strings")) << m;
+    m = error_of([&] { s.read("not_array", other); });
+    EXPECT_TRUE(has(m, "not_array") && has(m, "an array of strings")) << m;
+    std::string model;
+    m = error_of([&] { s.require("model", model); });
+    EXPECT_TRUE(has(m, "c.toml") && has(m, "model") && has(m, "required")) << m;
+}
+
+TEST(TomlSection, SubTablesAndArraysOfTablesNameTheirPath) {
+    const toml::table doc = parse_toml_text(
+        "scalar = 5\n"
+        "[har]\nepochs = 3\n[har.optimiser]\nlr = 0.001\n"
+        "[[sources]]\nname = \"mdm\"\n[[sources]]\nname = \"retrieval\"\ntypo = 1\n",
+        "exp.toml");
+    TomlSection top(doc, "exp.toml", "");
+    TomlSection har = top.table("har");
+    int epochs = 0;
+    har.read("epochs", epochs);
+    EXPECT_EQ(epochs, 3);
+    TomlSection opt = har.table("optimiser");
+    double lr = 0;
+    opt.read("lr", lr);
+    EXPECT_DOUBLE_EQ(lr, 0.001);
+    // har's own keys are all read: its sub-table counts as read.
+    EXPECT_NO_THROW(har.refuse_unknown_keys());
+    // An absent table reads as empty: defaults stay.
+    TomlSection none = top.table("absent");
+    int kept = 9;
+    none.read("x", kept);
+    EXPECT_EQ(kept, 9);
+    EXPECT_NO_THROW(none.refuse_unknown_keys());
+    std::vector<TomlSection> sources = top.array_of_tables("sources");
+    ASSERT_EQ(sources.size(), 2u);
+    std::string name;
+    sources[1].read("name", name);
+    EXPECT_EQ(name, "retrieval");
+    std::string m = error_of([&] { sources[1].refuse_unknown_keys(); });
+    EXPECT_TRUE(has(m, "exp.toml") && has(m, "sources[1].typo") && has(m, "a known key")) << m;
+    // A scalar where a table is expected, and where an array of tables is.
+    m = error_of([&] { top.table("scalar"); });
+    EXPECT_TRUE(has(m, "scalar") && has(m, "a table")) << m;
+    m = error_of([&] { top.array_of_tables("scalar"); });
+    EXPECT_TRUE(has(m, "scalar") && has(m, "an array of tables")) << m;
+    // Every top-level key has now been named by a read.
+    EXPECT_NO_THROW(top.refuse_unknown_keys());
+}
+
+TEST(TomlSection, UnknownKeysAreRefusedByName) {
+    const toml::table doc = parse_toml_text("steps = 4\nstpes = 5\n", "typo.toml");
+    TomlSection s(doc, "typo.toml", "");
+    int steps = 0;
+    s.read("steps", steps);
+    const std::string m = error_of([&] { s.refuse_unknown_keys(); });
+    EXPECT_TRUE(has(m, "typo.toml") && has(m, "stpes")) << m;
+}
+
+TEST(TomlSection, ParseErrorsNameTheSource) {
+    std::string m = error_of([] { parse_toml_text("steps = = 4\n", "broken.toml"); });
+    EXPECT_TRUE(has(m, "broken.toml") && has(m, "toml")) << m;
+    const std::string dir = test::scratch_dir("toml_section");
+    m = error_of([&] { parse_toml_file(dir + "/absent.toml"); });
+    EXPECT_TRUE(has(m, dir + "/absent.toml")) << m;
+}
