@@ -36,6 +36,19 @@ TEST(Prompts, TenDistinctPromptsPerRealWorldClass) {
     expect_ten_per_class("realworld", {"walking", "running", "jumping", "sitting", "standing", "lying", "stairs_up", "stairs_down"});
 }
 
+// The paraphrase set (issue 25: text conditioning on unseen wording): the same classes, ten each, none of them a
+// prompt of the main set, and none in the captions' stock opening "a person".
+TEST(Prompts, ParaphraseSetIsFreshWordingForTheSameClasses) {
+    expect_ten_per_class("paraphrase", {"walking", "running", "jumping", "sitting", "standing", "lying", "stairs_up", "stairs_down"});
+    std::set<std::string> main_set;
+    for (const auto& [activity, prompt] : shipped_prompts()) main_set.insert(prompt);
+    for (const auto& [activity, prompt] : shipped_prompts("paraphrase")) {
+        EXPECT_FALSE(main_set.count(prompt)) << prompt;
+        EXPECT_NE(prompt.rfind("A person", 0), 0u) << prompt;
+        EXPECT_NE(prompt.rfind("The person", 0), 0u) << prompt;
+    }
+}
+
 // The real data sets' prompt sets use their own class names (as in their manifests), which the class map
 // then treats as it treats the real recordings.
 TEST(Prompts, RealDataSetsPromptSetsUseTheirOwnClassNames) {

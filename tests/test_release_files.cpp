@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "core/error.hpp"
-#include "har/release_files.hpp"
+#include "har/datasets/release_files.hpp"
 #include "test_util.hpp"
 
 using namespace t2imu;

@@ -96,6 +96,27 @@ TEST(SifEncoder, WeightsRareWordsAndRemovesTheCommonComponent) {
     EXPECT_NEAR(sif.embed("walk run").dot(sif.common_component()), 0.0, 1e-15);  // projected out
 }
 
+TEST(SifEncoder, NearestSentenceIsTheMostSimilarCaption) {
+    std::vector<float> values(4 * 100, 0.f);
+    values[0] = 1;              // the  -> e0
+    values[100 + 1] = 1;        // walk -> e1
+    values[200 + 2] = 1;        // run  -> e2
+    values[300 + 1] = 0.6f;     // jog  -> 0.6 e1 + 0.8 e2: nearer run than walk
+    values[300 + 2] = 0.8f;
+    const WordVectors v({"the", "walk", "run", "jog"}, values);
+    const SifEncoder sif(v);
+    const std::vector<std::string> corpus = {"the walk", "run", "walk"};
+    const std::vector<NearestSentence> n = nearest_sentences(sif, corpus, {"walk", "jog", "run run", "xyz"});
+    ASSERT_EQ(n.size(), 4u);
+    EXPECT_EQ(n[0].index, 2u);
+    EXPECT_DOUBLE_EQ(n[0].similarity, 1.0);
+    EXPECT_EQ(n[1].index, 1u);
+    EXPECT_NEAR(n[1].similarity, 0.8, 1e-3);  // cos(jog, run), float16-stored vectors
+    EXPECT_EQ(n[2].index, 1u);
+    EXPECT_EQ(n[3].similarity, 0.0);  // no known word: similar to nothing
+    EXPECT_EQ(nearest_sentences(sif, {}, {"walk"})[0].index, 0u);
+}
+
 TEST(SifEncoder, GloVeSimilaritiesRankActivitiesSensibly) {
     const std::string vocab = test::source_dir() + "/cache/text/glove-100k.safetensors";
     if (!std::filesystem::exists(vocab)) GTEST_SKIP() << "cache/text/glove-100k.safetensors absent (scripts/setup.sh makes it)";

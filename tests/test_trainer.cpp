@@ -45,6 +45,38 @@ TEST(Trainer, ConfigIsStrict) {
     EXPECT_THROW(read_train_config(dir + "/bad.toml"), Error);
     std::ofstream(dir + "/bad2.toml") << read_file_text(good) << "[loss2]\n";
     EXPECT_THROW(read_train_config(dir + "/bad2.toml"), Error);
+    // Each refusal names the file and the dotted field.
+    const auto refused_field = [&](const std::string& extra) {
+        std::ofstream(dir + "/r.toml") << read_file_text(good) << extra;
+        try {
+            read_train_config(dir + "/r.toml");
+        } catch (const Error& e) {
+            const std::string m = e.what();
+            return m.find(dir + "/r.toml") != std::string::npos ? m : "(file not named) " + m;
+        }
+        return std::string("accepted");
+    };
+    EXPECT_NE(refused_field("lambda_vel = -1.0\n").find("loss.lambda_vel"), std::string::npos);
+    EXPECT_NE(refused_field("lambda_pos = \"one\"\n").find("loss.lambda_pos"), std::string::npos);  // wrong type
+    const std::string text = read_file_text(good);
+    const auto replaced = [&](const std::string& from, const std::string& to) {
+        std::string t = text;
+        const size_t at = t.find(from);
+        EXPECT_NE(at, std::string::npos) << from;
+        if (at != std::string::npos) t.replace(at, from.size(), to);
+        std::ofstream(dir + "/r2.toml") << t;
+        try {
+            read_train_config(dir + "/r2.toml");
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    EXPECT_NE(replaced("learning_rate = 1e-3\n", "learning_rate = 0.0\n").find("train.learning_rate"), std::string::npos);
+    EXPECT_NE(replaced("[train]\n", "[train]\ncond_dropout = 1.5\n").find("train.cond_dropout"), std::string::npos);
+    EXPECT_NE(replaced("seed = 3\n", "seed = -3\n").find("train.seed"), std::string::npos);
+    EXPECT_NE(replaced("acc_space = \"joints\"", "acc_space = \"pose\"").find("loss.acc_space"), std::string::npos);
+    EXPECT_NE(replaced("num_heads = 2\n", "num_heads = 3\n").find("model.num_heads"), std::string::npos);
 }
 
 TEST(Trainer, EmaDecayWarmsUpSoTheInitialisationIsForgotten) {

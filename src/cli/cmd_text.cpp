@@ -1,10 +1,16 @@
-// t2imu text vocab | similarity: the default text encoder's word vectors and the caption similarity.
+// t2imu text vocab | similarity | nearest: the default text encoder's word vectors, caption similarity, and how
+// near a prompt set's wording comes to a caption corpus.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <set>
 
 #include "cli/command.hpp"
+#include "core/csv.hpp"
+#include "core/error.hpp"
+#include "data/captions.hpp"
+#include "text/prompt_set.hpp"
 #include "text/sentence_similarity.hpp"
 #include "text/word_tokenizer.hpp"
 #include "text/word_vectors.hpp"
@@ -73,10 +79,56 @@ static void add_similarity(CLI::App& text) {
     });
 }
 
+static void add_nearest(CLI::App& text) {
+    auto* cmd = text.add_subcommand("nearest", "for each prompt, the most similar caption of a corpus (SIF cosine): how unlike the training captions a prompt set is");
+    static std::string vocab, corpus, prompts, out;
+    cmd->add_option("--vocab", vocab, "the converted vocabulary")->required()->check(CLI::ExistingFile);
+    cmd->add_option("--corpus", corpus, "caption files: a HumanML3D texts/ folder (every *.txt) or one file")->required()->check(CLI::ExistingPath);
+    cmd->add_option("--prompts", prompts, "prompt set (activity<TAB>prompt)")->required()->check(CLI::ExistingFile);
+    cmd->add_option("--out", out, "CSV: activity,prompt,nearest_caption,similarity");
+    cmd->callback([] {
+        std::vector<std::string> files;
+        if (std::filesystem::is_directory(corpus)) {
+            for (const auto& e : std::filesystem::directory_iterator(corpus))
+                if (e.path().extension() == ".txt") files.push_back(e.path().string());
+        } else {
+            files.push_back(corpus);
+        }
+        std::sort(files.begin(), files.end());
+        std::vector<std::string> captions;
+        for (const std::string& f : files)
+            for (const CaptionLine& c : read_caption_file(f)) captions.push_back(c.caption);
+        if (captions.empty()) throw Error(corpus, "captions", "at least one caption");
+        const std::vector<Prompt> set = read_prompt_set(prompts);
+        std::vector<std::string> queries;
+        for (const Prompt& p : set) queries.push_back(p.text);
+        const WordVectors v = WordVectors::load(vocab);
+        SifEncoder sif(v);
+        sif.fit_common_component(captions);
+        const std::vector<NearestSentence> nearest = nearest_sentences(sif, captions, queries);
+        CsvTable table;
+        table.header = {"activity", "prompt", "nearest_caption", "similarity"};
+        std::vector<double> similarity;
+        for (size_t i = 0; i < set.size(); ++i) {
+            char buf[32];
+            std::snprintf(buf, sizeof buf, "%.4f", nearest[i].similarity);
+            table.rows.push_back({set[i].activity, set[i].text, captions[nearest[i].index], buf});
+            similarity.push_back(nearest[i].similarity);
+        }
+        if (!out.empty()) write_csv(out, table);
+        std::sort(similarity.begin(), similarity.end());
+        const double median = similarity[similarity.size() / 2];
+        const long near_copies = std::count_if(similarity.begin(), similarity.end(), [](double s) { return s >= 0.9; });
+        std::printf("%s: %zu prompts against %zu captions: nearest-caption similarity median %.3f, min %.3f, max %.3f; %ld at 0.9 or above\n",
+                    prompts.c_str(), set.size(), captions.size(), median, similarity.front(), similarity.back(), near_copies);
+    });
+}
+
 static CommandRegistrar registrar([](CLI::App& root) {
     CLI::App& text = command_group(root, "text", "text encoders: word vectors, sentence similarity");
     add_vocab(text);
     add_similarity(text);
+    add_nearest(text);
 });
 
 }  // namespace t2imu::cli

@@ -8,11 +8,11 @@
 #include <random>
 #include <set>
 #include <sstream>
-#include <toml++/toml.h>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/npy.hpp"
+#include "core/toml_section.hpp"
 #include "data/hml3d_dataset.hpp"
 #include "diffusion/gaussian_diffusion.hpp"
 #include "diffusion/losses.hpp"
@@ -28,84 +28,91 @@ namespace fs = std::filesystem;
 
 namespace {
 
-template <class T> void take(const toml::table& t, const char* key, T& value, std::set<std::string>& seen, const std::string& section) {
-    seen.insert(key);
-    if (const toml::node* n = t.get(key)) {
-        const auto v = n->value<T>();
-        if (!v) throw Error("config", section + "." + key, "a value of the right type");
-        value = *v;
+// A value of `section` that must lie in [lo, hi] (or above lo when `open_low`); NaN fails every comparison.
+void check_range(const std::string& path, const std::string& field, double v, double lo, double hi, bool open_low = false) {
+    if (!(open_low ? v > lo : v >= lo) || !(v <= hi)) {
+        char range[96];
+        std::snprintf(range, sizeof range, "a number %s %g and at most %g", open_low ? "above" : "from", lo, hi);
+        throw Error(path, field, range, std::to_string(v));
     }
-}
-
-void refuse_unknown(const toml::table& t, const std::set<std::string>& known, const std::string& section, const std::string& path) {
-    for (const auto& [k, v] : t)
-        if (!known.count(std::string(k.str()))) throw Error(path, section + "." + std::string(k.str()), "a known key");
 }
 
 }  // namespace
 
+void TrainConfig::validate(const std::string& path) const {
+    if (out.empty()) throw Error(path, "out", "the model folder to write (required)");
+    if (dataset.empty()) throw Error(path, "data.dataset", "a dataset folder (required)");
+    if (vocab.empty()) throw Error(path, "data.vocab", "the GloVe vocabulary (required)");
+    const double big = 1e9;
+    check_range(path, "model.latent_dim", static_cast<double>(mdm.latent_dim), 1, 65536);
+    check_range(path, "model.ff_size", static_cast<double>(mdm.ff_size), 1, 1 << 20);
+    check_range(path, "model.num_layers", static_cast<double>(mdm.num_layers), 1, 256);
+    check_range(path, "model.num_heads", static_cast<double>(mdm.num_heads), 1, static_cast<double>(mdm.latent_dim));
+    if (mdm.latent_dim % mdm.num_heads != 0) throw Error(path, "model.num_heads", "a divisor of model.latent_dim", std::to_string(mdm.num_heads));
+    check_range(path, "model.dropout", mdm.dropout, 0, 0.99);
+    check_range(path, "text.model_dim", static_cast<double>(text.model_dim), 1, 65536);
+    check_range(path, "text.layers", static_cast<double>(text.layers), 1, 256);
+    check_range(path, "text.heads", static_cast<double>(text.heads), 1, static_cast<double>(text.model_dim));
+    if (text.model_dim % text.heads != 0) throw Error(path, "text.heads", "a divisor of text.model_dim", std::to_string(text.heads));
+    check_range(path, "text.ff_size", static_cast<double>(text.ff_size), 1, 1 << 20);
+    check_range(path, "text.dropout", text.dropout, 0, 0.99);
+    check_range(path, "diffusion.steps", diffusion_steps, 2, 100000);
+    check_range(path, "train.batch", batch, 1, 1 << 20);
+    check_range(path, "train.steps", static_cast<double>(steps), 1, big);
+    check_range(path, "train.learning_rate", learning_rate, 0, 1, true);
+    check_range(path, "train.weight_decay", weight_decay, 0, 1);
+    check_range(path, "train.cond_dropout", cond_dropout, 0, 0.99);
+    check_range(path, "train.ema_decay", ema_decay, 0, 0.999999);
+    check_range(path, "train.save_every", static_cast<double>(save_every), 1, big);
+    check_range(path, "train.log_every", static_cast<double>(log_every), 1, big);
+    check_range(path, "loss.lambda_pos", lambda_pos, 0, big);
+    check_range(path, "loss.lambda_vel", lambda_vel, 0, big);
+    check_range(path, "loss.lambda_foot", lambda_foot, 0, big);
+    check_range(path, "loss.lambda_acc", lambda_acc, 0, big);
+    if (acc_space != "features" && acc_space != "joints") throw Error(path, "loss.acc_space", "features or joints", acc_space);
+}
+
 TrainConfig read_train_config(const std::string& path) {
-    toml::table doc;
-    try {
-        doc = toml::parse_file(path);
-    } catch (const toml::parse_error& e) {
-        throw Error(path, "toml", "a valid TOML file", std::string(e.description()));
-    }
+    const toml::table doc = parse_toml_file(path);
+    TomlSection top(doc, path, "");
     TrainConfig c;
-    std::set<std::string> top = {"out", "data", "model", "text", "diffusion", "train", "loss"};
-    refuse_unknown(doc, top, "", path);
-    if (auto out = doc["out"].value<std::string>()) c.out = *out;
-    const auto section = [&](const char* name) { return doc[name].as_table() ? *doc[name].as_table() : toml::table{}; };
-    std::set<std::string> seen;
-    const toml::table data = section("data"), model = section("model"), text = section("text"), diffusion = section("diffusion"),
-                      train = section("train"), loss = section("loss");
-    take(data, "dataset", c.dataset, seen, "data");
-    take(data, "vocab", c.vocab, seen, "data");
-    take(data, "split", c.split, seen, "data");
-    refuse_unknown(data, seen, "data", path);
-    seen.clear();
-    take(model, "latent_dim", c.mdm.latent_dim, seen, "model");
-    take(model, "ff_size", c.mdm.ff_size, seen, "model");
-    take(model, "num_layers", c.mdm.num_layers, seen, "model");
-    take(model, "num_heads", c.mdm.num_heads, seen, "model");
-    take(model, "dropout", c.mdm.dropout, seen, "model");
-    refuse_unknown(model, seen, "model", path);
-    seen.clear();
-    take(text, "model_dim", c.text.model_dim, seen, "text");
-    take(text, "layers", c.text.layers, seen, "text");
-    take(text, "heads", c.text.heads, seen, "text");
-    take(text, "ff_size", c.text.ff_size, seen, "text");
-    take(text, "dropout", c.text.dropout, seen, "text");
-    refuse_unknown(text, seen, "text", path);
-    seen.clear();
-    int64_t steps = c.diffusion_steps;
-    take(diffusion, "steps", steps, seen, "diffusion");
-    c.diffusion_steps = static_cast<int>(steps);
-    refuse_unknown(diffusion, seen, "diffusion", path);
-    seen.clear();
-    int64_t batch = c.batch, seed = static_cast<int64_t>(c.seed);
-    take(train, "batch", batch, seen, "train");
-    take(train, "steps", c.steps, seen, "train");
-    take(train, "learning_rate", c.learning_rate, seen, "train");
-    take(train, "weight_decay", c.weight_decay, seen, "train");
-    take(train, "cond_dropout", c.cond_dropout, seen, "train");
-    take(train, "ema_decay", c.ema_decay, seen, "train");
-    take(train, "seed", seed, seen, "train");
-    take(train, "save_every", c.save_every, seen, "train");
-    take(train, "log_every", c.log_every, seen, "train");
-    refuse_unknown(train, seen, "train", path);
-    c.batch = static_cast<int>(batch);
+    top.read("out", c.out);
+    TomlSection data = top.table("data"), model = top.table("model"), text = top.table("text"), diffusion = top.table("diffusion"),
+                train = top.table("train"), loss = top.table("loss");
+    top.refuse_unknown_keys();
+    data.read("dataset", c.dataset);
+    data.read("vocab", c.vocab);
+    data.read("split", c.split);
+    model.read("latent_dim", c.mdm.latent_dim);
+    model.read("ff_size", c.mdm.ff_size);
+    model.read("num_layers", c.mdm.num_layers);
+    model.read("num_heads", c.mdm.num_heads);
+    model.read("dropout", c.mdm.dropout);
+    text.read("model_dim", c.text.model_dim);
+    text.read("layers", c.text.layers);
+    text.read("heads", c.text.heads);
+    text.read("ff_size", c.text.ff_size);
+    text.read("dropout", c.text.dropout);
+    diffusion.read("steps", c.diffusion_steps);
+    int64_t seed = 0;
+    train.read("batch", c.batch);
+    train.read("steps", c.steps);
+    train.read("learning_rate", c.learning_rate);
+    train.read("weight_decay", c.weight_decay);
+    train.read("cond_dropout", c.cond_dropout);
+    train.read("ema_decay", c.ema_decay);
+    train.read("seed", seed);
+    train.read("save_every", c.save_every);
+    train.read("log_every", c.log_every);
+    if (seed < 0) throw Error(path, "train.seed", "a whole number from 0", std::to_string(seed));
     c.seed = static_cast<uint64_t>(seed);
-    seen.clear();
-    take(loss, "lambda_pos", c.lambda_pos, seen, "loss");
-    take(loss, "lambda_vel", c.lambda_vel, seen, "loss");
-    take(loss, "lambda_foot", c.lambda_foot, seen, "loss");
-    take(loss, "lambda_acc", c.lambda_acc, seen, "loss");
-    take(loss, "acc_space", c.acc_space, seen, "loss");
-    refuse_unknown(loss, seen, "loss", path);
-    if (c.dataset.empty() || c.vocab.empty() || c.out.empty()) throw Error(path, "data", "out, data.dataset and data.vocab");
-    if (c.acc_space != "features" && c.acc_space != "joints") throw Error(path, "loss.acc_space", "features or joints", c.acc_space);
-    if (c.batch < 1 || c.steps < 1 || c.diffusion_steps < 2) throw Error(path, "train", "batch >= 1, steps >= 1, diffusion.steps >= 2");
+    loss.read("lambda_pos", c.lambda_pos);
+    loss.read("lambda_vel", c.lambda_vel);
+    loss.read("lambda_foot", c.lambda_foot);
+    loss.read("lambda_acc", c.lambda_acc);
+    loss.read("acc_space", c.acc_space);
+    for (const TomlSection* s : {&data, &model, &text, &diffusion, &train, &loss}) s->refuse_unknown_keys();
+    c.validate(path);
     return c;
 }
 

@@ -45,12 +45,17 @@ struct TrainConfig {
     int threads = 0;
     std::string device = "cpu";  // a torch device: cpu, cuda, cuda:1 (not in the TOML: where to train is not what to train)
     ProcessGroupEnv processes;   // data-parallel ranks (torchrun's variables; not in the TOML either)
+
+    // Throws Error naming `path` and the dotted field ("train.learning_rate") for a missing or out-of-range
+    // value: sizes from 1, heads dividing their width, rates and dropouts in [0, 1), lambdas from 0.
+    void validate(const std::string& path) const;
 };
 
 // TOML: [data] dataset, vocab, split; [model] latent_dim, ff_size, num_layers, num_heads, dropout;
 // [text] model_dim, layers, heads, ff_size, dropout; [diffusion] steps; [train] batch, steps, learning_rate,
 // weight_decay, cond_dropout, ema_decay, seed, save_every, log_every; [loss] lambda_pos, lambda_vel,
-// lambda_foot, lambda_acc, acc_space; `out` at the top level (the model folder). Unknown keys are refused.
+// lambda_foot, lambda_acc, acc_space; `out` at the top level (the model folder). Read strictly
+// (core/toml_section.hpp): unknown keys and wrong types are refused by name; then validate().
 TrainConfig read_train_config(const std::string& path);
 
 // The EMA decay after `step` updates of this run: min(max_decay, (1 + step) / (10 + step)). Without the

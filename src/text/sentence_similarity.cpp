@@ -41,4 +41,20 @@ double cosine_similarity(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
     return n > 0 ? a.dot(b) / n : 0.0;
 }
 
+std::vector<NearestSentence> nearest_sentences(const SifEncoder& sif, const std::vector<std::string>& corpus, const std::vector<std::string>& queries) {
+    std::vector<Eigen::VectorXd> embedded;
+    embedded.reserve(corpus.size());
+    for (const std::string& s : corpus) embedded.push_back(sif.embed(s));
+    std::vector<NearestSentence> out;
+    for (const std::string& q : queries) {
+        const Eigen::VectorXd e = sif.embed(q);
+        NearestSentence best{corpus.size(), -2.0};
+        for (size_t i = 0; i < embedded.size(); ++i)
+            if (const double c = cosine_similarity(e, embedded[i]); c > best.similarity) best = {i, c};
+        if (corpus.empty()) best.similarity = 0;
+        out.push_back(best);
+    }
+    return out;
+}
+
 }  // namespace t2imu

@@ -33,4 +33,12 @@ private:
 
 double cosine_similarity(const Eigen::VectorXd& a, const Eigen::VectorXd& b);  // 0 when either is zero
 
+// For each query, the corpus sentence most similar to it (cosine of SIF embeddings): how close a prompt set's
+// wording comes to the captions a model learned from. index = corpus.size() when the corpus is empty.
+struct NearestSentence {
+    size_t index = 0;
+    double similarity = 0;
+};
+std::vector<NearestSentence> nearest_sentences(const SifEncoder& sif, const std::vector<std::string>& corpus, const std::vector<std::string>& queries);
+
 }  // namespace t2imu
