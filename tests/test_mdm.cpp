@@ -95,6 +95,7 @@ TEST(Mdm, MaskedFramesDoNotChangeValidOnes) {
     EXPECT_GT((a.index({0, "...", valid}) - c.index({0, "...", valid})).abs().max().item<float>(), 1e-3);
 }
 
+// diffusion/mdm_io.cpp (what `t2imu model forward` runs): reads the arrays, checks their shapes, one pass.
 TEST(Mdm, CliForwardMatchesTheReference) {
     std::string weights;
     SHARED_OR_SKIP(weights, "reference/mdm/mdm_tiny.safetensors");
