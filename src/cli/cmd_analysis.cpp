@@ -4,6 +4,7 @@
 #include "analysis/domain_gap.hpp"
 #include "analysis/lacc_analysis.hpp"
 #include "analysis/signal_statistics.hpp"
+#include "analysis/static_segments.hpp"
 #include "cli/command.hpp"
 #include "cli/usage.hpp"
 #include "core/atomic_file.hpp"
@@ -81,10 +82,41 @@ static void add_signal_stats(CLI::App& analysis) {
     });
 }
 
+static void add_static_noise(CLI::App& analysis) {
+    auto* cmd = analysis.add_subcommand("static-noise", "device errors from the quietest window of each real recording (noise, gyro offset, |g| error), beside a device model's (JSON)");
+    static std::string real, position, noise = "none", out;
+    static double window = 2;
+    cmd->add_option("--real", real, "an IMU data set folder (manifest.csv)")->required()->check(CLI::ExistingDirectory);
+    cmd->add_option("--position", position, "only this position (waist); default: every position");
+    cmd->add_option("--window", window, "window length, s (default 2)");
+    cmd->add_option("--noise", noise, "a device model to set beside the measurement (as synth --noise: sisfall, umafall, ...)");
+    cmd->add_option("--out", out, "RESULT.json")->required();
+    cmd->callback([] {
+        SensorNoiseModel device;
+        check_usage([&] {
+            if (!(window >= 0.5 && window <= 60)) throw Error("--window", "window", "0.5 to 60 s", std::to_string(window));
+            device = parse_noise_model(noise);
+            check_output_path(out, "--out");
+        });
+        const nlohmann::json r = static_segment_noise(read_imu_dataset(real), position, window, device);
+        write_file_atomic(out, r.dump(2) + "\n");
+        const nlohmann::json& m = r["measured"];
+        std::printf("%s: %d recordings at %g Hz; quietest %g s: acc sd %.4f/%.4f/%.4f m/s^2, gyr sd %.4f/%.4f/%.4f rad/s, gyr offset sd %.4f/%.4f/%.4f rad/s, ||a|-g| %.3f m/s^2\n",
+                    out.c_str(), r["recordings"].get<int>(), r["rate_hz"].get<double>(), window, m["acc_sd_x"].get<double>(), m["acc_sd_y"].get<double>(),
+                    m["acc_sd_z"].get<double>(), m["gyr_sd_x"].get<double>(), m["gyr_sd_y"].get<double>(), m["gyr_sd_z"].get<double>(),
+                    m["gyr_offset_sd_x"].get<double>(), m["gyr_offset_sd_y"].get<double>(), m["gyr_offset_sd_z"].get<double>(), m["acc_norm_error_abs"].get<double>());
+        if (r.contains("device"))
+            std::printf("  %s predicts: acc sd %.4f m/s^2, gyr sd %.4f rad/s, gyr offset sd %.4f rad/s, acc offset sd %.3f m/s^2\n", noise.c_str(),
+                        r["device"]["acc_sd"].get<double>(), r["device"]["gyr_sd"].get<double>(), r["device"]["gyr_offset_sd"].get<double>(),
+                        r["device"]["acc_offset_sd"].get<double>());
+    });
+}
+
 static CommandRegistrar registrar([](CLI::App& root) {
     CLI::App& analysis = command_group(root, "analysis", "evaluation analyses");
     add_domain_gap(analysis);
     add_signal_stats(analysis);
+    add_static_noise(analysis);
     auto* cmd = analysis.add_subcommand("lacc", "per-sample L_acc of two models (id,caption,l_acc) -> change per activity category");
     static LaccArgs a;
     cmd->add_option("--before", a.before, "L_acc CSV of the base model")->required()->check(CLI::ExistingFile);
