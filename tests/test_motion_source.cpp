@@ -6,7 +6,9 @@
 #include <set>
 
 #include "core/csv.hpp"
+#include "core/error.hpp"
 #include "core/npy.hpp"
+#include "diffusion/trainer.hpp"
 #include "motion/humanml3d.hpp"
 #include "motion/motion_activity.hpp"
 #include "pipeline/motion_source.hpp"
@@ -86,6 +88,42 @@ TEST(MotionSource, RetrievalPrefersTaggedClipsTheClassifierAgreesWith) {
     EXPECT_EQ(clips_drawn(*source, "a person walks", "running", &tier), (std::set<std::string>{"c3", "c4", "c5"}));
     EXPECT_EQ(tier, "tags");
     EXPECT_EQ(source->draw_record(0)["classifier"], "walking");
+}
+
+// The hybrid: retrieval's clip for the prompt (tags as above), noised to the strength and finished by a (tiny,
+// barely trained) model: motions of the asked length, seeded, recorded as hybrid with retrieval's draw record;
+// malformed specs refused naming --model.
+TEST(MotionSource, HybridFinishesTheRetrievedClipWithTheModel) {
+    torch::set_num_threads(1);
+    const std::string data = misleading_dataset("hybrid");
+    const std::string model = test::scratch_dir("hybrid_model") + "/model";
+    train_mdm(read_train_config(test::write_tiny_train_config(test::scratch_dir("hybrid_model"), data, model)), false, "", 10);
+    SampleOptions sampling;
+    sampling.sampler = Sampler::dpmpp;
+    sampling.steps = 4;
+    auto source = open_motion_source("hybrid:" + model + "," + data + ",0.3", sampling, "cpu", data + "/vocab.safetensors");
+    const std::vector<JointSequence> a = source->generate({"a person jogs", "a person walks"}, {"running", "walking"}, {5, 6}, 40);
+    ASSERT_EQ(a.size(), 2u);
+    EXPECT_EQ(a[0].num_frames, 40);
+    EXPECT_TRUE(std::set<std::string>({"c3", "c4", "c5"}).count(source->draw_record(0)["clip"].get<std::string>()));
+    EXPECT_TRUE(std::set<std::string>({"c0", "c1", "c2"}).count(source->draw_record(1)["clip"].get<std::string>()));
+    const nlohmann::json d = source->describe();
+    EXPECT_EQ(d["kind"], "hybrid");
+    EXPECT_DOUBLE_EQ(d["strength"].get<double>(), 0.3);
+    EXPECT_EQ(d["retrieval"]["kind"], "retrieval");
+    EXPECT_EQ(d["sampler"], "dpmpp");
+    const std::vector<JointSequence> b = source->generate({"a person jogs"}, {"running"}, {5}, 40);
+    double diff = 0;  // the same seed, the same motion (up to the batch's float rounding)
+    for (size_t k = 0; k < a[0].positions.size(); ++k) diff = std::max(diff, (a[0].positions[k] - b[0].positions[k]).cwiseAbs().maxCoeff());
+    EXPECT_LT(diff, 1e-4);
+    for (const std::string& bad : {"hybrid:" + model, "hybrid:" + model + "," + data + ",1.5", "hybrid:" + model + "," + data + ",0", "hybrid:" + model + "," + data + ",x"}) {
+        try {
+            open_motion_source(bad, sampling, "cpu", data + "/vocab.safetensors");
+            ADD_FAILURE() << bad << " was accepted";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("--model"), std::string::npos) << e.what();
+        }
+    }
 }
 
 }  // namespace

@@ -72,6 +72,34 @@ TEST(Samplers, GaussianDataHasTheRightMoments) {
     EXPECT_NEAR(noisy.sd / sd, 1.0, 0.05);  // measured 0.967: discretisation at K = 100
 }
 
+TEST(Samplers, TimestepsFromAnIntermediateStep) {
+    EXPECT_EQ(sampling_timesteps(1000, 5, 499), (std::vector<int>{499, 281, 125, 31, 0}));  // 499 (1 - k/4)^2
+    EXPECT_EQ(sampling_timesteps(1000, 3, 2), (std::vector<int>{2, 1, 0}));
+    EXPECT_THROW(sampling_timesteps(1000, 4, 2), Error);   // more evaluations than steps left
+    EXPECT_THROW(sampling_timesteps(10, 1, 10), Error);    // beyond the schedule
+}
+
+// SDEdit (the hybrid source) on Gaussian data N(mu, s^2): a start point x_s noised to step t, x_t = sqrt(a) x_s +
+// sqrt(1 - a) eps, and ancestral sampling with the exact denoiser from t, draws x0 | x_t. Averaged over eps that
+// is a normal distribution with mean mu + k (x_s - mu), k = a s^2 / (a s^2 + 1 - a), and variance
+// s^2 (1 - a) / (a s^2 + 1 - a) + a s^4 (1 - a) / (a s^2 + 1 - a)^2: the start is kept in proportion k.
+TEST(Samplers, FromAPartlyNoisedStartTheExactPosteriorIsDrawn) {
+    const double mu = 0.5, sd = 0.3, x_s = 1.5;
+    const NoiseSchedule s = cosine_schedule(1000);
+    const GaussianDiffusion diffusion(s);
+    const X0Predictor denoiser = gaussian_denoiser(s, mu, sd);
+    for (int t : {150, 400}) {
+        const double a = s.alphas_cumprod[static_cast<size_t>(t)], v = a * sd * sd + 1 - a;
+        const double k = a * sd * sd / v;
+        const double expected_sd = std::sqrt(sd * sd * (1 - a) / v + a * sd * sd * sd * sd * (1 - a) / (v * v));
+        const torch::Tensor x_t = std::sqrt(a) * x_s + std::sqrt(1 - a) * start(40000, 7);
+        const Moments m = moments(sample_ddpm(diffusion, denoiser, x_t, seeded_noise(8), t));
+        EXPECT_NEAR(m.mean, mu + k * (x_s - mu), 0.005) << "t = " << t;
+        EXPECT_NEAR(m.sd / expected_sd, 1.0, 0.03) << "t = " << t;
+    }
+    EXPECT_THROW(sample_ddpm(diffusion, denoiser, start(4, 1), seeded_noise(1), 1000), Error);
+}
+
 TEST(Samplers, NamesRoundTripAndOthersAreRefusedByOption) {
     for (Sampler s : {Sampler::ddpm, Sampler::ddim, Sampler::dpmpp}) EXPECT_EQ(parse_sampler(sampler_name(s)), s);
     EXPECT_EQ(sampler_names().size(), 3u);

@@ -64,7 +64,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     SynthOptions& o = a.options;
     cmd->add_option("--prompts", o.prompts, "prompt set: activity<TAB>prompt per line (prompts/*.tsv)")->required()->check(CLI::ExistingFile);
     cmd->add_option("--samples-per-prompt", o.samples_per_prompt, "motions per prompt (default 1)");
-    cmd->add_option("--model", o.model, "model folder (default models/default) or retrieval:DATASET");
+    cmd->add_option("--model", o.model, "model folder (default models/default), retrieval:DATASET, or hybrid:MODEL,DATASET,STRENGTH (a retrieved clip noised to STRENGTH in (0, 1] and finished by the model)");
     cmd->add_option("--vocab", o.vocab, "GloVe vocabulary for retrieval (default $T2IMU_VOCAB or cache/text/glove-100k.safetensors)");
     add_sampler_option(*cmd, o.sampling.sampler, "dpmpp (default), ddim or ddpm");
     cmd->add_option("--steps", o.sampling.steps, "denoiser evaluations for ddim/dpmpp (default 20)");

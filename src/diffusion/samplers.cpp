@@ -31,13 +31,15 @@ Sampler parse_sampler(const std::string& name, const std::string& option) {
 
 int denoiser_calls(Sampler sampler, int steps, int schedule_steps) { return sampler == Sampler::ddpm ? schedule_steps : steps; }
 
-std::vector<int> sampling_timesteps(int schedule_steps, int steps) {
-    if (steps < 1 || steps > schedule_steps) throw Error("sampler", "steps", "1.." + std::to_string(schedule_steps), std::to_string(steps));
-    if (steps == 1) return {schedule_steps - 1};
+std::vector<int> sampling_timesteps(int schedule_steps, int steps, int t_start) {
+    const int first = t_start < 0 ? schedule_steps - 1 : t_start;
+    if (first >= schedule_steps) throw Error("sampler", "start step", "0.." + std::to_string(schedule_steps - 1), std::to_string(first));
+    if (steps < 1 || steps > first + 1) throw Error("sampler", "steps", "1.." + std::to_string(first + 1), std::to_string(steps));
+    if (steps == 1) return {first};
     std::vector<int> ts;
     for (int k = 0; k < steps; ++k) {
         const double u = 1.0 - static_cast<double>(k) / (steps - 1);
-        int t = static_cast<int>(std::lround((schedule_steps - 1) * u * u));
+        int t = static_cast<int>(std::lround(first * u * u));
         if (!ts.empty()) t = std::min(t, ts.back() - 1);  // distinct steps,
         t = std::max(t, steps - 1 - k);                   // leaving one for each remaining evaluation
         ts.push_back(t);
@@ -45,18 +47,20 @@ std::vector<int> sampling_timesteps(int schedule_steps, int steps) {
     return ts;
 }
 
-torch::Tensor sample_ddpm(const GaussianDiffusion& diffusion, const X0Predictor& denoiser, torch::Tensor x, const NoiseSource& noise) {
+torch::Tensor sample_ddpm(const GaussianDiffusion& diffusion, const X0Predictor& denoiser, torch::Tensor x, const NoiseSource& noise, int t_start) {
     torch::NoGradGuard no_grad;
-    for (int t = diffusion.steps() - 1; t >= 0; --t) {
+    if (t_start >= diffusion.steps()) throw Error("sampler", "start step", "0.." + std::to_string(diffusion.steps() - 1), std::to_string(t_start));
+    for (int t = t_start < 0 ? diffusion.steps() - 1 : t_start; t >= 0; --t) {
         const torch::Tensor ts = step_tensor(t, x);
         x = diffusion.p_sample_step(x, denoiser(x, ts), ts, noise(x));
     }
     return x;
 }
 
-torch::Tensor sample_ddim(const NoiseSchedule& s, const X0Predictor& denoiser, torch::Tensor x, int steps, double eta, const NoiseSource& noise) {
+torch::Tensor sample_ddim(const NoiseSchedule& s, const X0Predictor& denoiser, torch::Tensor x, int steps, double eta, const NoiseSource& noise,
+                          int t_start) {
     torch::NoGradGuard no_grad;
-    const std::vector<int> ts = sampling_timesteps(s.steps, steps);
+    const std::vector<int> ts = sampling_timesteps(s.steps, steps, t_start);
     for (size_t i = 0; i < ts.size(); ++i) {
         const torch::Tensor x0 = denoiser(x, step_tensor(ts[i], x));
         if (i + 1 == ts.size()) return x0;
@@ -69,9 +73,9 @@ torch::Tensor sample_ddim(const NoiseSchedule& s, const X0Predictor& denoiser, t
     return x;
 }
 
-torch::Tensor sample_dpmpp_2m(const NoiseSchedule& s, const X0Predictor& denoiser, torch::Tensor x, int steps) {
+torch::Tensor sample_dpmpp_2m(const NoiseSchedule& s, const X0Predictor& denoiser, torch::Tensor x, int steps, int t_start) {
     torch::NoGradGuard no_grad;
-    const std::vector<int> ts = sampling_timesteps(s.steps, steps);
+    const std::vector<int> ts = sampling_timesteps(s.steps, steps, t_start);
     const auto alpha = [&](int t) { return std::sqrt(s.alphas_cumprod[static_cast<size_t>(t)]); };
     const auto sigma = [&](int t) { return std::sqrt(1 - s.alphas_cumprod[static_cast<size_t>(t)]); };
     const auto lambda = [&](int t) { return std::log(alpha(t) / sigma(t)); };

@@ -28,12 +28,17 @@ using X0Predictor = std::function<torch::Tensor(const torch::Tensor& x_t, const 
 // `noise` supplies the per-step Gaussian draws (e.g. seeded); it is asked for tensors shaped like x.
 using NoiseSource = std::function<torch::Tensor(const torch::Tensor& like)>;
 
-torch::Tensor sample_ddpm(const GaussianDiffusion& diffusion, const X0Predictor& denoiser, torch::Tensor x_T, const NoiseSource& noise);
+// `t_start`: the step x is at (-1 = T-1, pure noise). A smaller one continues a partly noised motion (SDEdit,
+// Meng et al. 2022: the hybrid source noises a retrieved clip to t_start and lets the model finish it); DDPM
+// then takes t_start + 1 steps, the few-step samplers their K evaluations spread over t_start .. 0.
+torch::Tensor sample_ddpm(const GaussianDiffusion& diffusion, const X0Predictor& denoiser, torch::Tensor x_T, const NoiseSource& noise,
+                          int t_start = -1);
 torch::Tensor sample_ddim(const NoiseSchedule& schedule, const X0Predictor& denoiser, torch::Tensor x_T, int steps, double eta,
-                          const NoiseSource& noise);
-torch::Tensor sample_dpmpp_2m(const NoiseSchedule& schedule, const X0Predictor& denoiser, torch::Tensor x_T, int steps);
+                          const NoiseSource& noise, int t_start = -1);
+torch::Tensor sample_dpmpp_2m(const NoiseSchedule& schedule, const X0Predictor& denoiser, torch::Tensor x_T, int steps, int t_start = -1);
 
-std::vector<int> sampling_timesteps(int schedule_steps, int steps);  // descending, first T-1, last 0
+// Descending, first t_start (-1 = T-1), last 0, quadratic spacing as above; at most t_start + 1 steps.
+std::vector<int> sampling_timesteps(int schedule_steps, int steps, int t_start = -1);
 
 // The samplers by the names options, configs and records use: "ddpm", "ddim", "dpmpp" (parsed here only).
 enum class Sampler { ddpm, ddim, dpmpp };

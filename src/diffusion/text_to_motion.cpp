@@ -151,13 +151,22 @@ void SampleOptions::validate() const {
     if (!std::isfinite(guidance)) throw Error("sampling", "--guidance", "a finite scale", std::to_string(guidance));
     if (!(eta >= 0 && eta <= 1)) throw Error("sampling", "--eta", "0 to 1", std::to_string(eta));
     if (batch < 1) throw Error("sampling", "--batch", "at least 1", std::to_string(batch));
+    if (!(strength > 0 && strength <= 1)) throw Error("sampling", "--strength", "above 0 and at most 1", std::to_string(strength));
+    for (const FeatureMatrix& m : start_motions)
+        if (m.rows() != frames || m.cols() != 263)
+            throw Error("sampling", "start motion", std::to_string(frames) + " x 263 features", std::to_string(m.rows()) + " x " + std::to_string(m.cols()));
 }
 
 std::vector<FeatureMatrix> sample_motions(MotionModel& model, const std::vector<std::string>& prompts, const SampleOptions& o) {
     o.validate();
     if (!o.seeds.empty() && o.seeds.size() != prompts.size()) throw Error("sample", "seeds", "one seed per prompt", std::to_string(o.seeds.size()));
+    if (!o.start_motions.empty() && o.start_motions.size() != prompts.size())
+        throw Error("sample", "start motions", "one per prompt", std::to_string(o.start_motions.size()));
     torch::NoGradGuard no_grad;
     const GaussianDiffusion diffusion(model.schedule);
+    const bool hybrid = !o.start_motions.empty();
+    const int t_start = hybrid ? static_cast<int>(std::lround(o.strength * (model.schedule.steps - 1))) : model.schedule.steps - 1;
+    const int steps = std::min(o.steps, t_start + 1);
     std::vector<FeatureMatrix> out;
     for (size_t start = 0; start < prompts.size(); start += static_cast<size_t>(o.batch)) {
         const size_t n = std::min(prompts.size() - start, static_cast<size_t>(o.batch));
@@ -170,7 +179,17 @@ std::vector<FeatureMatrix> sample_motions(MotionModel& model, const std::vector<
             for (size_t i = 0; i < gens.size(); ++i) rows.push_back(torch::randn(like[0].sizes(), gens[i], torch::kFloat32));
             return torch::stack(rows).to(like.device());
         };
-        const torch::Tensor x_T = noise(torch::zeros({static_cast<int64_t>(n), 263, 1, o.frames}, torch::TensorOptions().device(model.device)));
+        torch::Tensor x_T = noise(torch::zeros({static_cast<int64_t>(n), 263, 1, o.frames}, torch::TensorOptions().device(model.device)));
+        if (hybrid) {
+            torch::Tensor x0 = torch::empty({static_cast<int64_t>(n), o.frames, 263}, torch::kFloat64);
+            for (size_t i = 0; i < n; ++i) {
+                FeatureMatrix f = o.start_motions[start + i];
+                for (Eigen::Index c = 0; c < 263; ++c) f.col(c) = ((f.col(c).array() - model.stats.mean[c]) / model.stats.std[c]).matrix();
+                std::memcpy(x0[static_cast<int64_t>(i)].data_ptr<double>(), f.data(), sizeof(double) * static_cast<size_t>(o.frames) * 263);
+            }
+            const double abar = model.schedule.alphas_cumprod[static_cast<size_t>(t_start)];
+            x_T = std::sqrt(abar) * x0.to(torch::kFloat32).permute({0, 2, 1}).unsqueeze(2).to(model.device) + std::sqrt(1 - abar) * x_T;
+        }
         const torch::Tensor text = model.encode_text(batch);
         const torch::Tensor lengths = torch::full({static_cast<int64_t>(n)}, o.frames, torch::TensorOptions().dtype(torch::kInt64).device(model.device));
         const X0Predictor denoiser = [&](const torch::Tensor& x, const torch::Tensor& t) {
@@ -178,9 +197,9 @@ std::vector<FeatureMatrix> sample_motions(MotionModel& model, const std::vector<
         };
         torch::Tensor x0;
         switch (o.sampler) {
-            case Sampler::ddpm: x0 = sample_ddpm(diffusion, denoiser, x_T, noise); break;
-            case Sampler::ddim: x0 = sample_ddim(model.schedule, denoiser, x_T, o.steps, o.eta, noise); break;
-            case Sampler::dpmpp: x0 = sample_dpmpp_2m(model.schedule, denoiser, x_T, o.steps); break;
+            case Sampler::ddpm: x0 = sample_ddpm(diffusion, denoiser, x_T, noise, t_start); break;
+            case Sampler::ddim: x0 = sample_ddim(model.schedule, denoiser, x_T, steps, o.eta, noise, t_start); break;
+            case Sampler::dpmpp: x0 = sample_dpmpp_2m(model.schedule, denoiser, x_T, steps, t_start); break;
         }
         const torch::Tensor frames = x0.squeeze(2).permute({0, 2, 1}).to(torch::kCPU, torch::kFloat64).contiguous();  // [n, F, 263], normalised
         for (size_t i = 0; i < n; ++i) {

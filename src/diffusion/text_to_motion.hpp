@@ -63,8 +63,15 @@ struct SampleOptions {
     uint64_t seed = 0;
     std::vector<uint64_t> seeds;   // when given, one per prompt: sample i draws from seeds[i] instead of seed + i
     int batch = 16;
+    // The hybrid (SDEdit, Meng et al. 2022): when given, one per prompt, motion i starts from start_motions[i]
+    // (de-normalised features [frames, 263]) noised to step t_s = round(strength (T-1)) with its seed's noise,
+    // x_ts = sqrt(abar_ts) x0 + sqrt(1 - abar_ts) eps, instead of from pure noise; strength 1 is pure noise
+    // again, small strengths keep the start's motion. The few-step samplers spread min(steps, t_s + 1)
+    // evaluations over t_s .. 0; DDPM takes t_s + 1 steps.
+    std::vector<FeatureMatrix> start_motions;
+    double strength = 1.0;
 
-    // Throws Error naming the option (--frames, --steps, --guidance...) for a value out of range or not finite.
+    // Throws Error naming the option (--frames, --steps, --guidance, --strength...) for a value out of range or not finite.
     void validate() const;
 };
 

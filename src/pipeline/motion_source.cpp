@@ -7,6 +7,7 @@
 #include <optional>
 #include <random>
 #include <sstream>
+#include <tuple>
 
 #include "core/error.hpp"
 #include "core/csv.hpp"
@@ -27,9 +28,17 @@ public:
 
     std::vector<JointSequence> generate(const std::vector<std::string>& prompts, const std::vector<std::string>&,
                                         const std::vector<uint64_t>& seeds, int frames) override {
+        return generate_from(prompts, seeds, frames, {}, 1.0);
+    }
+
+    // From noised start motions (the hybrid), or from pure noise when `starts` is empty.
+    std::vector<JointSequence> generate_from(const std::vector<std::string>& prompts, const std::vector<uint64_t>& seeds, int frames,
+                                             std::vector<FeatureMatrix> starts, double strength) {
         SampleOptions o = sampling_;
         o.frames = frames;
         o.seeds = seeds;
+        o.start_motions = std::move(starts);
+        o.strength = strength;
         std::vector<JointSequence> out;
         for (const FeatureMatrix& f : sample_motions(*model_, prompts, o)) out.push_back(recover_from_ric(f));
         return out;
@@ -194,12 +203,68 @@ private:
     std::vector<nlohmann::json> records_;         // per motion of the last generate()
 };
 
+// Retrieval, then the model: each prompt's retrieved clip (HumanML3D features, `frames` long; a shorter clip
+// holds its last frame) noised to strength s and denoised with the prompt (SampleOptions::start_motions).
+class HybridSource : public MotionSource {
+public:
+    HybridSource(const std::string& model, const std::string& dataset, double strength, const SampleOptions& sampling, const std::string& device,
+                 const std::string& vocab, const std::string& activity_reference)
+        : retrieval_(dataset, vocab, activity_reference), diffusion_(model, sampling, device), strength_(strength) {}
+
+    std::vector<JointSequence> generate(const std::vector<std::string>& prompts, const std::vector<std::string>& activities,
+                                        const std::vector<uint64_t>& seeds, int frames) override {
+        std::vector<FeatureMatrix> starts;
+        for (const JointSequence& clip : retrieval_.generate(prompts, activities, seeds, frames + 1)) {
+            const FeatureMatrix f = joints_to_features(clip);  // one row fewer than the joints
+            FeatureMatrix start(frames, 263);
+            for (int r = 0; r < frames; ++r) start.row(r) = f.row(std::min<Eigen::Index>(r, f.rows() - 1));
+            starts.push_back(std::move(start));
+        }
+        return diffusion_.generate_from(prompts, seeds, frames, starts, strength_);
+    }
+
+    nlohmann::json describe() const override {
+        nlohmann::json d = diffusion_.describe();
+        d["kind"] = "hybrid";
+        d["strength"] = strength_;
+        d["retrieval"] = retrieval_.describe();
+        return d;
+    }
+
+    nlohmann::json draw_record(size_t i) const override { return retrieval_.draw_record(i); }
+
+private:
+    RetrievalSource retrieval_;
+    DiffusionSource diffusion_;
+    double strength_;
+};
+
+// "hybrid:MODEL,DATASET,STRENGTH" -> its three parts; Error naming --model otherwise.
+std::tuple<std::string, std::string, double> parse_hybrid(const std::string& rest) {
+    const size_t a = rest.find(','), b = a == std::string::npos ? a : rest.find(',', a + 1);
+    const std::string expected = "hybrid:MODEL_FOLDER,DATASET,STRENGTH with STRENGTH above 0 and at most 1";
+    if (b == std::string::npos || rest.find(',', b + 1) != std::string::npos) throw Error("--model", "hybrid", expected, "hybrid:" + rest);
+    double strength = 0;
+    size_t used = 0;
+    try {
+        strength = std::stod(rest.substr(b + 1), &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used == 0 || used != rest.size() - b - 1 || !(strength > 0 && strength <= 1)) throw Error("--model", "hybrid strength", expected, rest.substr(b + 1));
+    return {rest.substr(0, a), rest.substr(a + 1, b - a - 1), strength};
+}
+
 }  // namespace
 
 std::unique_ptr<MotionSource> open_motion_source(const std::string& spec, const SampleOptions& sampling, const std::string& device,
                                                  const std::string& vocab, const std::string& activity_reference) {
-    const std::string prefix = "retrieval:";
+    const std::string prefix = "retrieval:", hybrid = "hybrid:";
     if (spec.rfind(prefix, 0) == 0) return std::make_unique<RetrievalSource>(spec.substr(prefix.size()), vocab, activity_reference);
+    if (spec.rfind(hybrid, 0) == 0) {
+        const auto [model, dataset, strength] = parse_hybrid(spec.substr(hybrid.size()));
+        return std::make_unique<HybridSource>(model, dataset, strength, sampling, device, vocab, activity_reference);
+    }
     return std::make_unique<DiffusionSource>(spec, sampling, device);
 }
 

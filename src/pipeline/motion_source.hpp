@@ -1,5 +1,6 @@
-// Where a synthesis gets its motions: a trained text-to-motion model folder (diffusion sampling), or the
-// retrieval baseline `retrieval:DATASET` that answers a prompt with captured training clips.
+// Where a synthesis gets its motions: a trained text-to-motion model folder (diffusion sampling), the
+// retrieval baseline `retrieval:DATASET` that answers a prompt with captured training clips, or the hybrid of
+// the two (a retrieved clip, partly noised, finished by the model).
 //
 // Retrieval (the row that shows what the learned models add; the paper compares with ReMoDiffuse, a
 // retrieval-augmented diffusion model) answers with clips of DATASET's train split (HumanML3D layout, t2imu data
@@ -42,7 +43,9 @@ public:
     virtual nlohmann::json draw_record(size_t) const { return nullptr; }
 };
 
-// `spec`: a model folder, or retrieval:DATASET. `sampling` holds the sampler settings of a model (its seed
+// `spec`: a model folder, retrieval:DATASET, or hybrid:MODEL_FOLDER,DATASET,STRENGTH: the clip retrieval would
+// give, noised to round(STRENGTH (T-1)) and finished by the model with the prompt (SDEdit; STRENGTH in (0, 1],
+// 1 = the model alone from noise, small = the captured clip barely changed; draw records are retrieval's). `sampling` holds the sampler settings of a model (its seed
 // fields are ignored: generate() takes the seeds). `vocab`: the GloVe vocabulary for retrieval ("" = the
 // default: $T2IMU_VOCAB, else cache/text/glove-100k.safetensors). `activity_reference`: the motion activity
 // classifier's reference CSV that retrieval checks candidates with ("" = activity tags alone).
