@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "imu/cubic_spline.hpp"
+#include "core/signal/cubic_spline.hpp"
 
 using namespace t2imu;
 

@@ -6,8 +6,8 @@
 #include <complex>
 #include <random>
 
-#include "analysis/fft.hpp"
 #include "core/error.hpp"
+#include "core/signal/fft.hpp"
 
 using namespace t2imu;
 using cd = std::complex<double>;

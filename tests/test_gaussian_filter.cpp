@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "core/npy.hpp"
-#include "motion/gaussian_filter.hpp"
+#include "core/signal/gaussian_filter.hpp"
 #include "test_util.hpp"
 
 using namespace t2imu;

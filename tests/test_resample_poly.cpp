@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "har/resample_poly.hpp"
+#include "core/signal/resample_poly.hpp"
 
 using namespace t2imu;
 

@@ -3,7 +3,7 @@
 #include <complex>
 
 #include "analysis/catch22_features.hpp"
-#include "analysis/fft.hpp"
+#include "core/signal/fft.hpp"
 
 namespace t2imu::catch22_detail {
 

@@ -6,8 +6,8 @@
 #include <complex>
 #include <set>
 
-#include "analysis/fft.hpp"
 #include "core/error.hpp"
+#include "core/signal/fft.hpp"
 #include "har/class_map.hpp"
 #include "har/windowing.hpp"
 

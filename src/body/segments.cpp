@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "motion/gaussian_filter.hpp"
+#include "core/signal/gaussian_filter.hpp"
 
 namespace t2imu {
 

@@ -7,9 +7,9 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "core/signal/gaussian_filter.hpp"
+#include "core/signal/resample_poly.hpp"
 #include "har/class_map.hpp"
-#include "har/resample_poly.hpp"
-#include "motion/gaussian_filter.hpp"
 
 namespace t2imu {
 

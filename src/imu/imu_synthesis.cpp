@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "imu/cubic_spline.hpp"
+#include "core/signal/cubic_spline.hpp"
 
 namespace t2imu {
 

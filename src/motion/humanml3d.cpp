@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "motion/gaussian_filter.hpp"
+#include "core/signal/gaussian_filter.hpp"
 #include "motion/skeleton.hpp"
 
 namespace t2imu {

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "motion/gaussian_filter.hpp"
+#include "core/signal/gaussian_filter.hpp"
 #include "motion/motion_edit.hpp"
 #include "motion/skeleton.hpp"
 

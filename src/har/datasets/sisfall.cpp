@@ -9,8 +9,8 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/signal/resample_poly.hpp"
 #include "har/datasets/release_files.hpp"
-#include "har/resample_poly.hpp"
 
 namespace t2imu {
 

@@ -1,4 +1,4 @@
-#include "imu/cubic_spline.hpp"
+#include "core/signal/cubic_spline.hpp"
 
 #include <algorithm>
 #include <cmath>

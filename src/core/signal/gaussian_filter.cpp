@@ -1,4 +1,4 @@
-#include "motion/gaussian_filter.hpp"
+#include "core/signal/gaussian_filter.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "analysis/fft.hpp"
+#include "core/signal/fft.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "har/resample_poly.hpp"
+#include "core/signal/resample_poly.hpp"
 
 #include <cmath>
 #include <numeric>
