@@ -81,14 +81,6 @@ ltibia 0
 rfemur 0 0 0
 )";
 
-std::string error_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "no error";
-}
 bool has(const std::string& m, const std::string& part) { return m.find(part) != std::string::npos; }
 }  // namespace
 
@@ -146,32 +138,32 @@ TEST(AsfAmc, ReadsFiles) {
 }
 
 TEST(AsfAmc, RefusesBadAsfNamingTheLine) {
-    std::string m = error_of([] { parse_asf(":units\n  length -1\n", "neg.asf"); });
+    std::string m = test::error_message([] { parse_asf(":units\n  length -1\n", "neg.asf"); });
     EXPECT_TRUE(has(m, "neg.asf") && has(m, "line 2") && has(m, "positive length unit")) << m;
-    m = error_of([] { parse_asf(":bonedata\n begin\n name a\n direction 0 1 0\n length 1\n end\n", "nohier.asf"); });
+    m = test::error_message([] { parse_asf(":bonedata\n begin\n name a\n direction 0 1 0\n length 1\n end\n", "nohier.asf"); });
     EXPECT_TRUE(has(m, "nohier.asf") && has(m, ":hierarchy")) << m;
     std::string undefined = kAsf;
     undefined.replace(undefined.find("lfemur ltibia"), 13, "lfemur lfoot");
-    m = error_of([&] { parse_asf(undefined, "undef.asf"); });
+    m = test::error_message([&] { parse_asf(undefined, "undef.asf"); });
     EXPECT_TRUE(has(m, "undef.asf") && has(m, ":hierarchy") && has(m, "lfoot")) << m;
     std::string bad_dof = kAsf;
     bad_dof.replace(bad_dof.find("dof rx\n"), 7, "dof rw\n");
-    m = error_of([&] { parse_asf(bad_dof, "dof.asf"); });
+    m = test::error_message([&] { parse_asf(bad_dof, "dof.asf"); });
     EXPECT_TRUE(has(m, "dof.asf") && has(m, "line") && has(m, "degree of freedom") && has(m, "rw")) << m;
 }
 
 TEST(AsfAmc, RefusesBadAmcNamingTheLine) {
     const AsfSkeleton s = parse_asf(kAsf, "test.asf");
-    std::string m = error_of([&] { parse_amc("1\nroot 1 2 3 0 0 0\nltibia -90 5\n", s, "count.amc"); });
+    std::string m = test::error_message([&] { parse_amc("1\nroot 1 2 3 0 0 0\nltibia -90 5\n", s, "count.amc"); });
     EXPECT_TRUE(has(m, "count.amc") && has(m, "line 3") && has(m, "1 values for ltibia")) << m;
-    m = error_of([&] { parse_amc("1\nlhumerus 0 0 0\n", s, "bone.amc"); });
+    m = test::error_message([&] { parse_amc("1\nlhumerus 0 0 0\n", s, "bone.amc"); });
     EXPECT_TRUE(has(m, "bone.amc") && has(m, "line 2") && has(m, "a bone of the ASF skeleton") && has(m, "lhumerus")) << m;
-    m = error_of([&] { parse_amc("1\nltibia/end\n", s, "end.amc"); });  // an End Site has no values
+    m = test::error_message([&] { parse_amc("1\nltibia/end\n", s, "end.amc"); });  // an End Site has no values
     EXPECT_TRUE(has(m, "a bone of the ASF skeleton")) << m;
-    m = error_of([&] { parse_amc("ltibia 0\n1\n", s, "order.amc"); });
+    m = test::error_message([&] { parse_amc("ltibia 0\n1\n", s, "order.amc"); });
     EXPECT_TRUE(has(m, "order.amc") && has(m, "line 1") && has(m, "frame number")) << m;
-    m = error_of([&] { parse_amc("1\nltibia abc\n", s, "num.amc"); });
+    m = test::error_message([&] { parse_amc("1\nltibia abc\n", s, "num.amc"); });
     EXPECT_TRUE(has(m, "num.amc") && has(m, "line 2") && has(m, "abc")) << m;
-    m = error_of([&] { parse_amc(":FULLY-SPECIFIED\n", s, "empty.amc"); });
+    m = test::error_message([&] { parse_amc(":FULLY-SPECIFIED\n", s, "empty.amc"); });
     EXPECT_TRUE(has(m, "empty.amc") && has(m, "at least one frame")) << m;
 }

@@ -11,29 +11,13 @@
 #include "core/csv.hpp"
 #include "imu/imu_dataset.hpp"
 #include "core/error.hpp"
+#include "catch22_reference.hpp"
 #include "test_util.hpp"
 
 using namespace t2imu;
 namespace fs = std::filesystem;
 
 namespace {
-
-// "value, NAME[, seconds]" lines -> name -> value.
-std::map<std::string, double> read_reference_output(const std::string& path) {
-    std::map<std::string, double> out;
-    std::ifstream in(path);
-    for (std::string line; std::getline(in, line);) {
-        if (line.find(',') == std::string::npos) continue;
-        std::stringstream s(line);
-        std::string value, name;
-        std::getline(s, value, ',');
-        std::getline(s, name, ',');
-        name.erase(0, name.find_first_not_of(' '));
-        name.erase(name.find_last_not_of(" \r") + 1);
-        out[name] = std::strtod(value.c_str(), nullptr);
-    }
-    return out;
-}
 
 struct Case {
     std::string input, output;
@@ -67,7 +51,7 @@ TEST(Catch22, MatchesEveryReferenceOutput) {
     std::map<std::string, double> worst;
     std::map<std::string, std::string> worst_where;
     for (const Case& c : cases) {
-        const std::map<std::string, double> expected = read_reference_output(c.output);
+        const std::map<std::string, double> expected = test::read_catch22_reference_output(c.output);
         const std::vector<double> got = catch22(read_catch22_series(c.input), true, c.input);
         for (size_t k = 0; k < got.size(); ++k) {
             const auto it = expected.find(catch24_names()[k]);

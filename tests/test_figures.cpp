@@ -36,15 +36,6 @@ struct Capture {
 
 bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 
-std::string error_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "no error";
-}
-
 CsvTable table(const std::string& text) { return parse_csv(text, "test.csv"); }
 }  // namespace
 
@@ -79,7 +70,7 @@ TEST(Figures, LaccBarsAndARangeThatHoldsZero) {
     const std::string s = c.script();
     EXPECT_TRUE(has(s, "$bars << EOD\n0 \"Running (10)\" -20 1\n1 \"all (14)\" -17.06 2\nEOD")) << s;
     EXPECT_TRUE(has(s, "set yrange [-22:2]")) << s;
-    const std::string m = error_of([&] { plot_lacc_change(table("group,samples\nRunning,10\n"), c.dir + "/x.png"); });
+    const std::string m = test::error_message([&] { plot_lacc_change(table("group,samples\nRunning,10\n"), c.dir + "/x.png"); });
     EXPECT_TRUE(has(m, "change_percent")) << m;
 }
 
@@ -93,9 +84,9 @@ TEST(Figures, TsneGroupsByColourAndFilters) {
     // One group per source (alphabetical), only the running rows.
     EXPECT_TRUE(has(s, "$g0 << EOD\n1 2\nEOD\n$g1 << EOD\n5 6\nEOD")) << s;
     EXPECT_TRUE(has(s, "title \"real\"") && has(s, "title \"synthetic\"")) << s;
-    std::string m = error_of([&] { plot_tsne(t, "source", c.dir + "/none.png", "t", "activity", {"lying"}); });
+    std::string m = test::error_message([&] { plot_tsne(t, "source", c.dir + "/none.png", "t", "activity", {"lying"}); });
     EXPECT_TRUE(has(m, c.dir + "/none.png") && has(m, "points")) << m;
-    m = error_of([&] { plot_tsne(t, "body", c.dir + "/nobody.png", "t"); });
+    m = test::error_message([&] { plot_tsne(t, "body", c.dir + "/nobody.png", "t"); });
     EXPECT_TRUE(has(m, "body")) << m;
 }
 
@@ -115,7 +106,7 @@ TEST(Figures, SignalStatsMediansEitherSideOfTheTick) {
     plot_signal_stats(groups, c.dir + "/alone.png", "Signal statistics");
     EXPECT_TRUE(has(c.script(), "$msyn << EOD\n0 4 3\n1 2 2\nEOD")) << c.script();
     EXPECT_FALSE(has(c.script(), "$mreal"));
-    const std::string m = error_of([&] { plot_signal_stats({}, c.dir + "/empty.png", "x"); });
+    const std::string m = test::error_message([&] { plot_signal_stats({}, c.dir + "/empty.png", "x"); });
     EXPECT_TRUE(has(m, c.dir + "/empty.png") && has(m, "activities")) << m;
 }
 
@@ -126,6 +117,6 @@ TEST(Figures, ImuTraceColumnsInOrder) {
     plot_imu_trace(table("gyr_z,gyr_y,gyr_x,acc_z,acc_y,acc_x,t\n6,5,4,3,2,1,0\n16,15,14,13,12,11,0.02\n"), c.dir + "/trace.png", "trace");
     EXPECT_TRUE(c.png("trace.png"));
     EXPECT_TRUE(has(c.script(), "$imu << EOD\n0 1 2 3 4 5 6\n0.02 11 12 13 14 15 16\nEOD")) << c.script();
-    const std::string m = error_of([&] { plot_imu_trace(table("t,acc_x,acc_y,acc_z,gyr_x,gyr_y\n0,1,2,3,4,5\n"), c.dir + "/x.png", "t"); });
+    const std::string m = test::error_message([&] { plot_imu_trace(table("t,acc_x,acc_y,acc_z,gyr_x,gyr_y\n0,1,2,3,4,5\n"), c.dir + "/x.png", "t"); });
     EXPECT_TRUE(has(m, "gyr_z")) << m;
 }

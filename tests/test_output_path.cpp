@@ -17,15 +17,6 @@ using namespace t2imu;
 namespace fs = std::filesystem;
 
 namespace {
-template <class F> std::string error_of(F f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "no Error thrown";
-    return "";
-}
 bool has(const std::string& message, const std::string& part) { return message.find(part) != std::string::npos; }
 }  // namespace
 
@@ -41,11 +32,11 @@ TEST(OutputPath, MissingFoldersAreProvenAndLeftUnmade) {
 TEST(OutputPath, AFileInTheWayAndAnEmptyPathAreRefused) {
     const std::string dir = test::scratch_dir("output_path_file");
     std::ofstream(dir + "/file.txt") << "x";
-    std::string m = error_of([&] { check_output_path(dir + "/file.txt/sub/out.csv", "--report"); });
+    std::string m = test::error_message([&] { check_output_path(dir + "/file.txt/sub/out.csv", "--report"); });
     EXPECT_TRUE(has(m, "--report") && has(m, dir + "/file.txt") && has(m, "is a file")) << m;
-    m = error_of([&] { check_output_path("", "--out"); });
+    m = test::error_message([&] { check_output_path("", "--out"); });
     EXPECT_TRUE(has(m, "--out") && has(m, "an output path")) << m;
-    m = error_of([&] { make_directories(dir + "/file.txt/sub", "output folder"); });
+    m = test::error_message([&] { make_directories(dir + "/file.txt/sub", "output folder"); });
     EXPECT_TRUE(has(m, dir + "/file.txt/sub") && has(m, "output folder")) << m;
     EXPECT_EQ(fs::file_size(dir + "/file.txt"), 1u);  // untouched
 }

@@ -23,15 +23,6 @@ struct Small : torch::nn::Module {
     }
 };
 
-std::string message_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "";
-}
-
 NdArray array_of(const torch::Tensor& t) {
     const torch::Tensor c = t.detach().contiguous();
     return NdArray::from(std::vector<float>(c.data_ptr<float>(), c.data_ptr<float>() + c.numel()), std::vector<int64_t>(c.sizes().begin(), c.sizes().end()));
@@ -74,20 +65,20 @@ TEST(StateDict, RefusesMissingMisshapedAndUnexpectedKeysByName) {
 
     SafeTensors missing = full;
     missing.tensors.erase("head.bias");
-    std::string msg = message_of([&] { load_state_dict(m, missing, dir + "/x.safetensors"); });
+    std::string msg = test::error_message([&] { load_state_dict(m, missing, dir + "/x.safetensors"); });
     EXPECT_NE(msg.find("head.bias"), std::string::npos) << msg;
     EXPECT_NE(msg.find("missing"), std::string::npos) << msg;
 
     SafeTensors shape = full;
     shape.tensors["proj"] = NdArray::from(std::vector<float>(24, 0.f), {6, 4});
-    msg = message_of([&] { load_state_dict(m, shape, dir + "/x.safetensors"); });
+    msg = test::error_message([&] { load_state_dict(m, shape, dir + "/x.safetensors"); });
     EXPECT_NE(msg.find("proj"), std::string::npos) << msg;
     EXPECT_NE(msg.find("[4, 6]"), std::string::npos) << msg;
     EXPECT_NE(msg.find("(6, 4)"), std::string::npos) << msg;
 
     SafeTensors extra = full;
     extra.tensors["pooler.weight"] = NdArray::from(std::vector<float>(4, 0.f), {4});
-    msg = message_of([&] { load_state_dict(m, extra, dir + "/x.safetensors"); });
+    msg = test::error_message([&] { load_state_dict(m, extra, dir + "/x.safetensors"); });
     EXPECT_NE(msg.find("pooler.weight"), std::string::npos) << msg;
     EXPECT_NE(msg.find("unexpected"), std::string::npos) << msg;
 
@@ -103,7 +94,7 @@ TEST(StateDict, PrefixedLayoutReadsOnePartOfALargerFile) {
     SafeTensors st;
     for (const auto& p : a.named_parameters()) st.tensors["model." + p.key()] = array_of(p.value());
     st.tensors["other.thing"] = NdArray::from(std::vector<float>(2, 1.f), {2});
-    EXPECT_NE(message_of([&] { load_state_dict(b, st, "f", prefixed_layout("model.")); }).find("other.thing"), std::string::npos);
+    EXPECT_NE(test::error_message([&] { load_state_dict(b, st, "f", prefixed_layout("model.")); }).find("other.thing"), std::string::npos);
     load_state_dict(b, st, "f", prefixed_layout("model.", true));
     EXPECT_TRUE(same_parameters(a, b));
 }

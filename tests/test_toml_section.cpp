@@ -12,16 +12,6 @@
 using namespace t2imu;
 
 namespace {
-// The message of the Error `f` throws ("" and a test failure when it throws none).
-template <class F> std::string error_of(F f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "no Error thrown";
-    return "";
-}
 bool has(const std::string& message, const std::string& part) { return message.find(part) != std::string::npos; }
 }  // namespace
 
@@ -54,13 +44,13 @@ TEST(TomlSection, WrongTypesAreRefusedNamingTheField) {
     bool flag = false;
     double rate = 0;
     // An integer field takes only a TOML integer (a float out of range must not be converted).
-    std::string m = error_of([&] { synth.read("steps", steps); });
+    std::string m = test::error_message([&] { synth.read("steps", steps); });
     EXPECT_TRUE(has(m, "cfg.toml") && has(m, "synth.steps") && has(m, "an integer")) << m;
-    m = error_of([&] { synth.read("name", name); });
+    m = test::error_message([&] { synth.read("name", name); });
     EXPECT_TRUE(has(m, "synth.name") && has(m, "a string")) << m;
-    m = error_of([&] { synth.read("flag", flag); });
+    m = test::error_message([&] { synth.read("flag", flag); });
     EXPECT_TRUE(has(m, "synth.flag") && has(m, "true or false")) << m;
-    m = error_of([&] { synth.read("rate", rate); });
+    m = test::error_message([&] { synth.read("rate", rate); });
     EXPECT_TRUE(has(m, "synth.rate") && has(m, "a number")) << m;
     EXPECT_EQ(steps, 0);  // nothing assigned on failure
 }
@@ -71,12 +61,12 @@ TEST(TomlSection, RequiredKeysAndArraysOfStrings) {
     std::vector<std::string> positions = {"old"}, other;
     s.read("positions", positions);
     EXPECT_EQ(positions, (std::vector<std::string>{"waist", "wrist"}));
-    std::string m = error_of([&] { s.read("mixed", other); });
+    std::string m = test::error_message([&] { s.read("mixed", other); });
     EXPECT_TRUE(has(m, "mixed") && has(m, "an array of strings")) << m;
-    m = error_of([&] { s.read("not_array", other); });
+    m = test::error_message([&] { s.read("not_array", other); });
     EXPECT_TRUE(has(m, "not_array") && has(m, "an array of strings")) << m;
     std::string model;
-    m = error_of([&] { s.require("model", model); });
+    m = test::error_message([&] { s.require("model", model); });
     EXPECT_TRUE(has(m, "c.toml") && has(m, "model") && has(m, "required")) << m;
 }
 
@@ -108,12 +98,12 @@ TEST(TomlSection, SubTablesAndArraysOfTablesNameTheirPath) {
     std::string name;
     sources[1].read("name", name);
     EXPECT_EQ(name, "retrieval");
-    std::string m = error_of([&] { sources[1].refuse_unknown_keys(); });
+    std::string m = test::error_message([&] { sources[1].refuse_unknown_keys(); });
     EXPECT_TRUE(has(m, "exp.toml") && has(m, "sources[1].typo") && has(m, "a known key")) << m;
     // A scalar where a table is expected, and where an array of tables is.
-    m = error_of([&] { top.table("scalar"); });
+    m = test::error_message([&] { top.table("scalar"); });
     EXPECT_TRUE(has(m, "scalar") && has(m, "a table")) << m;
-    m = error_of([&] { top.array_of_tables("scalar"); });
+    m = test::error_message([&] { top.array_of_tables("scalar"); });
     EXPECT_TRUE(has(m, "scalar") && has(m, "an array of tables")) << m;
     // Every top-level key has now been named by a read.
     EXPECT_NO_THROW(top.refuse_unknown_keys());
@@ -124,14 +114,14 @@ TEST(TomlSection, UnknownKeysAreRefusedByName) {
     TomlSection s(doc, "typo.toml", "");
     int steps = 0;
     s.read("steps", steps);
-    const std::string m = error_of([&] { s.refuse_unknown_keys(); });
+    const std::string m = test::error_message([&] { s.refuse_unknown_keys(); });
     EXPECT_TRUE(has(m, "typo.toml") && has(m, "stpes")) << m;
 }
 
 TEST(TomlSection, ParseErrorsNameTheSource) {
-    std::string m = error_of([] { parse_toml_text("steps = = 4\n", "broken.toml"); });
+    std::string m = test::error_message([] { parse_toml_text("steps = = 4\n", "broken.toml"); });
     EXPECT_TRUE(has(m, "broken.toml") && has(m, "toml")) << m;
     const std::string dir = test::scratch_dir("toml_section");
-    m = error_of([&] { parse_toml_file(dir + "/absent.toml"); });
+    m = test::error_message([&] { parse_toml_file(dir + "/absent.toml"); });
     EXPECT_TRUE(has(m, dir + "/absent.toml")) << m;
 }

@@ -11,6 +11,8 @@
 #include <filesystem>
 #include <mutex>
 
+#include "core/error.hpp"
+
 namespace t2imu::test {
 
 namespace fs = std::filesystem;
@@ -76,6 +78,16 @@ CliResult run_cli(const std::string& args) {
     const int status = pclose(pipe);
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return r;
+}
+
+std::string error_message(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "no Error thrown";
+    return "";
 }
 
 }  // namespace t2imu::test

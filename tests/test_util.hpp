@@ -3,6 +3,7 @@
 #pragma once
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <string>
 
 namespace t2imu::test {
@@ -35,5 +36,8 @@ struct CliResult {
 CliResult run_cli(const std::string& args);
 
 std::string source_dir();
+
+// The message of the t2imu::Error `f` throws; a test failure and "" when it throws none.
+std::string error_message(const std::function<void()>& f);
 
 }  // namespace t2imu::test

@@ -19,12 +19,6 @@ constexpr double kMinSeconds = 2;
 constexpr double kMinDominantHz = 0.3;
 constexpr double kHighFrequencyHz = 3;
 
-double mean_of(const std::vector<double>& x) {
-    double s = 0;
-    for (double v : x) s += v;
-    return s / static_cast<double>(x.size());
-}
-
 
 double percentile(std::vector<double> x, double p) {
     std::sort(x.begin(), x.end());
@@ -47,9 +41,15 @@ std::vector<double> periodogram(const std::vector<double>& x, size_t* length) {
     return power;
 }
 
-double median_of(std::vector<double> x) { return percentile(std::move(x), 0.5); }
-
 }  // namespace
+
+double mean_of(const std::vector<double>& x) {
+    double s = 0;
+    for (double v : x) s += v;
+    return x.empty() ? 0 : s / static_cast<double>(x.size());
+}
+
+double median_of(std::vector<double> x) { return x.empty() ? 0 : percentile(std::move(x), 0.5); }
 
 double standard_deviation(const std::vector<double>& x) {
     if (x.size() < 2) return 0;

@@ -25,6 +25,9 @@
 
 namespace t2imu {
 
+// The mean and the median (halfway between the middle two for an even count) of x; 0 when x is empty.
+double mean_of(const std::vector<double>& x);
+double median_of(std::vector<double> x);
 // The population standard deviation of x (divides by n; 0 for fewer than 2 values).
 double standard_deviation(const std::vector<double>& x);
 // The frequency (Hz) of the highest periodogram peak of x's mean-removed values at or above min_hz, zero-padded to

@@ -1,8 +1,8 @@
 #include "analysis/static_segments.hpp"
 
-#include <algorithm>
 #include <cmath>
 
+#include "analysis/signal_statistics.hpp"
 #include "core/error.hpp"
 
 namespace t2imu {
@@ -11,27 +11,6 @@ namespace {
 
 constexpr double kStandardGravity = 9.80665;  // m/s^2
 const char* const kAxes[3] = {"x", "y", "z"};
-
-double mean_of(const std::vector<double>& v) {
-    double s = 0;
-    for (double x : v) s += x;
-    return v.empty() ? 0 : s / static_cast<double>(v.size());
-}
-
-double sd_of(const std::vector<double>& v) {
-    if (v.size() < 2) return 0;
-    const double m = mean_of(v);
-    double s = 0;
-    for (double x : v) s += (x - m) * (x - m);
-    return std::sqrt(s / static_cast<double>(v.size()));
-}
-
-double median_of(std::vector<double> v) {
-    if (v.empty()) return 0;
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 // Channel c (0-5) of samples [from, from + n).
 std::vector<double> channel(const ImuRecording& r, int c, size_t from, size_t n) {
@@ -58,13 +37,13 @@ nlohmann::json quietest_window_statistics(const ImuRecording& r, double window_s
     size_t best = 0;
     double best_sd = INFINITY;
     for (size_t from = 0; from + n <= r.samples.size(); from += n)
-        if (const double sd = sd_of(magnitude(r, from, n)); sd < best_sd) best_sd = sd, best = from;
+        if (const double sd = standard_deviation(magnitude(r, from, n)); sd < best_sd) best_sd = sd, best = from;
     nlohmann::json j;
     double mean_acc[3];
     for (int a = 0; a < 3; ++a) {
         const std::vector<double> acc = channel(r, a, best, n), gyr = channel(r, 3 + a, best, n);
-        j[std::string("acc_sd_") + kAxes[a]] = sd_of(acc);
-        j[std::string("gyr_sd_") + kAxes[a]] = sd_of(gyr);
+        j[std::string("acc_sd_") + kAxes[a]] = standard_deviation(acc);
+        j[std::string("gyr_sd_") + kAxes[a]] = standard_deviation(gyr);
         j[std::string("gyr_mean_") + kAxes[a]] = mean_of(gyr);
         mean_acc[a] = mean_of(acc);
     }
@@ -98,7 +77,7 @@ nlohmann::json static_segment_noise(const std::vector<ImuRecording>& recordings,
     for (const char* axis : kAxes) {
         measured[std::string("acc_sd_") + axis] = median_of(column(std::string("acc_sd_") + axis));
         measured[std::string("gyr_sd_") + axis] = median_of(column(std::string("gyr_sd_") + axis));
-        measured[std::string("gyr_offset_sd_") + axis] = sd_of(column(std::string("gyr_mean_") + axis));
+        measured[std::string("gyr_offset_sd_") + axis] = standard_deviation(column(std::string("gyr_mean_") + axis));
     }
     std::vector<double> norm_error = column("acc_norm_error");
     for (double& e : norm_error) e = std::fabs(e);
