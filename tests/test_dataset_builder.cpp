@@ -170,7 +170,9 @@ TEST(DatasetBuilder, DerivedClipsCarryTheirProvenanceCountApartAndCanBeLeftOut) 
         EXPECT_TRUE(p["derived_from"] == files[0] || p["derived_from"] == files[1]) << p;
         EXPECT_TRUE(p.contains("parameters") && p.contains("seed") && p.contains("method")) << p;
         for (const auto& source : m.rows)  // an edit is bound by its source clip's licence
-            if (source[m.column("file")] == p["derived_from"]) EXPECT_EQ(row[clips.column("licence")], source[m.column("licence")]);
+            if (source[m.column("file")] == p["derived_from"]) {
+                EXPECT_EQ(row[clips.column("licence")], source[m.column("licence")]);
+            }
     }
     EXPECT_EQ(per_source["ReActIdle/standing"], 6);  // 92 s in 10 chunks, 60 s of them kept
     EXPECT_EQ(per_source["edited/sitting"], kSitsPerRecording);

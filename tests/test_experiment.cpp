@@ -63,7 +63,7 @@ ExperimentConfig tiny_config(const Fixture& f) {
     c.synth.filter = false;
     c.synth.vocab = f.data + "/vocab.safetensors";
     c.sources = {{"tiny", f.model}, {"same", f.model}, {"retrieval", "retrieval:" + f.data}};
-    c.real_sets = {{"fake", f.real, f.prompts, "sisfall", {"waist"}, 2}};
+    c.real_sets = {{"fake", f.real, f.prompts, "sisfall", {"waist"}, 2, ""}};
     c.har.repeats = 2;
     c.har.max_epochs = 2;
     c.tsne_points = 20;

@@ -115,7 +115,9 @@ TEST(Fitting, RetargetingKeepsDirectionsTakesTheBodysLengthsAndScalesTheRoot) {
             const Vector3d in = frames[f][j] - frames[f][p], out = fit.frames[f].joints[j] - fit.frames[f].joints[p];
             const Vector3d rest = short_body.rest_joints()[j] - short_body.rest_joints()[p];
             EXPECT_NEAR(out.norm(), rest.norm(), 1e-12);
-            if (p != pelvis && p != spine3) EXPECT_LT((out.normalized() - in.normalized()).norm(), 1e-9) << kJointNames[j];
+            if (p != pelvis && p != spine3) {
+                EXPECT_LT((out.normalized() - in.normalized()).norm(), 1e-9) << kJointNames[j];
+            }
         }
     }
 }

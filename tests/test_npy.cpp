@@ -215,7 +215,9 @@ TEST(Npy, ReadsEverySharedReferenceFile) {
         const std::string head(raw.begin(), raw.begin() + std::min<size_t>(raw.size(), 128));
         fortran += head.find("'fortran_order': True") != std::string::npos;
         // A C-ordered NumPy file re-serialises to the same bytes: same header, same padding, same data.
-        if (head.find("'fortran_order': False") != std::string::npos) EXPECT_EQ(serialize_npy(a), raw) << e.path();
+        if (head.find("'fortran_order': False") != std::string::npos) {
+            EXPECT_EQ(serialize_npy(a), raw) << e.path();
+        }
         ++files;
     }
     EXPECT_GE(files, 100u);

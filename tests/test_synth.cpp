@@ -97,7 +97,9 @@ TEST(Synth, WritesAnImuDatasetWithItsMotions) {
         EXPECT_DOUBLE_EQ(rec.rate_hz, 50);
         EXPECT_EQ(rec.t.size(), 98u);  // 40 frames at 20 fps span 1.95 s: samples at 0, 0.02, ..., 1.94 s
         walking += rec.activity == "walking";
-        if (rec.activity == "walking") EXPECT_EQ(rec.extra.at("prompt"), "a person walks forward slowly");
+        if (rec.activity == "walking") {
+            EXPECT_EQ(rec.extra.at("prompt"), "a person walks forward slowly");
+        }
     }
     EXPECT_EQ(walking, 4);
     // Job k draws from seed + k; the motion and its BVH are kept.
@@ -231,7 +233,7 @@ TEST(Synth, FilterRegeneratesThenDropsWhatNeverPasses) {
     o.samples_per_prompt = 1;
     o.filter = true;
     o.max_retries = 1;
-    o.thresholds = {0, 0, 0, 0, 0};  // every motion moves, so every attempt fails
+    o.thresholds = {0, 0, 0, 0, 0, 0};  // every motion moves, so every attempt fails
     const nlohmann::json r = run_synth(o);
     EXPECT_EQ(r["motions_dropped"], 2);
     EXPECT_EQ(r["jobs_regenerated"], 2);

@@ -51,9 +51,13 @@ TEST(VirtualImu, StandingBodyReadsGravityOnEachSensorsUpAxis) {
             EXPECT_LT(imu.signals[i].gyr[k].norm(), 1e-9) << name;
             // Phones stand upright (y up; along the limb on shin, thigh and upper arm); HuGaDB's x points
             // down the leg, so it reads -g, as the real recordings do while standing.
-            if (name.find("forearm") != std::string::npos) EXPECT_NEAR(a.x(), -kGravity, 1e-9) << name;
-            else if (i < 7) EXPECT_NEAR(a.y(), kGravity, 1e-9) << name;
-            else if (name.find("foot") == std::string::npos) EXPECT_NEAR(a.x(), -kGravity, 1e-9) << name;
+            if (name.find("forearm") != std::string::npos) {
+                EXPECT_NEAR(a.x(), -kGravity, 1e-9) << name;
+            } else if (i < 7) {
+                EXPECT_NEAR(a.y(), kGravity, 1e-9) << name;
+            } else if (name.find("foot") == std::string::npos) {
+                EXPECT_NEAR(a.x(), -kGravity, 1e-9) << name;
+            }
         }
     }
 }

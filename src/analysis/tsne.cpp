@@ -148,7 +148,7 @@ private:
         Vector2d mass_centre = Vector2d::Zero();
         double count = 0;
         bool leaf = true;
-        std::vector<int> points;  // a leaf's points (more than one only when they coincide)
+        std::vector<int> points = {};  // a leaf's points (more than one only when they coincide)
         int child[4] = {-1, -1, -1, -1};
         bool holds(int i) const { return std::find(points.begin(), points.end(), i) != points.end(); }
     };
