@@ -4,7 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
-#include "diffusion/samplers.hpp"
+#include "diffusion/sample_options.hpp"
 
 namespace t2imu::cli {
 

@@ -15,22 +15,6 @@ torch::Tensor step_tensor(int t, const torch::Tensor& x) {
 
 }  // namespace
 
-const std::vector<std::string>& sampler_names() {
-    static const std::vector<std::string> names = {"ddpm", "ddim", "dpmpp"};
-    return names;
-}
-
-const std::string& sampler_name(Sampler sampler) { return sampler_names()[static_cast<size_t>(sampler)]; }
-
-Sampler parse_sampler(const std::string& name, const std::string& option) {
-    const std::vector<std::string>& names = sampler_names();
-    for (size_t i = 0; i < names.size(); ++i)
-        if (names[i] == name) return static_cast<Sampler>(i);
-    throw Error(option, "sampler", "ddpm, ddim or dpmpp", name);
-}
-
-int denoiser_calls(Sampler sampler, int steps, int schedule_steps) { return sampler == Sampler::ddpm ? schedule_steps : steps; }
-
 std::vector<int> sampling_timesteps(int schedule_steps, int steps, int t_start) {
     const int first = t_start < 0 ? schedule_steps - 1 : t_start;
     if (first >= schedule_steps) throw Error("sampler", "start step", "0.." + std::to_string(schedule_steps - 1), std::to_string(first));

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "diffusion/gaussian_diffusion.hpp"
+#include "diffusion/sample_options.hpp"
 
 namespace t2imu {
 
@@ -40,12 +41,5 @@ torch::Tensor sample_dpmpp_2m(const NoiseSchedule& schedule, const X0Predictor& 
 // Descending, first t_start (-1 = T-1), last 0, quadratic spacing as above; at most t_start + 1 steps.
 std::vector<int> sampling_timesteps(int schedule_steps, int steps, int t_start = -1);
 
-// The samplers by the names options, configs and records use: "ddpm", "ddim", "dpmpp" (parsed here only).
-enum class Sampler { ddpm, ddim, dpmpp };
-const std::vector<std::string>& sampler_names();      // in the enum's order
-const std::string& sampler_name(Sampler sampler);
-Sampler parse_sampler(const std::string& name, const std::string& option = "--sampler");  // Error naming `option`
-// Denoiser evaluations per motion: DDPM takes every step of the model's schedule, the others `steps`.
-int denoiser_calls(Sampler sampler, int steps, int schedule_steps);
 
 }  // namespace t2imu

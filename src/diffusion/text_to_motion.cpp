@@ -142,21 +142,6 @@ std::unique_ptr<MotionModel> load_motion_model(const std::string& dir, const std
     return model;
 }
 
-void SampleOptions::validate() const {
-    if (frames < 4 || frames > 196) throw Error("sampling", "--frames", "4 to 196 (20 fps)", std::to_string(frames));
-    // ddpm takes every step of the model's schedule and ignores `steps`.
-    if (sampler != Sampler::ddpm && (steps < 1 || steps > 10000))
-        throw Error("sampling", "--steps", "1 to 10000 denoiser evaluations", std::to_string(steps));
-    // A non-finite scale turns every feature into NaN, found only much later (inverse kinematics, the IMU stage).
-    if (!std::isfinite(guidance)) throw Error("sampling", "--guidance", "a finite scale", std::to_string(guidance));
-    if (!(eta >= 0 && eta <= 1)) throw Error("sampling", "--eta", "0 to 1", std::to_string(eta));
-    if (batch < 1) throw Error("sampling", "--batch", "at least 1", std::to_string(batch));
-    if (!(strength > 0 && strength <= 1)) throw Error("sampling", "--strength", "above 0 and at most 1", std::to_string(strength));
-    for (const FeatureMatrix& m : start_motions)
-        if (m.rows() != frames || m.cols() != 263)
-            throw Error("sampling", "start motion", std::to_string(frames) + " x 263 features", std::to_string(m.rows()) + " x " + std::to_string(m.cols()));
-}
-
 std::vector<FeatureMatrix> sample_motions(MotionModel& model, const std::vector<std::string>& prompts, const SampleOptions& o) {
     o.validate();
     if (!o.seeds.empty() && o.seeds.size() != prompts.size()) throw Error("sample", "seeds", "one seed per prompt", std::to_string(o.seeds.size()));

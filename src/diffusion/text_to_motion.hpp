@@ -14,6 +14,7 @@
 
 #include "diffusion/mdm.hpp"
 #include "diffusion/noise_schedule.hpp"
+#include "diffusion/sample_options.hpp"
 #include "diffusion/samplers.hpp"
 #include "motion/joint_sequence.hpp"
 #include "motion/normalization.hpp"
@@ -54,26 +55,6 @@ struct MotionModel {
 // `device` is cpu, cuda or cuda:N.
 std::unique_ptr<MotionModel> load_motion_model(const std::string& dir, const std::string& device = "cpu");
 
-struct SampleOptions {
-    int frames = 120;              // 20 fps; at most 196 (HumanML3D's longest)
-    Sampler sampler = Sampler::ddpm;  // MDM's own: every step of the schedule (t2imu sample's default)
-    int steps = 50;                   // denoiser evaluations for ddim and dpmpp (ddpm uses every step)
-    double guidance = 2.5;
-    double eta = 0.0;              // ddim only
-    uint64_t seed = 0;
-    std::vector<uint64_t> seeds;   // when given, one per prompt: sample i draws from seeds[i] instead of seed + i
-    int batch = 16;
-    // The hybrid (SDEdit, Meng et al. 2022): when given, one per prompt, motion i starts from start_motions[i]
-    // (de-normalised features [frames, 263]) noised to step t_s = round(strength (T-1)) with its seed's noise,
-    // x_ts = sqrt(abar_ts) x0 + sqrt(1 - abar_ts) eps, instead of from pure noise; strength 1 is pure noise
-    // again, small strengths keep the start's motion. The few-step samplers spread min(steps, t_s + 1)
-    // evaluations over t_s .. 0; DDPM takes t_s + 1 steps.
-    std::vector<FeatureMatrix> start_motions;
-    double strength = 1.0;
-
-    // Throws Error naming the option (--frames, --steps, --guidance, --strength...) for a value out of range or not finite.
-    void validate() const;
-};
 
 // One de-normalised feature matrix [frames, 263] per prompt; validates `options` first.
 std::vector<FeatureMatrix> sample_motions(MotionModel& model, const std::vector<std::string>& prompts, const SampleOptions& options);

@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "core/csv.hpp"
-#include "diffusion/samplers.hpp"
+#include "diffusion/sample_options.hpp"
 #include "text/prompt_set.hpp"
 
 namespace t2imu {

@@ -28,7 +28,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "diffusion/text_to_motion.hpp"
+#include "diffusion/sample_options.hpp"
 #include "motion/motion_quality.hpp"
 
 namespace t2imu {

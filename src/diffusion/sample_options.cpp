@@ -1,0 +1,40 @@
+#include "diffusion/sample_options.hpp"
+
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace t2imu {
+
+const std::vector<std::string>& sampler_names() {
+    static const std::vector<std::string> names = {"ddpm", "ddim", "dpmpp"};
+    return names;
+}
+
+const std::string& sampler_name(Sampler sampler) { return sampler_names()[static_cast<size_t>(sampler)]; }
+
+Sampler parse_sampler(const std::string& name, const std::string& option) {
+    const std::vector<std::string>& names = sampler_names();
+    for (size_t i = 0; i < names.size(); ++i)
+        if (names[i] == name) return static_cast<Sampler>(i);
+    throw Error(option, "sampler", "ddpm, ddim or dpmpp", name);
+}
+
+int denoiser_calls(Sampler sampler, int steps, int schedule_steps) { return sampler == Sampler::ddpm ? schedule_steps : steps; }
+
+void SampleOptions::validate() const {
+    if (frames < 4 || frames > 196) throw Error("sampling", "--frames", "4 to 196 (20 fps)", std::to_string(frames));
+    // ddpm takes every step of the model's schedule and ignores `steps`.
+    if (sampler != Sampler::ddpm && (steps < 1 || steps > 10000))
+        throw Error("sampling", "--steps", "1 to 10000 denoiser evaluations", std::to_string(steps));
+    // A non-finite scale turns every feature into NaN, found only much later (inverse kinematics, the IMU stage).
+    if (!std::isfinite(guidance)) throw Error("sampling", "--guidance", "a finite scale", std::to_string(guidance));
+    if (!(eta >= 0 && eta <= 1)) throw Error("sampling", "--eta", "0 to 1", std::to_string(eta));
+    if (batch < 1) throw Error("sampling", "--batch", "at least 1", std::to_string(batch));
+    if (!(strength > 0 && strength <= 1)) throw Error("sampling", "--strength", "above 0 and at most 1", std::to_string(strength));
+    for (const FeatureMatrix& m : start_motions)
+        if (m.rows() != frames || m.cols() != 263)
+            throw Error("sampling", "start motion", std::to_string(frames) + " x 263 features", std::to_string(m.rows()) + " x " + std::to_string(m.cols()));
+}
+
+}  // namespace t2imu
