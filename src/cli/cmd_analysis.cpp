@@ -88,7 +88,7 @@ static void add_static_noise(CLI::App& analysis) {
     static double window = 2;
     cmd->add_option("--real", real, "an IMU data set folder (manifest.csv)")->required()->check(CLI::ExistingDirectory);
     cmd->add_option("--position", position, "only this position (waist); default: every position");
-    cmd->add_option("--window", window, "window length, s (default 2)");
+    cmd->add_option("--window", window, "window length, s");
     cmd->add_option("--noise", noise, "a device model to set beside the measurement (as synth --noise: sisfall, umafall, ...)");
     cmd->add_option("--out", out, "RESULT.json")->required();
     cmd->callback([] {

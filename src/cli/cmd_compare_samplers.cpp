@@ -48,16 +48,16 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--prompts", a.prompts, "prompt set: activity<TAB>prompt per line")->required()->check(CLI::ExistingFile);
     cmd->add_option("--samplers", a.samplers, "comma-separated: ddpm, ddim:K, dpmpp:K; the first is the reference "
                                               "(default ddpm,ddim:10,ddim:20,ddim:50,dpmpp:5,dpmpp:10,dpmpp:20)");
-    cmd->add_option("--samples-per-prompt", o.samples_per_prompt, "motions per prompt (default 1)");
-    cmd->add_option("--seconds", a.seconds, "motion length, s (default 6)");
+    cmd->add_option("--samples-per-prompt", o.samples_per_prompt, "motions per prompt");
+    cmd->add_option("--seconds", a.seconds, "motion length, s");
     cmd->add_option("--seed", o.seed, "seed of the first motion; motion i draws from seed + i in every sampler");
-    cmd->add_option("--guidance", o.guidance, "classifier-free guidance scale (default 2.5)");
-    cmd->add_option("--batch", o.batch, "motions per denoiser batch (default 16)");
+    cmd->add_option("--guidance", o.guidance, "classifier-free guidance scale");
+    cmd->add_option("--batch", o.batch, "motions per denoiser batch");
     cmd->add_option("--activity-reference", o.activity_reference, "activity check reference CSV (models/motion-activity.csv)")
         ->check(CLI::ExistingFile);
     cmd->add_option("--captured", o.captured_dataset, "HumanML3D-layout dataset: a last row with its captured clips' statistics")
         ->check(CLI::ExistingDirectory);
-    cmd->add_option("--captured-split", o.captured_split, "split of --captured (default test)");
+    cmd->add_option("--captured-split", o.captured_split, "split of --captured");
     cmd->add_option("--out", a.out, "output CSV")->required();
     cmd->callback([] { run(a); });
 });

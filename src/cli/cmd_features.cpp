@@ -22,9 +22,9 @@ static void add_catch22_command(CLI::App& features) {
     cmd->add_option("--dataset", dataset, "IMU dataset (manifest.csv layout): batch mode")->check(CLI::ExistingDirectory);
     cmd->add_option("--out", out, "batch mode: output CSV");
     cmd->add_option("--positions", positions, "batch mode: positions, comma-separated (default: the only one)");
-    cmd->add_option("--rate", w.rate_hz, "batch mode: window rate, Hz (default 20)");
-    cmd->add_option("--window-s", w.window_s, "batch mode: window length, s (default 2)");
-    cmd->add_option("--overlap", w.overlap, "batch mode: overlap (default 0.5)");
+    cmd->add_option("--rate", w.rate_hz, "batch mode: window rate, Hz");
+    cmd->add_option("--window-s", w.window_s, "batch mode: window length, s");
+    cmd->add_option("--overlap", w.overlap, "batch mode: overlap");
     cmd->add_flag("--gyro", w.gyro, "batch mode: gyroscope channels too");
     cmd->add_flag("--catch24", catch24, "add DN_Mean and DN_Spread_Std (catch24)");
     cmd->callback([] {

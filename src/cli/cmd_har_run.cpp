@@ -17,8 +17,8 @@ namespace {
 struct HarArgs {
     std::string train, test, positions, test_positions, channels = "acc", classes, out;
     int folds = 0;
-    double rate = 20, window = 2, overlap = 0.5;
     bool loso = false;
+    WindowOptions windows;
     HarOptions options;
 };
 
@@ -31,10 +31,7 @@ std::vector<std::string> split_list(const std::string& s) {
 }
 
 void run(HarArgs a) {
-    WindowOptions w;
-    w.rate_hz = a.rate;
-    w.window_s = a.window;
-    w.overlap = a.overlap;
+    WindowOptions w = a.windows;
     w.gyro = a.channels == "acc,gyr";
     w.positions = split_list(a.positions);
     WindowOptions wt = w;
@@ -85,12 +82,12 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--positions", a.positions, "training positions, comma-separated (a name without side matches either side)");
     cmd->add_option("--test-positions", a.test_positions, "test positions, in the order of --positions");
     cmd->add_option("--channels", a.channels, "acc or acc,gyr");
-    cmd->add_option("--rate", a.rate, "evaluation rate, Hz (default 20)");
-    cmd->add_option("--window", a.window, "window length, s (default 2)");
-    cmd->add_option("--overlap", a.overlap, "window overlap, 0..1 (default 0.5)");
+    cmd->add_option("--rate", a.windows.rate_hz, "evaluation rate, Hz");
+    cmd->add_option("--window", a.windows.window_s, "window length, s");
+    cmd->add_option("--overlap", a.windows.overlap, "window overlap, 0..1");
     cmd->add_option("--folds", a.folds, "with --loso: subjects dealt into this many folds (default: one per subject)");
     cmd->add_option("--classes", a.classes, "keep only these training classes (after the data set's class map)");
-    cmd->add_option("--repeats", a.options.repeats, "trainings with consecutive seeds (default 10)");
+    cmd->add_option("--repeats", a.options.repeats, "trainings with consecutive seeds");
     cmd->add_option("--epochs", a.options.max_epochs, "most epochs per training (early stopping, patience 5)");
     cmd->add_option("--seed", a.options.seed, "first seed");
     cmd->add_option("--out", a.out, "RESULT.json")->required();

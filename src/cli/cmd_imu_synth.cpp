@@ -85,10 +85,10 @@ static CommandRegistrar registrar([](CLI::App& root) {
     auto* cmd = imu.add_subcommand("synth", "joints [F,22,3] -> accelerometer + gyroscope CSVs per body and sensor position");
     static SynthArgs a;
     cmd->add_option("--joints", a.joints, "joints .npy [F,22,3], metres, Y up")->required()->check(CLI::ExistingFile);
-    cmd->add_option("--fps", a.fps, "frame rate of the joints (default 20, HumanML3D)");
+    cmd->add_option("--fps", a.fps, "frame rate of the joints (HumanML3D: 20)");
     cmd->add_option("--body", a.body, "preset:NAME | paper8 | height=CM,mass=KG,sex=m|f | smpl:FILE.npz[,betas=..] | none; join with +");
     cmd->add_option("--sensors", a.sensors, "placement sets: realworld, sisfall, umafall, hugadb, FILE.toml (comma-separated)");
-    cmd->add_option("--rate", a.rate, "output sample rate, Hz (default 50)");
+    cmd->add_option("--rate", a.rate, "output sample rate, Hz");
     cmd->add_option("--noise", a.noise, "sensor error model: none | smartphone | hugadb | sisfall | umafall [,key=value...]");
     cmd->add_option("--realism", a.realism, "realism model: none | sisfall | umafall | hugadb | smartphone | FILE.toml (tilt, soft tissue, landings, tempo, device)");
     cmd->add_option("--mount-jitter", a.jitter, "random mounting rotation up to DEG degrees (seeded)");

@@ -22,7 +22,7 @@ namespace {
 
 struct SampleArgs {
     std::string model, prompt, prompts, out;
-    double seconds = 0;
+    double seconds = 0;  // 0: not given (then frames, then SampleOptions' default length)
     int frames = 0;
     SampleOptions options;
 };
@@ -30,9 +30,10 @@ struct SampleArgs {
 void run(SampleArgs a) {
     check_usage([&] {
         if (a.prompt.empty() == a.prompts.empty()) throw Error("sample", "prompt", "either --prompt TEXT or --prompts FILE");
-        if (a.seconds > 0 && a.frames > 0) throw Error("sample", "length", "either --seconds or --frames");
+        if (a.seconds != 0 && a.frames != 0) throw Error("sample", "length", "either --seconds or --frames");
         if (!a.prompt.empty()) check_prompt_text(a.prompt, "--prompt", "text");
-        a.options.frames = a.frames > 0 ? a.frames : a.seconds > 0 ? static_cast<int>(std::lround(a.seconds * 20)) : 120;
+        if (a.frames != 0) a.options.frames = a.frames;
+        if (a.seconds != 0) a.options.frames = static_cast<int>(std::lround(a.seconds * 20));
         a.options.validate();
         check_output_path(a.out, "--out");
     });
@@ -74,7 +75,7 @@ static void add_eval_lacc(CLI::App& root) {
     static uint64_t seed = 0;
     cmd->add_option("--model", model, "model folder")->required()->check(CLI::ExistingDirectory);
     cmd->add_option("--dataset", dataset, "HumanML3D-layout dataset")->required()->check(CLI::ExistingDirectory);
-    cmd->add_option("--split", split, "train, val, test or all (default test)");
+    cmd->add_option("--split", split, "train, val, test or all");
     cmd->add_option("--seed", seed, "seed of the draws (use the same for the models you compare)");
     cmd->add_option("--out", out, "output CSV")->required();
     cmd->callback([] {
@@ -97,8 +98,8 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--seconds", a.seconds, "length in seconds (20 fps)");
     cmd->add_option("--frames", a.frames, "length in frames (at most 196; default 120)");
     add_sampler_option(*cmd, a.options.sampler, "ddpm (default), ddim or dpmpp");
-    cmd->add_option("--steps", a.options.steps, "denoiser evaluations for ddim/dpmpp (default 50)");
-    cmd->add_option("--guidance", a.options.guidance, "classifier-free guidance scale (default 2.5)");
+    cmd->add_option("--steps", a.options.steps, "denoiser evaluations for ddim/dpmpp");
+    cmd->add_option("--guidance", a.options.guidance, "classifier-free guidance scale");
     cmd->add_option("--eta", a.options.eta, "ddim noise (0 = deterministic)");
     cmd->add_option("--seed", a.options.seed, "seed of sample 0; sample i uses seed + i");
     cmd->add_option("--batch", a.options.batch, "prompts per batch (does not change the samples)");

@@ -63,28 +63,28 @@ static CommandRegistrar registrar([](CLI::App& root) {
     static SynthArgs a;
     SynthOptions& o = a.options;
     cmd->add_option("--prompts", o.prompts, "prompt set: activity<TAB>prompt per line (prompts/*.tsv)")->required()->check(CLI::ExistingFile);
-    cmd->add_option("--samples-per-prompt", o.samples_per_prompt, "motions per prompt (default 1)");
-    cmd->add_option("--model", o.model, "model folder (default models/default), retrieval:DATASET, or hybrid:MODEL,DATASET,STRENGTH (a retrieved clip noised to STRENGTH in (0, 1] and finished by the model)");
+    cmd->add_option("--samples-per-prompt", o.samples_per_prompt, "motions per prompt");
+    cmd->add_option("--model", o.model, "model folder, retrieval:DATASET, or hybrid:MODEL,DATASET,STRENGTH (a retrieved clip noised to STRENGTH in (0, 1] and finished by the model)");
     cmd->add_option("--vocab", o.vocab, "GloVe vocabulary for retrieval (default $T2IMU_VOCAB or cache/text/glove-100k.safetensors)");
     add_sampler_option(*cmd, o.sampling.sampler, "dpmpp (default), ddim or ddpm");
-    cmd->add_option("--steps", o.sampling.steps, "denoiser evaluations for ddim/dpmpp (default 20)");
-    cmd->add_option("--guidance", o.sampling.guidance, "classifier-free guidance scale (default 2.5)");
-    cmd->add_option("--seconds", o.seconds, "motion length, s (default 6; at most 9.8)");
+    cmd->add_option("--steps", o.sampling.steps, "denoiser evaluations for ddim/dpmpp");
+    cmd->add_option("--guidance", o.sampling.guidance, "classifier-free guidance scale");
+    cmd->add_option("--seconds", o.seconds, "motion length, s (at most 9.8)");
     cmd->add_option("--seed", o.sampling.seed, "seed of job 0; job k draws from seed + k");
     cmd->add_option("--batch", o.sampling.batch, "motions per sampling batch (fixed groups of jobs; another size changes motions by float rounding only; default 16)");
-    cmd->add_option("--bodies", o.bodies, "body shapes (default paper8; as imu synth --body)");
-    cmd->add_option("--sensors", o.sensors, "placement sets (default realworld; as imu synth --sensors)");
-    cmd->add_option("--rate", o.rate_hz, "sensor sample rate, Hz (default 50)");
+    cmd->add_option("--bodies", o.bodies, "body shapes (as imu synth --body)");
+    cmd->add_option("--sensors", o.sensors, "placement sets (as imu synth --sensors)");
+    cmd->add_option("--rate", o.rate_hz, "sensor sample rate, Hz");
     cmd->add_option("--noise", o.noise, "sensor error model: none (default), smartphone, hugadb, sisfall, umafall [,key=value...]");
     cmd->add_option("--realism", o.realism, "realism model: none (default), sisfall, umafall, hugadb, smartphone or FILE.toml");
     cmd->add_flag("--no-filter", a.no_filter, "keep every motion (the quality filter is on by default)");
     o.activity_reference = kDefaultActivityReference;
     cmd->add_option("--activity-reference", o.activity_reference,
                     "captured clips the activity check compares with (default models/motion-activity.csv; \"\" = no check)");
-    cmd->add_option("--min-activity-agreement", o.min_activity_agreement, "activity check threshold, 0..1 (default 0.55)");
+    cmd->add_option("--min-activity-agreement", o.min_activity_agreement, "activity check threshold, 0..1");
     cmd->add_flag("--drop-activity-failures", o.drop_activity_failures,
                   "drop a motion whose every draw fails the activity check (default: keep its best-agreeing draw)");
-    cmd->add_option("--retries", o.max_retries, "draws after the first for a motion the filter rejects (default 2)");
+    cmd->add_option("--retries", o.max_retries, "draws after the first for a motion the filter rejects");
     cmd->add_option("--shard", a.shard, "I/N: run the I-th of N contiguous blocks of jobs (default 1/1)");
     cmd->add_option("--out", o.out, "output folder (resumed when it holds the same synthesis)")->required();
     cmd->callback([] { run(a); });

@@ -55,7 +55,7 @@ static void add_vocab(CLI::App& text) {
         ->required()
         ->check(CLI::ExistingFile);
     cmd->add_option("--out", out, "output .safetensors")->required();
-    cmd->add_option("--words", words, "keep the most frequent N words (default 100000)");
+    cmd->add_option("--words", words, "keep the most frequent N words");
     cmd->add_option("--only-words-in", only_in, "keep only the words that captions in these files or folders (*.txt) use");
     cmd->callback([] {
         const bool converted = std::filesystem::path(from).extension() == ".safetensors";

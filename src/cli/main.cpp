@@ -42,12 +42,14 @@ int main(int argc, char** argv) {
     CLI::App app{"t2imu: text to realistic synthetic IMU data, and how realistic it is"};
     app.set_version_flag("--version", "t2imu 0.1.0");
     app.require_subcommand(1);
-    app.add_option("--threads", g_options.threads, "worker threads, libtorch's included (default: all cores)")
+    // Help shows each option's default as the bound library object holds it, so the defaults live in one place.
+    app.option_defaults()->always_capture_default();
+    app.add_option("--threads", g_options.threads, "worker threads, libtorch's included (0: all cores)")
         ->check(CLI::NonNegativeNumber)
         ->each([](const std::string&) { t2imu::set_torch_threads(worker_threads()); });
     app.add_flag("-v,--verbose", g_options.verbose, "progress and details on stderr, also in a pipe")
         ->each([](const std::string&) { t2imu::set_progress_output(t2imu::ProgressOutput::always); });
-    app.add_option("--device", g_options.device, "where the diffusion model trains and samples: cpu, cuda, cuda:N (default cpu)")
+    app.add_option("--device", g_options.device, "where the diffusion model trains and samples: cpu, cuda, cuda:N")
         ->check([](const std::string& d) {
             return d == "cpu" || d.rfind("cuda", 0) == 0 ? std::string() : std::string("cpu, cuda or cuda:N");
         });
