@@ -8,14 +8,14 @@
 #include "core/npy.hpp"
 #include "motion/bvh_export.hpp"
 #include "motion/skeleton.hpp"
+#include "test_util.hpp"
 
 namespace t2imu::test {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
-Eigen::Matrix3d rot_x(double degrees) { return Eigen::AngleAxisd(degrees * kPi / 180, Eigen::Vector3d::UnitX()).toRotationMatrix(); }
+Eigen::Matrix3d rot_x(double degrees) { return Eigen::AngleAxisd(degrees * test::kPi / 180, Eigen::Vector3d::UnitX()).toRotationMatrix(); }
 
 void write_job(const std::string& dir, const nlohmann::json& marker) {
     write_file_atomic(dir + "/jobs/" + marker["job"].get<std::string>() + ".json", marker.dump(1) + "\n");
@@ -38,7 +38,7 @@ JointSequence fixture_walk(int frames, double stride_hz) {
     JointSequence s(frames, kNumJoints, kFps);
     double lowest = 0;
     for (int f = 0; f < frames; ++f) {
-        const double swing = std::sin(2 * kPi * stride_hz * f / kFps);  // +1: left leg forward
+        const double swing = std::sin(2 * test::kPi * stride_hz * f / kFps);  // +1: left leg forward
         std::array<Eigen::Matrix3d, kNumJoints> local;
         local.fill(Eigen::Matrix3d::Identity());
         local[left_hip] = rot_x(-25 * swing);  // a negative angle about X swings a hanging bone forward (+Z)
@@ -72,7 +72,7 @@ ImuRecording sine_recording(const std::string& path, const std::string& activity
     r.rate_hz = rate_hz;
     for (int i = 0; i < static_cast<int>(std::lround(seconds * rate_hz)); ++i) {
         r.t.push_back(i / rate_hz);
-        r.samples.push_back({0, 9.81 + amplitude * std::sin(2 * kPi * hz * r.t.back()), 0, 0, 0, 0});
+        r.samples.push_back({0, 9.81 + amplitude * std::sin(2 * test::kPi * hz * r.t.back()), 0, 0, 0, 0});
     }
     return r;
 }

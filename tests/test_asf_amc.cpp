@@ -81,7 +81,6 @@ ltibia 0
 rfemur 0 0 0
 )";
 
-bool has(const std::string& m, const std::string& part) { return m.find(part) != std::string::npos; }
 }  // namespace
 
 TEST(AsfAmc, SkeletonStructure) {
@@ -139,31 +138,31 @@ TEST(AsfAmc, ReadsFiles) {
 
 TEST(AsfAmc, RefusesBadAsfNamingTheLine) {
     std::string m = test::error_message([] { parse_asf(":units\n  length -1\n", "neg.asf"); });
-    EXPECT_TRUE(has(m, "neg.asf") && has(m, "line 2") && has(m, "positive length unit")) << m;
+    EXPECT_TRUE(test::contains(m, "neg.asf") && test::contains(m, "line 2") && test::contains(m, "positive length unit")) << m;
     m = test::error_message([] { parse_asf(":bonedata\n begin\n name a\n direction 0 1 0\n length 1\n end\n", "nohier.asf"); });
-    EXPECT_TRUE(has(m, "nohier.asf") && has(m, ":hierarchy")) << m;
+    EXPECT_TRUE(test::contains(m, "nohier.asf") && test::contains(m, ":hierarchy")) << m;
     std::string undefined = kAsf;
     undefined.replace(undefined.find("lfemur ltibia"), 13, "lfemur lfoot");
     m = test::error_message([&] { parse_asf(undefined, "undef.asf"); });
-    EXPECT_TRUE(has(m, "undef.asf") && has(m, ":hierarchy") && has(m, "lfoot")) << m;
+    EXPECT_TRUE(test::contains(m, "undef.asf") && test::contains(m, ":hierarchy") && test::contains(m, "lfoot")) << m;
     std::string bad_dof = kAsf;
     bad_dof.replace(bad_dof.find("dof rx\n"), 7, "dof rw\n");
     m = test::error_message([&] { parse_asf(bad_dof, "dof.asf"); });
-    EXPECT_TRUE(has(m, "dof.asf") && has(m, "line") && has(m, "degree of freedom") && has(m, "rw")) << m;
+    EXPECT_TRUE(test::contains(m, "dof.asf") && test::contains(m, "line") && test::contains(m, "degree of freedom") && test::contains(m, "rw")) << m;
 }
 
 TEST(AsfAmc, RefusesBadAmcNamingTheLine) {
     const AsfSkeleton s = parse_asf(kAsf, "test.asf");
     std::string m = test::error_message([&] { parse_amc("1\nroot 1 2 3 0 0 0\nltibia -90 5\n", s, "count.amc"); });
-    EXPECT_TRUE(has(m, "count.amc") && has(m, "line 3") && has(m, "1 values for ltibia")) << m;
+    EXPECT_TRUE(test::contains(m, "count.amc") && test::contains(m, "line 3") && test::contains(m, "1 values for ltibia")) << m;
     m = test::error_message([&] { parse_amc("1\nlhumerus 0 0 0\n", s, "bone.amc"); });
-    EXPECT_TRUE(has(m, "bone.amc") && has(m, "line 2") && has(m, "a bone of the ASF skeleton") && has(m, "lhumerus")) << m;
+    EXPECT_TRUE(test::contains(m, "bone.amc") && test::contains(m, "line 2") && test::contains(m, "a bone of the ASF skeleton") && test::contains(m, "lhumerus")) << m;
     m = test::error_message([&] { parse_amc("1\nltibia/end\n", s, "end.amc"); });  // an End Site has no values
-    EXPECT_TRUE(has(m, "a bone of the ASF skeleton")) << m;
+    EXPECT_TRUE(test::contains(m, "a bone of the ASF skeleton")) << m;
     m = test::error_message([&] { parse_amc("ltibia 0\n1\n", s, "order.amc"); });
-    EXPECT_TRUE(has(m, "order.amc") && has(m, "line 1") && has(m, "frame number")) << m;
+    EXPECT_TRUE(test::contains(m, "order.amc") && test::contains(m, "line 1") && test::contains(m, "frame number")) << m;
     m = test::error_message([&] { parse_amc("1\nltibia abc\n", s, "num.amc"); });
-    EXPECT_TRUE(has(m, "num.amc") && has(m, "line 2") && has(m, "abc")) << m;
+    EXPECT_TRUE(test::contains(m, "num.amc") && test::contains(m, "line 2") && test::contains(m, "abc")) << m;
     m = test::error_message([&] { parse_amc(":FULLY-SPECIFIED\n", s, "empty.amc"); });
-    EXPECT_TRUE(has(m, "empty.amc") && has(m, "at least one frame")) << m;
+    EXPECT_TRUE(test::contains(m, "empty.amc") && test::contains(m, "at least one frame")) << m;
 }

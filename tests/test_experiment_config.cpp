@@ -50,7 +50,6 @@ std::string refusal(const std::string& name, const std::string& text) {
     }
     return "no error";
 }
-bool has(const std::string& m, const std::string& part) { return m.find(part) != std::string::npos; }
 }  // namespace
 
 TEST(ExperimentConfig, EveryKeyLandsInItsField) {
@@ -154,10 +153,10 @@ TEST(ExperimentConfig, RefusesEachRuleNamingTheField) {
     int k = 0;
     for (const auto& [text, field] : cases) {
         const std::string m = refusal("refused_" + std::to_string(k++), text);
-        EXPECT_TRUE(has(m, field)) << "expected a refusal naming `" << field << "` for\n" << text << "\ngot: " << m;
+        EXPECT_TRUE(test::contains(m, field)) << "expected a refusal naming `" << field << "` for\n" << text << "\ngot: " << m;
     }
     // A file that is not TOML, and no file at all.
-    EXPECT_TRUE(has(refusal("broken", "[[source]\nname ="), "toml"));
+    EXPECT_TRUE(test::contains(refusal("broken", "[[source]\nname ="), "toml"));
     EXPECT_THROW(read_experiment_config(test::scratch_dir("experiment_config_absent") + "/none.toml"), Error);
 }
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "pipeline/experiment.hpp"
+#include "test_util.hpp"
 
 using namespace t2imu;
 using nlohmann::json;
@@ -31,28 +32,27 @@ json summary(bool with_lacc) {
     return s;
 }
 
-bool has(const std::string& md, const std::string& line) { return md.find(line) != std::string::npos; }
 }  // namespace
 
 TEST(ExperimentSummary, HarTableInPercentWithRunsAndClassCounts) {
     const std::string md = experiment_summary_markdown(summary(false));
-    EXPECT_TRUE(has(md, "2 of 10 repeats done.")) << md;
-    EXPECT_TRUE(has(md, "| training data | sisfall (4 classes) | umafall (8 classes) |\n|---|---|---|\n")) << md;
+    EXPECT_TRUE(test::contains(md, "2 of 10 repeats done.")) << md;
+    EXPECT_TRUE(test::contains(md, "| training data | sisfall (4 classes) | umafall (8 classes) |\n|---|---|---|\n")) << md;
     // 0.526 ± 0.031 over 2 runs; retrieval has no umafall cell.
-    EXPECT_TRUE(has(md, "| mdm (models/default) | 52.6 ± 3.1 % (2) | 40.0 ± 0.0 % (2) |\n")) << md;
-    EXPECT_TRUE(has(md, "| retrieval (retrieval:data) | 61.0 ± 4.6 % (1) |  |\n")) << md;
-    EXPECT_TRUE(has(md, "| real-to-real ceiling (real training data) |  | 90.0 ± 2.0 % (4) |\n")) << md;
-    EXPECT_TRUE(has(md, "| chance | 25.0 % | 12.5 % |\n")) << md;  // 1/4 and 1/8
+    EXPECT_TRUE(test::contains(md, "| mdm (models/default) | 52.6 ± 3.1 % (2) | 40.0 ± 0.0 % (2) |\n")) << md;
+    EXPECT_TRUE(test::contains(md, "| retrieval (retrieval:data) | 61.0 ± 4.6 % (1) |  |\n")) << md;
+    EXPECT_TRUE(test::contains(md, "| real-to-real ceiling (real training data) |  | 90.0 ± 2.0 % (4) |\n")) << md;
+    EXPECT_TRUE(test::contains(md, "| chance | 25.0 % | 12.5 % |\n")) << md;  // 1/4 and 1/8
 }
 
 TEST(ExperimentSummary, TwoSampleTableAndOptionalLacc) {
     const std::string without = experiment_summary_markdown(summary(false));
-    EXPECT_TRUE(has(without, "| training data | sisfall | umafall |\n")) << without;  // no class counts here
-    EXPECT_TRUE(has(without, "| mdm | 0.912 | 0.800 |\n")) << without;
-    EXPECT_TRUE(has(without, "| retrieval | 0.500 |  |\n")) << without;
-    EXPECT_FALSE(has(without, "## L_acc"));
+    EXPECT_TRUE(test::contains(without, "| training data | sisfall | umafall |\n")) << without;  // no class counts here
+    EXPECT_TRUE(test::contains(without, "| mdm | 0.912 | 0.800 |\n")) << without;
+    EXPECT_TRUE(test::contains(without, "| retrieval | 0.500 |  |\n")) << without;
+    EXPECT_FALSE(test::contains(without, "## L_acc"));
     const std::string with = experiment_summary_markdown(summary(true));
-    EXPECT_TRUE(has(with, "## L_acc of mdm_lacc against mdm on the same clips and draws, per activity category")) << with;
-    EXPECT_TRUE(has(with, "| Running | 12 | -12.7 % |\n")) << with;
-    EXPECT_TRUE(has(with, "| all | 30 | +3.0 % |\n")) << with;
+    EXPECT_TRUE(test::contains(with, "## L_acc of mdm_lacc against mdm on the same clips and draws, per activity category")) << with;
+    EXPECT_TRUE(test::contains(with, "| Running | 12 | -12.7 % |\n")) << with;
+    EXPECT_TRUE(test::contains(with, "| all | 30 | +3.0 % |\n")) << with;
 }

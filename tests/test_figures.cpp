@@ -34,7 +34,6 @@ struct Capture {
     }
 };
 
-bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 
 CsvTable table(const std::string& text) { return parse_csv(text, "test.csv"); }
 }  // namespace
@@ -47,8 +46,8 @@ TEST(Figures, ConfusionRowsAreNormalisedToRecall) {
     plot_confusion(result, c.dir + "/cm.png", "Confusion");
     EXPECT_TRUE(c.png("cm.png"));
     const std::string s = c.script();
-    EXPECT_TRUE(has(s, "$cm << EOD\n0 0 0.75\n1 0 0.25\n2 0 0\n\n0 1 0.35\n1 1 0.65\n2 1 0\n\n0 2 0\n1 2 0\n2 2 0\n\nEOD")) << s;
-    EXPECT_TRUE(has(s, "\"running\" 0, \"walking\" 1, \"sitting\" 2")) << s;
+    EXPECT_TRUE(test::contains(s, "$cm << EOD\n0 0 0.75\n1 0 0.25\n2 0 0\n\n0 1 0.35\n1 1 0.65\n2 1 0\n\n0 2 0\n1 2 0\n2 2 0\n\nEOD")) << s;
+    EXPECT_TRUE(test::contains(s, "\"running\" 0, \"walking\" 1, \"sitting\" 2")) << s;
 }
 
 TEST(Figures, BalancedAccuracyInPercent) {
@@ -58,7 +57,7 @@ TEST(Figures, BalancedAccuracyInPercent) {
     const nlohmann::json b = {{"balanced_accuracy", {{"mean", 0.425}, {"sd", 0.0}}}};
     plot_balanced_accuracy({{"mdm_acc", a}, {"retrieval", b}}, c.dir + "/ba.png");
     EXPECT_TRUE(c.png("ba.png"));
-    EXPECT_TRUE(has(c.script(), "$acc << EOD\n0 \"mdm\\\\_acc\" 60 5\n1 \"retrieval\" 42.5 0\nEOD")) << c.script();
+    EXPECT_TRUE(test::contains(c.script(), "$acc << EOD\n0 \"mdm\\\\_acc\" 60 5\n1 \"retrieval\" 42.5 0\nEOD")) << c.script();
 }
 
 TEST(Figures, LaccBarsAndARangeThatHoldsZero) {
@@ -68,10 +67,10 @@ TEST(Figures, LaccBarsAndARangeThatHoldsZero) {
     plot_lacc_change(table("group,samples,change_percent\nRunning,10,-20\nall,14,-17.06\n"), c.dir + "/lacc.png");
     EXPECT_TRUE(c.png("lacc.png"));
     const std::string s = c.script();
-    EXPECT_TRUE(has(s, "$bars << EOD\n0 \"Running (10)\" -20 1\n1 \"all (14)\" -17.06 2\nEOD")) << s;
-    EXPECT_TRUE(has(s, "set yrange [-22:2]")) << s;
+    EXPECT_TRUE(test::contains(s, "$bars << EOD\n0 \"Running (10)\" -20 1\n1 \"all (14)\" -17.06 2\nEOD")) << s;
+    EXPECT_TRUE(test::contains(s, "set yrange [-22:2]")) << s;
     const std::string m = test::error_message([&] { plot_lacc_change(table("group,samples\nRunning,10\n"), c.dir + "/x.png"); });
-    EXPECT_TRUE(has(m, "change_percent")) << m;
+    EXPECT_TRUE(test::contains(m, "change_percent")) << m;
 }
 
 TEST(Figures, TsneGroupsByColourAndFilters) {
@@ -82,12 +81,12 @@ TEST(Figures, TsneGroupsByColourAndFilters) {
     EXPECT_TRUE(c.png("tsne.png"));
     const std::string s = c.script();
     // One group per source (alphabetical), only the running rows.
-    EXPECT_TRUE(has(s, "$g0 << EOD\n1 2\nEOD\n$g1 << EOD\n5 6\nEOD")) << s;
-    EXPECT_TRUE(has(s, "title \"real\"") && has(s, "title \"synthetic\"")) << s;
+    EXPECT_TRUE(test::contains(s, "$g0 << EOD\n1 2\nEOD\n$g1 << EOD\n5 6\nEOD")) << s;
+    EXPECT_TRUE(test::contains(s, "title \"real\"") && test::contains(s, "title \"synthetic\"")) << s;
     std::string m = test::error_message([&] { plot_tsne(t, "source", c.dir + "/none.png", "t", "activity", {"lying"}); });
-    EXPECT_TRUE(has(m, c.dir + "/none.png") && has(m, "points")) << m;
+    EXPECT_TRUE(test::contains(m, c.dir + "/none.png") && test::contains(m, "points")) << m;
     m = test::error_message([&] { plot_tsne(t, "body", c.dir + "/nobody.png", "t"); });
-    EXPECT_TRUE(has(m, "body")) << m;
+    EXPECT_TRUE(test::contains(m, "body")) << m;
 }
 
 TEST(Figures, SignalStatsMediansEitherSideOfTheTick) {
@@ -99,15 +98,15 @@ TEST(Figures, SignalStatsMediansEitherSideOfTheTick) {
     plot_signal_stats(groups, c.dir + "/stats.png", "Signal statistics");
     EXPECT_TRUE(c.png("stats.png"));
     const std::string s = c.script();
-    EXPECT_TRUE(has(s, "$msyn << EOD\n-0.2 4 3\n0.8 2 2\nEOD")) << s;
-    EXPECT_TRUE(has(s, "$mreal << EOD\n1.2 2 1.75\nEOD")) << s;
+    EXPECT_TRUE(test::contains(s, "$msyn << EOD\n-0.2 4 3\n0.8 2 2\nEOD")) << s;
+    EXPECT_TRUE(test::contains(s, "$mreal << EOD\n1.2 2 1.75\nEOD")) << s;
     // Without real data the synthetic medians sit on the ticks and no real series is drawn.
     groups[1].real.clear();
     plot_signal_stats(groups, c.dir + "/alone.png", "Signal statistics");
-    EXPECT_TRUE(has(c.script(), "$msyn << EOD\n0 4 3\n1 2 2\nEOD")) << c.script();
-    EXPECT_FALSE(has(c.script(), "$mreal"));
+    EXPECT_TRUE(test::contains(c.script(), "$msyn << EOD\n0 4 3\n1 2 2\nEOD")) << c.script();
+    EXPECT_FALSE(test::contains(c.script(), "$mreal"));
     const std::string m = test::error_message([&] { plot_signal_stats({}, c.dir + "/empty.png", "x"); });
-    EXPECT_TRUE(has(m, c.dir + "/empty.png") && has(m, "activities")) << m;
+    EXPECT_TRUE(test::contains(m, c.dir + "/empty.png") && test::contains(m, "activities")) << m;
 }
 
 TEST(Figures, ImuTraceColumnsInOrder) {
@@ -116,7 +115,7 @@ TEST(Figures, ImuTraceColumnsInOrder) {
     // The CSV's columns in another order: the data block is t, acc x y z, gyr x y z.
     plot_imu_trace(table("gyr_z,gyr_y,gyr_x,acc_z,acc_y,acc_x,t\n6,5,4,3,2,1,0\n16,15,14,13,12,11,0.02\n"), c.dir + "/trace.png", "trace");
     EXPECT_TRUE(c.png("trace.png"));
-    EXPECT_TRUE(has(c.script(), "$imu << EOD\n0 1 2 3 4 5 6\n0.02 11 12 13 14 15 16\nEOD")) << c.script();
+    EXPECT_TRUE(test::contains(c.script(), "$imu << EOD\n0 1 2 3 4 5 6\n0.02 11 12 13 14 15 16\nEOD")) << c.script();
     const std::string m = test::error_message([&] { plot_imu_trace(table("t,acc_x,acc_y,acc_z,gyr_x,gyr_y\n0,1,2,3,4,5\n"), c.dir + "/x.png", "t"); });
-    EXPECT_TRUE(has(m, "gyr_z")) << m;
+    EXPECT_TRUE(test::contains(m, "gyr_z")) << m;
 }

@@ -9,6 +9,7 @@
 #include "motion/motion_edit.hpp"
 #include "motion/motion_quality.hpp"
 #include "motion/skeleton.hpp"
+#include "test_util.hpp"
 
 namespace t2imu {
 namespace {
@@ -16,7 +17,6 @@ namespace {
 using Eigen::Vector3d;
 using namespace smpl22;
 
-constexpr double kPi = 3.14159265358979323846;
 
 // A short "lie-down" clip of 5 frames: the rest pose with the forearms bent toward the belly, turned -90 deg
 // about X (head toward -Z, face up), the pelvis 0.1 m above the floor; frame 0 still standing.
@@ -27,7 +27,7 @@ JointSequence lie_down() {
         const double across = wrist == left_wrist ? -0.6 : 0.6;  // toward the midline: left is +X
         bones[static_cast<size_t>(wrist)] = bones[static_cast<size_t>(wrist)].norm() * Vector3d(across, 0, 0.8);
     }
-    const Eigen::Matrix3d supine = Eigen::AngleAxisd(-kPi / 2, Vector3d::UnitX()).toRotationMatrix();
+    const Eigen::Matrix3d supine = Eigen::AngleAxisd(-test::kPi / 2, Vector3d::UnitX()).toRotationMatrix();
     for (int f = 0; f < m.num_frames; ++f) {
         m.at(f, pelvis) = Vector3d(0, f == 0 ? 0.9 : 0.1, 0);
         for (int j = 1; j < kNumJoints; ++j)
@@ -51,7 +51,7 @@ TEST(LyingStill, HoldsTheLastPoseAndBreathesWithTheChestOnly) {
     const double half_breath = 60.0 / o.breaths_per_min / 2 * kFps;  // frames
     const int mid = static_cast<int>(std::lround(half_breath));
     // Turning about the body's left (+X, unchanged by the turn to supine) takes its up (-Z) toward its front (+Y).
-    const Vector3d turned = Eigen::AngleAxisd(0.02 * 0.5 * (1 - std::cos(2 * kPi * mid / (2 * half_breath))), Vector3d::UnitX()) * r;
+    const Vector3d turned = Eigen::AngleAxisd(0.02 * 0.5 * (1 - std::cos(2 * test::kPi * mid / (2 * half_breath))), Vector3d::UnitX()) * r;
     EXPECT_NEAR(m.at(mid, head).y() - src.at(4, head).y(), turned.y() - r.y(), 1e-12);
     EXPECT_GT(m.at(mid, head).y() - src.at(4, head).y(), 0.005);
     EXPECT_NEAR(m.at(0, head).y(), src.at(4, head).y(), 1e-12);  // starts at the end of an exhale

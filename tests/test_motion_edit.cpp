@@ -6,6 +6,7 @@
 #include "core/error.hpp"
 #include "motion/motion_edit.hpp"
 #include "motion/skeleton.hpp"
+#include "test_util.hpp"
 
 namespace t2imu {
 namespace {
@@ -13,7 +14,6 @@ namespace {
 using Eigen::Vector3d;
 using namespace smpl22;
 
-constexpr double kPi = 3.14159265358979323846;
 
 // HumanML3D's target skeleton in its rest pose (upright, arms down, legs straight), pelvis at `pelvis_height`.
 JointSequence rest_pose(int frames, double pelvis_height = 1.0) {
@@ -65,9 +65,9 @@ TEST(MotionEdit, MinimumJerkStartsAndEndsAtRest) {
 TEST(MotionEdit, FlexingTheTrunkTurnsItAboutThePelvisAndLeavesTheLegs) {
     const JointSequence rest = rest_pose(1);
     JointSequence m = rest;
-    flex_trunk(m, 0, Vector3d::UnitZ(), kPi / 6);
+    flex_trunk(m, 0, Vector3d::UnitZ(), test::kPi / 6);
     const Vector3d before = rest.at(0, spine3) - rest.at(0, pelvis), after = m.at(0, spine3) - m.at(0, pelvis);
-    EXPECT_NEAR(std::atan2(after.z(), after.y()) - std::atan2(before.z(), before.y()), kPi / 6, 1e-12);
+    EXPECT_NEAR(std::atan2(after.z(), after.y()) - std::atan2(before.z(), before.y()), test::kPi / 6, 1e-12);
     EXPECT_GT(m.at(0, head).z(), rest.at(0, head).z() + 0.2);
     for (int j : {pelvis, left_hip, right_hip, left_knee, right_ankle, left_foot})
         EXPECT_EQ(m.at(0, j), rest.at(0, j)) << kJointNames[static_cast<size_t>(j)];
@@ -113,7 +113,7 @@ TEST(MotionEdit, PlacingKneesBendsThemForwardWithTheirLengths) {
     }
     // Law of cosines: hip-ankle distance d = straight leg - 0.2 gives the flexion.
     const double a = lengths[left_knee], b = lengths[left_ankle], d = a + b - 0.2;
-    EXPECT_NEAR(knee_flexion_rad(m, 0, 0), kPi - std::acos((a * a + b * b - d * d) / (2 * a * b)), 1e-9);
+    EXPECT_NEAR(knee_flexion_rad(m, 0, 0), test::kPi - std::acos((a * a + b * b - d * d) / (2 * a * b)), 1e-9);
     EXPECT_NEAR(knee_flexion_rad(source, 0, 0), 0.0, 1e-6);
 }
 

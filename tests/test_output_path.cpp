@@ -17,7 +17,6 @@ using namespace t2imu;
 namespace fs = std::filesystem;
 
 namespace {
-bool has(const std::string& message, const std::string& part) { return message.find(part) != std::string::npos; }
 }  // namespace
 
 TEST(OutputPath, MissingFoldersAreProvenAndLeftUnmade) {
@@ -33,11 +32,11 @@ TEST(OutputPath, AFileInTheWayAndAnEmptyPathAreRefused) {
     const std::string dir = test::scratch_dir("output_path_file");
     std::ofstream(dir + "/file.txt") << "x";
     std::string m = test::error_message([&] { check_output_path(dir + "/file.txt/sub/out.csv", "--report"); });
-    EXPECT_TRUE(has(m, "--report") && has(m, dir + "/file.txt") && has(m, "is a file")) << m;
+    EXPECT_TRUE(test::contains(m, "--report") && test::contains(m, dir + "/file.txt") && test::contains(m, "is a file")) << m;
     m = test::error_message([&] { check_output_path("", "--out"); });
-    EXPECT_TRUE(has(m, "--out") && has(m, "an output path")) << m;
+    EXPECT_TRUE(test::contains(m, "--out") && test::contains(m, "an output path")) << m;
     m = test::error_message([&] { make_directories(dir + "/file.txt/sub", "output folder"); });
-    EXPECT_TRUE(has(m, dir + "/file.txt/sub") && has(m, "output folder")) << m;
+    EXPECT_TRUE(test::contains(m, dir + "/file.txt/sub") && test::contains(m, "output folder")) << m;
     EXPECT_EQ(fs::file_size(dir + "/file.txt"), 1u);  // untouched
 }
 

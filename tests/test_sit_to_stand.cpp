@@ -19,8 +19,7 @@ namespace {
 using Eigen::Vector3d;
 using namespace smpl22;
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kPelvisHeight = 0.88;  // both legs reach the floor with the knees bent (right leg 0.816 m)
+constexpr double kStandPelvisHeight = 0.88;  // both legs reach the floor with the knees bent (right leg 0.816 m)
 
 // Standing still facing +Z, feet flat (ankles 8 cm, toes 2 cm above the floor), knees slightly bent, the body
 // swaying 1 cm sideways every 4 s and the trunk 2 deg forward and back every 3 s: idle standing.
@@ -28,10 +27,10 @@ JointSequence procedural_stand(int frames) {
     JointSequence m(frames, kNumJoints, kFps);
     for (int f = 0; f < frames; ++f) {
         const double t = f / kFps;
-        m.at(f, pelvis) = Vector3d(0.01 * std::sin(2 * kPi * t / 4), kPelvisHeight, 0);
+        m.at(f, pelvis) = Vector3d(0.01 * std::sin(2 * test::kPi * t / 4), kStandPelvisHeight, 0);
         for (int j = 1; j < kNumJoints; ++j)
             if (!is_leg_joint(j)) m.at(f, j) = m.at(f, kParents[static_cast<size_t>(j)]) + kTargetOffsets[static_cast<size_t>(j)];
-        flex_trunk(m, f, Vector3d::UnitZ(), 0.035 * std::sin(2 * kPi * t / 3));
+        flex_trunk(m, f, Vector3d::UnitZ(), 0.035 * std::sin(2 * test::kPi * t / 3));
         for (const LegJoints& leg : kLegs) {
             const double foot = kTargetOffsets[static_cast<size_t>(leg.toe)].norm();
             m.at(f, leg.ankle) = Vector3d(kTargetOffsets[static_cast<size_t>(leg.hip)].x(), 0.08, 0);
@@ -75,7 +74,7 @@ TEST(SitToStand, SeatedThePelvisRestsOnTheSeatWithTheKneesAtARightAngle) {
                 const LegJoints& l = kLegs[static_cast<size_t>(leg)];
                 const double knee_height = 0.08 + kTargetOffsets[static_cast<size_t>(l.ankle)].norm();
                 const double slope = std::asin((m.at(f, l.hip).y() - knee_height) / kTargetOffsets[static_cast<size_t>(l.knee)].norm());
-                EXPECT_NEAR(knee_flexion_rad(m, f, leg), kPi / 2 - slope, 0.05) << "seat " << seat;
+                EXPECT_NEAR(knee_flexion_rad(m, f, leg), test::kPi / 2 - slope, 0.05) << "seat " << seat;
             }
         }
         // The chair is behind: the seated pelvis sits well back from the standing one.
@@ -157,7 +156,7 @@ TEST(SitToStand, ACapturedIdleStandSitsDown) {
     for (int leg = 0; leg < 2; ++leg) seated_knee += 0.5 * knee_flexion_rad(m, 90, leg);
     std::printf("[captured sit] frames %d, seated pelvis %.3f m, seated knee %.0f deg, ankle moved %.4f m, skate %.2f, penetration %.3f, "
                 "hover %.3f, max acc %.0f, pelvis acc %.1f\n",
-                m.num_frames, m.at(90, pelvis).y(), seated_knee * 180 / kPi, ankle_move, q.foot_skate_m_s, q.penetration_m, q.hover_m,
+                m.num_frames, m.at(90, pelvis).y(), seated_knee * 180 / test::kPi, ankle_move, q.foot_skate_m_s, q.penetration_m, q.hover_m,
                 q.max_acc_m_s2, q.pelvis_acc_m_s2);
     // The importer keeps ReActIdle's bones rigid (only the root's position channels count), and so does the edit.
     EXPECT_LT(max_bone_length_error(m, bone_lengths(stand, 0)), 1e-6);

@@ -21,8 +21,7 @@ namespace {
 using Eigen::Vector3d;
 using namespace smpl22;
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kPelvisHeight = 0.82, kAnkleHeight = 0.08, kToeHeight = 0.02;
+constexpr double kWalkPelvisHeight = 0.82, kAnkleHeight = 0.08, kToeHeight = 0.02;
 
 // A level walk on HumanML3D's target skeleton along +Z at 1 m/s, one stride (two steps) a second: each foot
 // stands still for 60% of its cycle and swings 1 m forward in the other 40% (minimum-jerk, 6 cm arc); the left
@@ -32,7 +31,7 @@ JointSequence procedural_walk(double seconds) {
     JointSequence m(n, kNumJoints, kFps);
     for (int f = 0; f < n; ++f) {
         const double t = f / kFps;
-        m.at(f, pelvis) = Vector3d(0, kPelvisHeight, t);
+        m.at(f, pelvis) = Vector3d(0, kWalkPelvisHeight, t);
         for (int j = 1; j < kNumJoints; ++j)
             if (!is_leg_joint(j)) m.at(f, j) = m.at(f, kParents[static_cast<size_t>(j)]) + kTargetOffsets[static_cast<size_t>(j)];
         for (int side = 0; side < 2; ++side) {
@@ -43,7 +42,7 @@ JointSequence procedural_walk(double seconds) {
             if (phase >= 0.6) {
                 const double s = (phase - 0.6) / 0.4;
                 z += min_jerk(s);
-                lift = 0.06 * std::sin(kPi * s);
+                lift = 0.06 * std::sin(test::kPi * s);
             }
             m.at(f, leg.ankle) = Vector3d(m.at(f, leg.hip).x(), kAnkleHeight + lift, z);
             const double foot = kTargetOffsets[static_cast<size_t>(leg.toe)].norm(), drop = kAnkleHeight - kToeHeight;
@@ -140,7 +139,7 @@ TEST(StairGait, WithoutRiseThePelvisStaysAtTheWalksHeight) {
     StairOptions o = stairs(true, 0.0);
     o.cadence_factor = 1.0;
     const JointSequence m = walk_to_stairs(procedural_walk(6.0), o);
-    for (int f = 0; f < m.num_frames; ++f) EXPECT_NEAR(m.at(f, pelvis).y(), kPelvisHeight, 3e-3) << "frame " << f;
+    for (int f = 0; f < m.num_frames; ++f) EXPECT_NEAR(m.at(f, pelvis).y(), kWalkPelvisHeight, 3e-3) << "frame " << f;
 }
 
 TEST(StairGait, StepsShortenToTheGoingAndTheCadenceSlows) {
@@ -218,7 +217,7 @@ TEST(StairGait, ACapturedWalkClimbsAndDescends) {
         for (int f = 0; f < s.motion.num_frames; ++f) peak_knee = std::max({peak_knee, knee_flexion_rad(s.motion, f, 0), knee_flexion_rad(s.motion, f, 1)});
         std::printf("[captured %s] frames %d, steps %d, footholds %zu, knee peak %.1f deg, skate %.2f m/s, "
                     "penetration %.3f m, hover %.3f m, max acc %.0f, pelvis acc %.1f m/s^2\n",
-                    ascend ? "ascent" : "descent", s.motion.num_frames, s.stairs.steps, s.footholds.size(), peak_knee * 180 / kPi,
+                    ascend ? "ascent" : "descent", s.motion.num_frames, s.stairs.steps, s.footholds.size(), peak_knee * 180 / test::kPi,
                     q.foot_skate_m_s, q.penetration_m, q.hover_m, q.max_acc_m_s2, q.pelvis_acc_m_s2);
         EXPECT_GE(s.stairs.steps, 4);
         EXPECT_TRUE(quality_failures(q, default_quality_thresholds()).empty());

@@ -12,7 +12,6 @@
 using namespace t2imu;
 
 namespace {
-bool has(const std::string& message, const std::string& part) { return message.find(part) != std::string::npos; }
 }  // namespace
 
 TEST(TomlSection, ReadsTypedValuesAndLeavesAbsentOnesAlone) {
@@ -45,13 +44,13 @@ TEST(TomlSection, WrongTypesAreRefusedNamingTheField) {
     double rate = 0;
     // An integer field takes only a TOML integer (a float out of range must not be converted).
     std::string m = test::error_message([&] { synth.read("steps", steps); });
-    EXPECT_TRUE(has(m, "cfg.toml") && has(m, "synth.steps") && has(m, "an integer")) << m;
+    EXPECT_TRUE(test::contains(m, "cfg.toml") && test::contains(m, "synth.steps") && test::contains(m, "an integer")) << m;
     m = test::error_message([&] { synth.read("name", name); });
-    EXPECT_TRUE(has(m, "synth.name") && has(m, "a string")) << m;
+    EXPECT_TRUE(test::contains(m, "synth.name") && test::contains(m, "a string")) << m;
     m = test::error_message([&] { synth.read("flag", flag); });
-    EXPECT_TRUE(has(m, "synth.flag") && has(m, "true or false")) << m;
+    EXPECT_TRUE(test::contains(m, "synth.flag") && test::contains(m, "true or false")) << m;
     m = test::error_message([&] { synth.read("rate", rate); });
-    EXPECT_TRUE(has(m, "synth.rate") && has(m, "a number")) << m;
+    EXPECT_TRUE(test::contains(m, "synth.rate") && test::contains(m, "a number")) << m;
     EXPECT_EQ(steps, 0);  // nothing assigned on failure
 }
 
@@ -62,12 +61,12 @@ TEST(TomlSection, RequiredKeysAndArraysOfStrings) {
     s.read("positions", positions);
     EXPECT_EQ(positions, (std::vector<std::string>{"waist", "wrist"}));
     std::string m = test::error_message([&] { s.read("mixed", other); });
-    EXPECT_TRUE(has(m, "mixed") && has(m, "an array of strings")) << m;
+    EXPECT_TRUE(test::contains(m, "mixed") && test::contains(m, "an array of strings")) << m;
     m = test::error_message([&] { s.read("not_array", other); });
-    EXPECT_TRUE(has(m, "not_array") && has(m, "an array of strings")) << m;
+    EXPECT_TRUE(test::contains(m, "not_array") && test::contains(m, "an array of strings")) << m;
     std::string model;
     m = test::error_message([&] { s.require("model", model); });
-    EXPECT_TRUE(has(m, "c.toml") && has(m, "model") && has(m, "required")) << m;
+    EXPECT_TRUE(test::contains(m, "c.toml") && test::contains(m, "model") && test::contains(m, "required")) << m;
 }
 
 TEST(TomlSection, SubTablesAndArraysOfTablesNameTheirPath) {
@@ -99,12 +98,12 @@ TEST(TomlSection, SubTablesAndArraysOfTablesNameTheirPath) {
     sources[1].read("name", name);
     EXPECT_EQ(name, "retrieval");
     std::string m = test::error_message([&] { sources[1].refuse_unknown_keys(); });
-    EXPECT_TRUE(has(m, "exp.toml") && has(m, "sources[1].typo") && has(m, "a known key")) << m;
+    EXPECT_TRUE(test::contains(m, "exp.toml") && test::contains(m, "sources[1].typo") && test::contains(m, "a known key")) << m;
     // A scalar where a table is expected, and where an array of tables is.
     m = test::error_message([&] { top.table("scalar"); });
-    EXPECT_TRUE(has(m, "scalar") && has(m, "a table")) << m;
+    EXPECT_TRUE(test::contains(m, "scalar") && test::contains(m, "a table")) << m;
     m = test::error_message([&] { top.array_of_tables("scalar"); });
-    EXPECT_TRUE(has(m, "scalar") && has(m, "an array of tables")) << m;
+    EXPECT_TRUE(test::contains(m, "scalar") && test::contains(m, "an array of tables")) << m;
     // Every top-level key has now been named by a read.
     EXPECT_NO_THROW(top.refuse_unknown_keys());
 }
@@ -115,13 +114,13 @@ TEST(TomlSection, UnknownKeysAreRefusedByName) {
     int steps = 0;
     s.read("steps", steps);
     const std::string m = test::error_message([&] { s.refuse_unknown_keys(); });
-    EXPECT_TRUE(has(m, "typo.toml") && has(m, "stpes")) << m;
+    EXPECT_TRUE(test::contains(m, "typo.toml") && test::contains(m, "stpes")) << m;
 }
 
 TEST(TomlSection, ParseErrorsNameTheSource) {
     std::string m = test::error_message([] { parse_toml_text("steps = = 4\n", "broken.toml"); });
-    EXPECT_TRUE(has(m, "broken.toml") && has(m, "toml")) << m;
+    EXPECT_TRUE(test::contains(m, "broken.toml") && test::contains(m, "toml")) << m;
     const std::string dir = test::scratch_dir("toml_section");
     m = test::error_message([&] { parse_toml_file(dir + "/absent.toml"); });
-    EXPECT_TRUE(has(m, dir + "/absent.toml")) << m;
+    EXPECT_TRUE(test::contains(m, dir + "/absent.toml")) << m;
 }

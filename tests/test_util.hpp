@@ -37,6 +37,11 @@ CliResult run_cli(const std::string& args);
 
 std::string source_dir();
 
+// Whether `text` holds `part` (messages, pages, tables).
+inline bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+constexpr double kPi = 3.14159265358979323846;
+
 // The message of the t2imu::Error `f` throws; a test failure and "" when it throws none.
 std::string error_message(const std::function<void()>& f);
 
