@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -32,10 +33,17 @@ TEST(ParallelFor, OneWorkerRunsInOrderOnTheCallingThread) {
 
 TEST(ParallelFor, RethrowsTheFirstErrorAndStopsHandingOutWork) {
     std::atomic<int> ran{0};
+    std::atomic<bool> thrown{false};
     EXPECT_THROW(parallel_for(100000, 2,
                               [&](size_t i) {
                                   ++ran;
-                                  if (i == 10) throw std::runtime_error("index 10");
+                                  if (i == 10) {
+                                      thrown = true;
+                                      throw std::runtime_error("index 10");
+                                  }
+                                  // After the throw every index takes 0.1 ms, so the other worker could finish
+                                  // the rest only if the failing one stalled for 10 s between throw and catch.
+                                  if (thrown) std::this_thread::sleep_for(std::chrono::microseconds(100));
                               }),
                  std::runtime_error);
     EXPECT_LT(ran.load(), 100000);  // the remaining indices were not handed out
