@@ -22,8 +22,8 @@ namespace {
 struct SynthArgs {
     std::string joints, body = "preset:male_average", sensors = "realworld", noise = "none", realism = "none", out, format = "csv";
     std::string activity = "synthetic";
-    double fps = 20, rate = 50, jitter = 0, twist_smoothing = 0;
-    uint64_t seed = 0;
+    double fps = 20;           // HumanML3D's frame rate
+    VirtualImuOptions options;  // rate, mounting jitter, seed, twist smoothing (their defaults); noise and realism parsed
 };
 
 std::string without_side(const std::string& position) {
@@ -55,11 +55,7 @@ void write_outputs(const SynthArgs& a, const std::vector<BodyImu>& bodies, const
 }
 
 void run(const SynthArgs& a) {
-    VirtualImuOptions options;
-    options.rate_hz = a.rate;
-    options.mount_jitter_deg = a.jitter;
-    options.seed = a.seed;
-    options.twist_smoothing_frames = a.twist_smoothing;
+    VirtualImuOptions options = a.options;
     check_usage([&] {
         if (!(a.fps > 0 && std::isfinite(a.fps))) throw Error("--fps", "fps", "a positive frame rate", std::to_string(a.fps));
         options.noise = parse_noise_model(a.noise);
@@ -75,7 +71,7 @@ void run(const SynthArgs& a) {
     for (const BodySpec& b : bodies) results.push_back(synthesize_body_imu(motion, b, sensors, options));
     write_outputs(a, results, virtual_imu_meta(results, motion, options, a.joints));
     std::printf("%s: %zu bodies x %zu sensors, %zu samples at %g Hz\n", a.out.c_str(), results.size(), sensors.size(),
-                results[0].signals.empty() ? size_t{0} : results[0].signals[0].t.size(), a.rate);
+                results[0].signals.empty() ? size_t{0} : results[0].signals[0].t.size(), options.rate_hz);
 }
 
 }  // namespace
@@ -88,12 +84,12 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--fps", a.fps, "frame rate of the joints (HumanML3D: 20)");
     cmd->add_option("--body", a.body, "preset:NAME | paper8 | height=CM,mass=KG,sex=m|f | smpl:FILE.npz[,betas=..] | none; join with +");
     cmd->add_option("--sensors", a.sensors, "placement sets: realworld, sisfall, umafall, hugadb, FILE.toml (comma-separated)");
-    cmd->add_option("--rate", a.rate, "output sample rate, Hz");
+    cmd->add_option("--rate", a.options.rate_hz, "output sample rate, Hz");
     cmd->add_option("--noise", a.noise, "sensor error model: none | smartphone | hugadb | sisfall | umafall [,key=value...]");
     cmd->add_option("--realism", a.realism, "realism model: none | sisfall | umafall | hugadb | smartphone | FILE.toml (tilt, soft tissue, landings, tempo, device)");
-    cmd->add_option("--mount-jitter", a.jitter, "random mounting rotation up to DEG degrees (seeded)");
-    cmd->add_option("--twist-smoothing", a.twist_smoothing, "Gaussian smoothing of the segment twist over time, sigma in frames");
-    cmd->add_option("--seed", a.seed, "seed of mounting errors, realism draws and noise");
+    cmd->add_option("--mount-jitter", a.options.mount_jitter_deg, "random mounting rotation up to DEG degrees (seeded)");
+    cmd->add_option("--twist-smoothing", a.options.twist_smoothing_frames, "Gaussian smoothing of the segment twist over time, sigma in frames");
+    cmd->add_option("--seed", a.options.seed, "seed of mounting errors, realism draws and noise");
     cmd->add_option("--format", a.format, "csv, or realworld to add RealWorld's release files")->check(CLI::IsMember({"csv", "realworld"}));
     cmd->add_option("--activity", a.activity, "activity name in RealWorld file names");
     cmd->add_option("--out", a.out, "output folder")->required();
