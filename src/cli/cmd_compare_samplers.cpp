@@ -46,8 +46,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     SamplerComparisonOptions& o = a.options;
     cmd->add_option("--model", o.model, "model folder")->required()->check(CLI::ExistingDirectory);
     cmd->add_option("--prompts", a.prompts, "prompt set: activity<TAB>prompt per line")->required()->check(CLI::ExistingFile);
-    cmd->add_option("--samplers", a.samplers, "comma-separated: ddpm, ddim:K, dpmpp:K; the first is the reference "
-                                              "(default ddpm,ddim:10,ddim:20,ddim:50,dpmpp:5,dpmpp:10,dpmpp:20)");
+    cmd->add_option("--samplers", a.samplers, "comma-separated: ddpm, ddim:K, dpmpp:K; the first is the reference");
     cmd->add_option("--samples-per-prompt", o.samples_per_prompt, "motions per prompt");
     cmd->add_option("--seconds", a.seconds, "motion length, s");
     cmd->add_option("--seed", o.seed, "seed of the first motion; motion i draws from seed + i in every sampler");
