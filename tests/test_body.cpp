@@ -1,6 +1,7 @@
 // Procedural bodies: the paper's presets, anthropometric construction, skin points; body specs.
 #include <gtest/gtest.h>
 
+#include "body/body_population.hpp"
 #include "body/body_spec.hpp"
 #include "body/procedural_body.hpp"
 #include "core/error.hpp"
@@ -39,6 +40,79 @@ TEST(BodySpec, ParsesMeasurementsPresetsAndRefusesNonsense) {
     EXPECT_EQ(smpl.betas, (std::vector<double>{0.5, -1}));
     for (const char* bad : {"preset:giant", "height=172,mass=70", "height=abc,mass=70,sex=m", "height=900,mass=70,sex=m",
                             "tall", "smpl:", "preset:male_tall+preset:male_tall"})
+        EXPECT_THROW(parse_body_specs(bad), Error) << bad;
+}
+
+namespace {
+
+struct Moments {
+    double mean = 0, sd = 0;
+};
+
+Moments moments(const std::vector<double>& v) {
+    Moments m;
+    for (double x : v) m.mean += x / v.size();
+    for (double x : v) m.sd += (x - m.mean) * (x - m.mean) / (v.size() - 1);
+    m.sd = std::sqrt(m.sd);
+    return m;
+}
+
+}  // namespace
+
+TEST(BodyPopulation, DrawsHaveThePopulationsMomentsPerSex) {
+    const BodyPopulation p;  // the defaults: the paper's averages, NCHS spreads
+    std::vector<BodySpec> bodies;  // four seeds of the largest population: 4000 independent draws
+    for (int seed = 7; seed < 11; ++seed) {
+        const std::vector<BodySpec> drawn = parse_body_specs("population:1000,seed=" + std::to_string(seed));
+        bodies.insert(bodies.end(), drawn.begin(), drawn.end());
+    }
+    for (Sex sex : {Sex::male, Sex::female}) {
+        std::vector<double> height_cm, bmi;
+        for (const BodySpec& b : bodies)
+            if (b.sex == sex) {
+                height_cm.push_back(b.height_m * 100);
+                bmi.push_back(b.mass_kg / (b.height_m * b.height_m));
+            }
+        ASSERT_EQ(height_cm.size(), 2000u) << "female share 0.5, exactly";
+        const MeanSd& h = sex == Sex::male ? p.height_cm_male : p.height_cm_female;
+        const MeanSd& q = sex == Sex::male ? p.bmi_male : p.bmi_female;
+        // Standard errors with n = 2000: mean sd/45, sd sd/63. Truncation at 3 sd shrinks a normal's sd by
+        // sqrt(1 - 6 phi(3) / (2 Phi(3) - 1)) = 0.9866 and leaves a log-normal of this spread's mean within 0.05 %.
+        const Moments hm = moments(height_cm), bm = moments(bmi);
+        EXPECT_NEAR(hm.mean, h.mean, 4 * h.sd / 45) << sex_name(sex);
+        EXPECT_NEAR(hm.sd, 0.9866 * h.sd, 4 * h.sd / 63) << sex_name(sex);
+        EXPECT_NEAR(bm.mean, q.mean, 4 * q.sd / 45) << sex_name(sex);
+        EXPECT_NEAR(bm.sd, q.sd, 0.06 * q.sd) << sex_name(sex);
+        for (double x : height_cm) {
+            EXPECT_LE(std::abs(x - h.mean), 3 * h.sd + 1e-9);
+        }
+    }
+}
+
+TEST(BodyPopulation, SeededPrefixStableAndExactSexShare) {
+    const std::vector<BodySpec> eight = parse_body_specs("population:8,seed=3"), four = parse_body_specs("population:4,seed=3");
+    for (size_t i = 0; i < four.size(); ++i) {
+        EXPECT_EQ(four[i].name, eight[i].name);
+        EXPECT_DOUBLE_EQ(four[i].height_m, eight[i].height_m);
+        EXPECT_DOUBLE_EQ(four[i].mass_kg, eight[i].mass_kg);
+    }
+    EXPECT_EQ(parse_body_specs("population:8")[5].mass_kg, parse_body_specs("population:8,seed=0")[5].mass_kg);
+    EXPECT_NE(parse_body_specs("population:8,seed=4")[5].mass_kg, eight[5].mass_kg);
+    const std::vector<BodySpec> ten = parse_body_specs("population:10,female=0.3,height_f=160:0,bmi_f=22:0");
+    int women = 0;
+    for (size_t i = 0; i < ten.size(); ++i)
+        if (ten[i].sex == Sex::female) {
+            ++women;
+            EXPECT_DOUBLE_EQ(ten[i].height_m, 1.60);  // no spread: the mean itself
+            EXPECT_NEAR(ten[i].mass_kg, 22 * 1.6 * 1.6, 1e-9);
+            EXPECT_EQ(ten[i].name, "pop" + std::to_string(i) + "_h160_m56_f");
+        }
+    EXPECT_EQ(women, 3);
+    EXPECT_EQ(parse_body_specs("population:11")[10].name.substr(0, 6), "pop10_");
+    EXPECT_EQ(parse_body_specs("population:11")[0].name.substr(0, 6), "pop00_");
+    for (const char* bad : {"population:0", "population:2.5", "population:", "population:3,female=2", "population:3,height_m=175",
+                            "population:3,height_m=175:30", "population:3,bmi_f=25:-1", "population:3,foo=1", "population:3,seed=-1",
+                            "population:1001", "population:3+population:3"})
         EXPECT_THROW(parse_body_specs(bad), Error) << bad;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "body/body_population.hpp"
 #include "core/error.hpp"
 
 namespace t2imu {
@@ -41,7 +42,9 @@ std::vector<std::string> split(const std::string& s, char sep) {
     return parts;
 }
 
-double parse_number(const std::string& text, const std::string& field) {
+}  // namespace
+
+double parse_body_number(const std::string& text, const std::string& field) {
     size_t used = 0;
     double v = 0;
     try {
@@ -53,6 +56,8 @@ double parse_number(const std::string& text, const std::string& field) {
     return v;
 }
 
+namespace {
+
 BodySpec parse_measurements(const std::string& text) {
     BodySpec b;
     bool have_height = false, have_mass = false, have_sex = false;
@@ -60,10 +65,10 @@ BodySpec parse_measurements(const std::string& text) {
         const size_t eq = kv.find('=');
         const std::string key = kv.substr(0, eq), value = eq == std::string::npos ? "" : kv.substr(eq + 1);
         if (key == "height") {
-            b.height_m = parse_number(value, "height") / 100.0;
+            b.height_m = parse_body_number(value, "height") / 100.0;
             have_height = true;
         } else if (key == "mass") {
-            b.mass_kg = parse_number(value, "mass");
+            b.mass_kg = parse_body_number(value, "mass");
             have_mass = true;
         } else if (key == "sex" && (value == "m" || value == "male" || value == "f" || value == "female")) {
             b.sex = value[0] == 'm' ? Sex::male : Sex::female;
@@ -90,7 +95,7 @@ BodySpec parse_smpl(const std::string& text) {
     b.smpl_path = parts[0];
     for (size_t i = 1; i < parts.size(); ++i) {
         if (parts[i].rfind("betas=", 0) != 0) throw Error("--body", parts[i], "betas=b0;b1;...");
-        for (const std::string& v : split(parts[i].substr(6), ';')) b.betas.push_back(parse_number(v, "betas"));
+        for (const std::string& v : split(parts[i].substr(6), ';')) b.betas.push_back(parse_body_number(v, "betas"));
     }
     return b;
 }
@@ -110,12 +115,15 @@ void append_one(const std::string& text, std::vector<BodySpec>& out) {
         std::string names;
         for (const BodySpec& b : paper_bodies()) names += (names.empty() ? "" : ", ") + b.name;
         throw Error("--body", "preset", "one of " + names, name);
+    } else if (text.rfind("population:", 0) == 0) {
+        const std::vector<BodySpec> drawn = sample_bodies(parse_body_population(text.substr(11)));
+        out.insert(out.end(), drawn.begin(), drawn.end());
     } else if (text.rfind("smpl:", 0) == 0) {
         out.push_back(parse_smpl(text.substr(5)));
     } else if (text.find('=') != std::string::npos) {
         out.push_back(parse_measurements(text));
     } else {
-        throw Error("--body", "spec", "preset:NAME, paper8, height=CM,mass=KG,sex=m|f, smpl:FILE.npz or none", text);
+        throw Error("--body", "spec", "preset:NAME, paper8, population:N, height=CM,mass=KG,sex=m|f, smpl:FILE.npz or none", text);
     }
 }
 

@@ -22,10 +22,13 @@ struct BodySpec {
 // The paper's Table 1: male/female tall, short, average, adipose.
 const std::vector<BodySpec>& paper_bodies();
 
-// One --body argument: "preset:NAME", "paper8", "height=172,mass=70,sex=f" (cm, kg), "smpl:FILE.npz[,betas=b0;b1;...]"
-// or "none". Several specs may be joined with '+'. Throws Error naming "--body" for anything else.
+// One --body argument: "preset:NAME", "paper8", "height=172,mass=70,sex=f" (cm, kg), "smpl:FILE.npz[,betas=b0;b1;...]",
+// "population:N[,...]" (N bodies drawn from anthropometric statistics, body_population.hpp) or "none". Several specs may be joined with '+'. Throws Error naming "--body" for anything else.
 std::vector<BodySpec> parse_body_specs(const std::string& text);
 
 const char* sex_name(Sex s);
+
+// A number in a --body spec: the whole text, finite; throws Error naming "--body" and `field` otherwise.
+double parse_body_number(const std::string& text, const std::string& field);
 
 }  // namespace t2imu
