@@ -5,7 +5,8 @@
 # synthetic-only HAR tested on the real recordings.
 # Needs cache/dataset (t2imu data build), the GloVe vocabulary and the real set unpacked (scripts/paper-experiment.sh).
 # Usage: bash scripts/realism-ablation.sh [OUT=out/realism-sisfall] [SET=sisfall] [REPEATS=3] [VARIANTS="none tilt ..."]
-# BODIES=SPEC (environment) renders other bodies than the paper's eight, e.g. BODIES=population:8,seed=1.
+# BODIES=SPEC (environment) renders other bodies than the paper's eight, e.g. BODIES=population:8,seed=1;
+# ROLL_GAIN=G the device roll lever's gain when on (default 0: the device does not roll with the pelvis's sway).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-out/realism-sisfall}
@@ -19,20 +20,21 @@ mkdir -p "$out/levers"
 # One TOML per variant, every lever set explicitly: on as below, off as 0 ("none" for the device). Tilt and
 # device take the preset's values (src/imu/realism.cpp); the levers the presets leave off take the values they
 # were measured with: landings calibrated on SisFall walking (share of power above 3 Hz 0.30 -> 0.47), soft tissue
-# from the wobbling-mass literature (imu/soft_tissue.hpp), tempo 8 %. Variants name levers joined by "+";
+# from the wobbling-mass literature (imu/soft_tissue.hpp), tempo 8 %, device roll gain 0 (imu/device_roll.hpp). Variants name levers joined by "+";
 # "none" is no realism model, "all" every lever, "preset" the preset SET by name.
 declare -A on_off=(
   [tilt]=$'# preset tilt\n|tilt_deg = 0\ntilt_sd_deg = 0'
   [landings]="impact_gain = $([ "$set" = sisfall ] && echo 0.8 || echo 1.0)|impact_gain = 0"
   [tissue]=$'tissue_hz = 10\ntissue_damping = '"$([ "$set" = sisfall ] && echo 0.5 || echo 0.3)"'|tissue_hz = 0'
   [tempo]='tempo_sd = 0.08|tempo_sd = 0'
+  [roll]="roll_gain = ${ROLL_GAIN:-0}|roll_gain = 1"
   [device]=$'# preset device\n|device = "none"'
 )
 variant_file() {  # VARIANT -> path of its TOML
   local file="$out/levers/$1.toml" lever pair
   {
     echo "base = \"$set\""
-    for lever in tilt landings tissue tempo device; do
+    for lever in tilt landings tissue tempo roll device; do
       pair=${on_off[$lever]}
       case "+$1+" in *"+$lever+"*|+all+) echo "${pair%%|*}" ;; *) echo "${pair#*|}" ;; esac
     done

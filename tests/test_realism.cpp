@@ -1,7 +1,7 @@
 // The realism model (imu/realism) through the whole bodies/IMU stage: off is the ideal sensor to the byte, a
 // tempo of 1 is the identity, a static body reads gravity only whatever the attachment, the tilt and the tempo
 // are the ones drawn, landings make the attachment ring; presets and TOML files are read strictly. And realism.cpp
-// on its own: what every preset turns on, the draws' distributions, validation naming the key, the JSON form
+// on its own: what every preset turns on, the device roll lever against a known roll, the draws' distributions, validation naming the key, the JSON form
 // read back as a TOML file, and .toml paths.
 #include <gtest/gtest.h>
 
@@ -181,6 +181,7 @@ TEST(Realism, PresetsTurnOnOnlyTiltAndTheirOwnDevice) {
         EXPECT_FALSE(m.tissue.enabled()) << name;
         EXPECT_EQ(m.impact_gain, 0) << name;
         EXPECT_EQ(m.tempo_sd, 0) << name;
+        EXPECT_FALSE(m.roll.enabled()) << name;
         EXPECT_NO_THROW(parse_noise_model(m.device)) << name;
     }
     EXPECT_GT(realism_preset("sisfall").tilt_sd_deg, 0);
@@ -214,6 +215,8 @@ TEST(Realism, ValidationNamesTheKeyOutOfRange) {
         {"impact_gain", [](RealismModel& m) { m.impact_gain = 11; }},
         {"impact_ms", [](RealismModel& m) { m.impact_ms = 4; }},
         {"tempo_sd", [](RealismModel& m) { m.tempo_sd = 0.6; }},
+        {"roll_gain", [](RealismModel& m) { m.roll.gain = -3; }},
+        {"roll_sigma_s", [](RealismModel& m) { m.roll.sigma_s = 0; }},
     };
     for (const auto& [key, spoil] : cases) {
         RealismModel m;
@@ -233,6 +236,7 @@ TEST(Realism, JsonFormReadsBackAsTheSameModel) {
     m.impact_gain = 0.8;
     m.impact_ms = 30;
     m.tempo_sd = 0.1;
+    m.roll = {-0.5, 0.8};
     const nlohmann::json j = m.to_json();
     // Every key but the name as a TOML file, from the "none" base: the same model.
     std::string toml;
@@ -249,4 +253,84 @@ TEST(Realism, JsonFormReadsBackAsTheSameModel) {
     EXPECT_EQ(got, expected) << toml;
     const std::string e = realism_error([&] { parse_realism(dir + "/absent.toml"); });
     EXPECT_TRUE(mentions(e, dir + "/absent.toml")) << e;
+}
+
+namespace {
+
+// SisFall's belt board at rest: x right, y down, z out of the belly (world X left, Y up, Z forward).
+SensorMount belt_board() {
+    SensorMount m;
+    m.rest_from_sensor.col(0) = -Vector3d::UnitX();
+    m.rest_from_sensor.col(1) = -Vector3d::UnitY();
+    m.rest_from_sensor.col(2) = Vector3d::UnitZ();
+    m.skin_normal = Vector3d::UnitZ();
+    return m;
+}
+
+// The board's roll (rad) per frame: the elevation of the body's left axis, which it carries as -x.
+std::vector<double> roll_of(const std::vector<Quat>& track) {
+    std::vector<double> r;
+    for (const Quat& q : track) r.push_back(std::asin((q * -Vector3d::UnitX()).y()));
+    return r;
+}
+
+// Amplitude of the f-Hz sine in x over whole periods from the middle of the track.
+double amplitude_at(const std::vector<double>& x, double fps, double f, size_t from, size_t count) {
+    double c = 0, s = 0;
+    for (size_t k = from; k < from + count; ++k) {
+        c += x[k] * std::cos(2 * M_PI * f * k / fps);
+        s += x[k] * std::sin(2 * M_PI * f * k / fps);
+    }
+    return 2 * std::hypot(c, s) / count;
+}
+
+}  // namespace
+
+TEST(DeviceRoll, KeepsPostureAndScalesTheSwayByTheGain) {
+    // A trunk leaning 0.2 rad to the left and swaying 0.1 rad at 1 Hz about the forward axis, 10 s at 100 fps.
+    const double fps = 100, lean = 0.2, sway = 0.1;
+    std::vector<Quat> track;
+    for (int k = 0; k < 1000; ++k) {
+        const double roll = lean + sway * std::sin(2 * M_PI * k / fps);
+        track.push_back(Quat(Eigen::AngleAxisd(roll, Vector3d::UnitZ()) * belt_board().rest_from_sensor));
+    }
+    const std::vector<double> before = roll_of(track);
+    EXPECT_NEAR(before[25], lean + sway, 1e-12);  // the left axis raised by the roll
+    // The slow part passes exp(-(2 pi 1 Hz 0.5 s)^2 / 2) = 0.0072 of the sway, so the board keeps
+    // gain + (1 - gain) 0.0072 of it; the lean stays.
+    for (double gain : {1.0, 0.5, 0.0, -0.5}) {
+        std::vector<Quat> edited = track;
+        apply_device_roll({gain, 0.5}, belt_board(), fps, &edited);
+        const std::vector<double> after = roll_of(edited);
+        const double kept = gain + (1 - gain) * std::exp(-std::pow(2 * M_PI * 0.5, 2) / 2);
+        EXPECT_NEAR(amplitude_at(after, fps, 1, 300, 400), sway * std::abs(kept), 1e-3) << gain;
+        double mean = 0;
+        for (size_t k = 300; k < 700; ++k) mean += after[k] / 400;
+        EXPECT_NEAR(mean, lean, 2e-3) << gain;
+        if (gain == 1.0) {
+            for (size_t k = 0; k < track.size(); ++k) EXPECT_EQ(edited[k].coeffs(), track[k].coeffs());
+        }
+        // Turned about the skin normal only: the board's z axis (the normal) is where it was.
+        for (size_t k = 0; k < track.size(); k += 50) EXPECT_LT((edited[k] * Vector3d::UnitZ() - track[k] * Vector3d::UnitZ()).norm(), 1e-12);
+    }
+}
+
+TEST(DeviceRoll, LeavesSkinFacingUpAndLyingOnTheBackAlone) {
+    // A body lying on its back (front up, head towards -Z) rocking 0.3 rad side to side about its long axis at
+    // 1 Hz: the board's left axis rises and falls as in an upright sway, but a turn about the normal cannot
+    // undo that roll (it tips the left axis by (n x left).up = 0), so the lever leaves it alone.
+    const double fps = 50;
+    const Eigen::Matrix3d lying = Eigen::AngleAxisd(-M_PI / 2, Vector3d::UnitX()).toRotationMatrix();
+    std::vector<Quat> track;
+    for (int k = 0; k < 300; ++k)
+        track.push_back(Quat(Eigen::AngleAxisd(0.3 * std::sin(2 * M_PI * k / fps), Vector3d::UnitZ()) * lying * belt_board().rest_from_sensor));
+    EXPECT_NEAR(roll_of(track)[12], std::asin(std::sin(0.3 * std::sin(2 * M_PI * 12 / fps))), 1e-12);
+    std::vector<Quat> edited = track;
+    apply_device_roll({0.0, 0.5}, belt_board(), fps, &edited);
+    for (size_t k = 0; k < track.size(); ++k) EXPECT_LT((edited[k].coeffs() - track[k].coeffs()).norm(), 1e-9);
+    SensorMount top = belt_board();  // a mount whose skin faces up at rest: no horizontal tangent
+    top.skin_normal = Vector3d::UnitY();
+    edited = track;
+    apply_device_roll({0.0, 0.5}, top, fps, &edited);
+    for (size_t k = 0; k < track.size(); ++k) EXPECT_EQ(edited[k].coeffs(), track[k].coeffs());
 }

@@ -58,3 +58,40 @@ TEST(SignalStatistics, ComparesActivitiesBothSetsHoldWithRatios) {
     short_one.t.resize(60);
     EXPECT_THROW(recording_signal_statistics(short_one, 20), Error);
 }
+
+namespace {
+
+// 30 s at 50 Hz of a board (y down) rolling about its z axis by roll_amp sin(2 pi f t) while its lateral axis x
+// also accelerates by sway sin(2 pi f t + phase): the roll puts -g sin(roll) on x, and the gyroscope reads it.
+// It also turns about the vertical at f (a walker's pelvis yawing once a stride), 0.3 rad/s.
+ImuRecording rolling_board(double f, double roll_amp, double sway, double phase) {
+    ImuRecording r;
+    r.dataset = "t2imu", r.activity = "walking", r.position = "waist", r.rate_hz = 50, r.path = "rolling.csv";
+    const double g = 9.81;
+    for (int i = 0; i < 1500; ++i) {
+        const double t = i / 50.0, w = 2 * M_PI * f, roll = roll_amp * std::sin(w * t);
+        r.t.push_back(t);
+        r.samples.push_back({-g * std::sin(roll) + sway * std::sin(w * t + phase), -g * std::cos(roll), 0, 0, -0.3 * std::sin(w * t), roll_amp * w * std::cos(w * t)});
+    }
+    return r;
+}
+
+}  // namespace
+
+TEST(SignalStatistics, GravityRatioSeparatesTheRollFromTheSway) {
+    // G / K = (i g A) / (B e^{i phase} (-i)) = -g A e^{-i phase} / B: against the sway (phase 0) it is -gA/B,
+    // with it (phase pi) +gA/B, in quadrature (phase pi/2) i gA/B. g A / B = 9.81 x 0.05 / 1 = 0.49.
+    const double ratio = 9.81 * 0.05 / 1.0;
+    const struct { double phase, re, im; } cases[] = {{0, -ratio, 0}, {M_PI, ratio, 0}, {M_PI / 2, 0, ratio}};
+    for (const auto& c : cases) {
+        const auto s = recording_signal_statistics(rolling_board(0.9, 0.05, 1.0, c.phase), 20);
+        EXPECT_NEAR(s.at("yaw_hz"), 0.9, 0.02) << c.phase;
+        EXPECT_NEAR(s.at("grav_x_re"), c.re, 0.02) << c.phase;
+        EXPECT_NEAR(s.at("grav_x_im"), c.im, 0.02) << c.phase;
+    }
+    // Without a gyroscope there is no gravity part to separate.
+    const auto still = recording_signal_statistics(recording("walking", 0.9, 2.0, 16), 20);
+    EXPECT_EQ(still.at("yaw_hz"), 0);
+    EXPECT_EQ(still.at("grav_x_re"), 0);
+    EXPECT_EQ(still.at("grav_x_im"), 0);
+}

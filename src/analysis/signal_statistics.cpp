@@ -18,7 +18,7 @@ namespace {
 constexpr double kMinSeconds = 2;
 constexpr double kMinDominantHz = 0.3;
 constexpr double kHighFrequencyHz = 3;
-
+constexpr double kGravity = 9.81;  // m/s^2, as the virtual sensors use (imu_synthesis.hpp)
 
 double percentile(std::vector<double> x, double p) {
     std::sort(x.begin(), x.end());
@@ -39,6 +39,30 @@ std::vector<double> periodogram(const std::vector<double>& x, size_t* length) {
     for (size_t k = 0; k < power.size(); ++k) power[k] = std::norm(data[k]);
     *length = n;
     return power;
+}
+
+// The Fourier coefficient of x's mean-removed values at f Hz (a single-frequency DFT over the whole series).
+std::complex<double> fourier_at(const std::vector<double>& x, double rate_hz, double f) {
+    const double m = mean_of(x);
+    std::complex<double> sum = 0;
+    for (size_t i = 0; i < x.size(); ++i) sum += (x[i] - m) * std::polar(1.0, -2 * M_PI * f * static_cast<double>(i) / rate_hz);
+    return sum * (2.0 / static_cast<double>(x.size()));
+}
+
+// Axis a's gravity part over the rest, at f Hz: the sensor's turning (gyroscope) moves the up direction u (the
+// mean specific force's direction) as du/dt = u x omega in the sensor frame, so gravity contributes
+// g (u x Omega(f))_a / (i 2 pi f) to the axis's Fourier coefficient X_a(f); the rest is the kinematic part.
+std::complex<double> gravity_ratio(const std::vector<double> acc[3], const std::vector<double> gyr[3], const Eigen::Vector3d& up,
+                                   int a, double rate_hz, double f) {
+    if (f <= 0 || up.norm() == 0) return 0;
+    std::complex<double> omega[3];
+    for (int k = 0; k < 3; ++k) omega[k] = fourier_at(gyr[k], rate_hz, f);
+    const Eigen::Vector3d u = up.normalized();
+    const int b = (a + 1) % 3, c = (a + 2) % 3;
+    const std::complex<double> turned = u[b] * omega[c] - u[c] * omega[b];  // (u x Omega)_a
+    const std::complex<double> gravity = kGravity * turned / std::complex<double>(0, 2 * M_PI * f);
+    const std::complex<double> rest = fourier_at(acc[a], rate_hz, f) - gravity;
+    return std::abs(rest) > 0 ? gravity / rest : 0.0;
 }
 
 }  // namespace
@@ -82,16 +106,21 @@ double dominant_frequency_hz(const std::vector<double>& x, double rate_hz, doubl
 
 const std::vector<std::string>& signal_statistic_names() {
     static const std::vector<std::string> names = {"mean_x", "mean_y", "mean_z", "tilt_deg", "sd_x", "sd_y", "sd_z", "mag_sd",
-                                                   "mag_p05", "mag_p50", "mag_p95", "dom_x_hz", "dom_y_hz", "dom_z_hz", "jerk_rms", "hf_share"};
+                                                   "mag_p05", "mag_p50", "mag_p95", "dom_x_hz", "dom_y_hz", "dom_z_hz", "jerk_rms", "hf_share", "yaw_hz",
+                                                   "grav_x_re", "grav_x_im", "grav_y_re", "grav_y_im", "grav_z_re", "grav_z_im"};
     return names;
 }
 
 std::map<std::string, double> recording_signal_statistics(const ImuRecording& recording, double rate_hz) {
-    std::vector<double> axis[3];
-    for (int a = 0; a < 3; ++a) {
+    const auto channel = [&](size_t column) {  // 0-2 acc, 3-5 gyr, at rate_hz
         std::vector<double> x(recording.samples.size());
-        for (size_t i = 0; i < x.size(); ++i) x[i] = recording.samples[i][static_cast<size_t>(a)];
-        axis[a] = resample_channel(x, recording.rate_hz, rate_hz);
+        for (size_t i = 0; i < x.size(); ++i) x[i] = recording.samples[i][column];
+        return resample_channel(x, recording.rate_hz, rate_hz);
+    };
+    std::vector<double> axis[3], gyr[3];
+    for (size_t a = 0; a < 3; ++a) {
+        axis[a] = channel(a);
+        gyr[a] = channel(a + 3);
     }
     const size_t n = axis[0].size();
     if (static_cast<double>(n) < kMinSeconds * rate_hz)
@@ -124,6 +153,15 @@ std::map<std::string, double> recording_signal_statistics(const ImuRecording& re
     for (size_t i = 1; i < n; ++i) jerk += std::pow((magnitude[i] - magnitude[i - 1]) * rate_hz, 2);
     s["jerk_rms"] = std::sqrt(jerk / static_cast<double>(n - 1));
     s["hf_share"] = total > 0 ? high / total : 0;
+    std::vector<double> yaw_rate(n);  // turning about the up direction (rad/s)
+    const Eigen::Vector3d up = mean.norm() > 0 ? Eigen::Vector3d(mean.normalized()) : Eigen::Vector3d::Zero();
+    for (size_t i = 0; i < n; ++i) yaw_rate[i] = up.x() * gyr[0][i] + up.y() * gyr[1][i] + up.z() * gyr[2][i];
+    s["yaw_hz"] = standard_deviation(yaw_rate) > 0 ? dominant_frequency_hz(yaw_rate, rate_hz, kMinDominantHz) : 0;
+    for (int a = 0; a < 3; ++a) {
+        const std::complex<double> r = gravity_ratio(axis, gyr, mean, a, rate_hz, s["yaw_hz"]);
+        s[std::string("grav_") + xyz[a] + "_re"] = r.real();
+        s[std::string("grav_") + xyz[a] + "_im"] = r.imag();
+    }
     return s;
 }
 

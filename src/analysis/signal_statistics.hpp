@@ -12,6 +12,12 @@
 //                     (zero-padded to >= 8 x the length); walking's stride (lateral sway) or step frequency
 //   jerk_rms          root mean square of d|a|/dt by first differences (m/s^3)
 //   hf_share          share of the mean-removed acceleration power (all axes) above 3 Hz
+//   yaw_hz            frequency of the highest periodogram peak of the turning rate about the up direction (the
+//                     gyroscope projected on the mean's direction): walking's stride frequency; 0 without a gyroscope
+//   grav_x/y/z_re/im  at yaw_hz, each axis's gravity part over the rest (complex ratio G / K): G is what the
+//                     sensor's turning (the gyroscope) does to gravity's projection on the axis, K = X - G its
+//                     kinematic part. Walking's lateral axis: G from the roll; a ratio near -1 cancels the sway,
+//                     near +1 adds to it, imaginary is in quadrature. 0 without a gyroscope
 // Per activity (the evaluation class, class_map.hpp), the median over recordings, their count, and for two
 // sets the ratio synthetic / real of every median and each set's spread over recordings (interquartile range
 // / 1.349, a normal distribution's sd). Recordings shorter than 2 s are skipped.

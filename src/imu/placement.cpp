@@ -183,6 +183,7 @@ SensorMount mount_sensor(const BodyModel& body, const SensorPlacement& placement
         surface = body.surface_point(placement.segment, placement.along, placement.around_deg * M_PI / 180);
     }
     m.anchor = body.anchor(placement.segment, surface);
+    m.skin_normal = surface.normal;
     const RestAxes axes = rest_axes(body.rest_joints());
     const Vector3d distal = axes.long_axis[static_cast<size_t>(placement.segment)];
     int first = -1, second = -1;

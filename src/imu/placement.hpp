@@ -61,6 +61,7 @@ struct SensorMount {
     SensorPlacement placement;
     BodyAnchor anchor;
     Eigen::Matrix3d rest_from_sensor;
+    Eigen::Vector3d skin_normal = Eigen::Vector3d::UnitZ();  // outward, rest body coordinates
 };
 SensorMount mount_sensor(const BodyModel& body, const SensorPlacement& placement,
                          const Eigen::Matrix3d& mounting_error = Eigen::Matrix3d::Identity(), double tilt_deg = 0);

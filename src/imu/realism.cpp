@@ -20,6 +20,8 @@ void read_keys(TomlSection& t, RealismModel& m) {
     t.read("impact_gain", m.impact_gain);
     t.read("impact_ms", m.impact_ms);
     t.read("tempo_sd", m.tempo_sd);
+    t.read("roll_gain", m.roll.gain);
+    t.read("roll_sigma_s", m.roll.sigma_s);
     t.read("device", m.device);
 }
 
@@ -35,13 +37,15 @@ void RealismModel::validate(const std::string& source) const {
     check("impact_gain", impact_gain, 0, 10);
     check("impact_ms", impact_ms, 5, 200);
     check("tempo_sd", tempo_sd, 0, 0.5);
+    check("roll_gain", roll.gain, -2, 2);
+    check("roll_sigma_s", roll.sigma_s, 0.1, 5);
     parse_noise_model(device);
 }
 
 nlohmann::json RealismModel::to_json() const {
     return {{"name", name}, {"tilt_deg", tilt_deg}, {"tilt_sd_deg", tilt_sd_deg}, {"tissue_hz", tissue.frequency_hz},
             {"tissue_damping", tissue.damping_ratio}, {"impact_gain", impact_gain}, {"impact_ms", impact_ms},
-            {"tempo_sd", tempo_sd}, {"device", device}};
+            {"tempo_sd", tempo_sd}, {"roll_gain", roll.gain}, {"roll_sigma_s", roll.sigma_s}, {"device", device}};
 }
 
 namespace {

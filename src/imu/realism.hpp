@@ -13,6 +13,10 @@
 //   tempo_sd               motion tempo: the motion is played at its frame rate times exp(N(0, tempo_sd)) per
 //                          recording: a uniform time warp, which keeps the path and scales every speed by the
 //                          same factor (1.0 leaves the motion as it is)
+//   roll_gain, roll_sigma_s
+//                          device roll (device_roll.hpp): the share of its segment's frontal-plane sway the device
+//                          rolls with (1 = bolted; 0 = level; negative = against it) and the Gaussian sd (s)
+//                          that separates sway from posture
 //   device                 the sensor's own errors: a sensor_noise.hpp model ("none", a preset, overrides)
 //
 // Presets (realism.cpp gives the figures each value rests on). The ablation on the shared SisFall subjects
@@ -30,6 +34,7 @@
 #include <string>
 #include <vector>
 
+#include "imu/device_roll.hpp"
 #include "imu/soft_tissue.hpp"
 
 namespace t2imu {
@@ -40,6 +45,7 @@ struct RealismModel {
     SoftTissue tissue;
     double impact_gain = 0, impact_ms = 40;
     double tempo_sd = 0;
+    DeviceRoll roll;
     std::string device = "none";
 
     // Throws Error naming `source` and the key for a value out of range.

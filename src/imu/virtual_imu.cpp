@@ -99,6 +99,7 @@ BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& spec, c
         out.mounts.push_back(mount_sensor(*body, placement, jitter, tilt));
         out.tilt_deg.push_back(tilt);
         sensor_track(*body, fitted, out.mounts.back(), &p, &q);
+        apply_device_roll(realism.roll, out.mounts.back(), timed.fps, &q);
         AttachmentDynamics dynamics;
         dynamics.tissue = realism.tissue;
         if (!landings.empty()) dynamics.impacts = impact_pulses(landings, realism.impact_gain, realism.impact_ms / 1000, placement.segment, timed.fps);
