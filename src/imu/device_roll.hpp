@@ -14,10 +14,10 @@
 // The edit: the roll angle, the elevation of the skin's horizontal tangent, is split into its slow part (a
 // Gaussian low-pass of sd `sigma_s`: posture, lying down, the mounting tilt) and its sway; the device is
 // turned about the skin normal so that it follows gain x the sway. gain 1 leaves the track as it is, 0 keeps
-// the device at its slow roll, negative values roll it against its segment. The turn fades where a rotation about the
-// normal hardly tips the tangent (the normal within 30 degrees of vertical; none at all lying on the back), so
-// postures without a frontal-plane roll are left alone. Position is unchanged (the
-// device turns in place).
+// the device at its slow roll, negative values roll it against its segment. The turn fades where a rotation
+// about the normal hardly tips the tangent (the normal within 30 degrees of vertical; none at all lying on the
+// back), so postures without a frontal-plane roll are left alone. Position is unchanged (the device turns in
+// place).
 #pragma once
 #include <Eigen/Core>
 #include <vector>
