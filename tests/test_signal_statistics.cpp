@@ -47,16 +47,24 @@ TEST(SignalStatistics, SinusoidsGiveTheirLevelFrequencyAndTilt) {
 TEST(SignalStatistics, ComparesActivitiesBothSetsHoldWithRatios) {
     const std::vector<ImuRecording> real = {recording("walking", 0.9, 2.0, 16), recording("lying", 0.5, 0.1, 80)};
     const std::vector<ImuRecording> synthetic = {recording("walking", 0.9, 1.0, 4), recording("walking", 0.9, 1.0, 4)};
-    const nlohmann::json c = compare_signal_statistics(real, synthetic, "waist", 20);
+    const nlohmann::json c = compare_signal_statistics(real, synthetic, {"waist", 20});
     ASSERT_EQ(c.size(), 1u);  // only walking is in both
     EXPECT_EQ(c["walking"]["recordings"]["synthetic"], 2);
     EXPECT_NEAR(c["walking"]["sd_x"]["ratio"].get<double>(), 0.5, 0.01);
     EXPECT_NEAR(c["walking"]["tilt_deg"]["real"].get<double>(), 16, 0.1);
-    EXPECT_TRUE(compare_signal_statistics(real, synthetic, "wrist", 20).empty());
+    EXPECT_TRUE(compare_signal_statistics(real, synthetic, {"wrist", 20}).empty());
     ImuRecording short_one = recording("walking", 0.9, 1.0, 0);
     short_one.samples.resize(60);
     short_one.t.resize(60);
     EXPECT_THROW(recording_signal_statistics(short_one, 20), Error);
+    for (double rate : {7.9, 1001.0, std::nan("")}) {  // refused before any work, naming the option
+        try {
+            activity_signal_statistics(real, {"waist", rate});
+            ADD_FAILURE() << rate;
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("--rate"), std::string::npos) << e.what();
+        }
+    }
 }
 
 namespace {

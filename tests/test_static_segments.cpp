@@ -53,12 +53,20 @@ TEST(StaticSegments, SummaryOverRecordingsAndTheDevicePrediction) {
     for (int i = 0; i < 4; ++i) recordings.push_back(moving_then_still(offsets[i], 10 + static_cast<uint64_t>(i)));
     recordings.back().position = "wrist";
     const SensorNoiseModel sisfall = parse_noise_model("sisfall");
-    const nlohmann::json all = static_segment_noise(recordings, "", 2.0, sisfall);
+    const nlohmann::json all = static_segment_noise(recordings, {"", 2.0}, sisfall);
     EXPECT_EQ(all["recordings"], 4);
     EXPECT_NEAR(all["measured"]["gyr_offset_sd_x"].get<double>(), std::sqrt(5.0) * 0.01, 0.002);
     EXPECT_NEAR(all["measured"]["acc_sd_y"].get<double>(), 0.02, 0.004);
     EXPECT_NEAR(all["device"]["acc_sd"].get<double>(), sisfall.acc_noise_density * 5.0, 1e-12);  // sqrt(50 / 2) = 5
-    EXPECT_EQ(static_segment_noise(recordings, "waist", 2.0, parse_noise_model("none"))["recordings"], 3);
-    EXPECT_FALSE(static_segment_noise(recordings, "waist", 2.0, parse_noise_model("none")).contains("device"));
-    EXPECT_THROW(static_segment_noise(recordings, "ankle", 2.0, sisfall), Error);
+    EXPECT_EQ(static_segment_noise(recordings, {"waist", 2.0}, parse_noise_model("none"))["recordings"], 3);
+    EXPECT_FALSE(static_segment_noise(recordings, {"waist", 2.0}, parse_noise_model("none")).contains("device"));
+    EXPECT_THROW(static_segment_noise(recordings, {"ankle", 2.0}, sisfall), Error);
+    for (double window : {0.4, 61.0, std::nan("")}) {  // refused before any work, naming the option
+        try {
+            static_segment_noise(recordings, {"waist", window}, sisfall);
+            ADD_FAILURE() << window;
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("--window"), std::string::npos) << e.what();
+        }
+    }
 }

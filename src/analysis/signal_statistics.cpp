@@ -208,9 +208,14 @@ double robust_spread(const std::vector<std::map<std::string, double>>& rows, con
 
 }  // namespace
 
-nlohmann::json activity_signal_statistics(const std::vector<ImuRecording>& recordings, const std::string& position, double rate_hz) {
+void SignalStatisticsOptions::validate() const {
+    if (!(rate_hz >= 8 && rate_hz <= 1000)) throw Error("--rate", "rate", "8 to 1000 Hz", std::to_string(rate_hz));
+}
+
+nlohmann::json activity_signal_statistics(const std::vector<ImuRecording>& recordings, const SignalStatisticsOptions& options) {
+    options.validate();
     nlohmann::json out = nlohmann::json::object();
-    for (const auto& [activity, rows] : statistics_by_activity(recordings, position, rate_hz, nullptr, nullptr)) {
+    for (const auto& [activity, rows] : statistics_by_activity(recordings, options.position, options.rate_hz, nullptr, nullptr)) {
         nlohmann::json a = {{"recordings", rows.size()}};
         for (const std::string& name : signal_statistic_names()) a[name] = median_statistic(rows, name);
         out[activity] = a;
@@ -219,7 +224,10 @@ nlohmann::json activity_signal_statistics(const std::vector<ImuRecording>& recor
 }
 
 nlohmann::json compare_signal_statistics(const std::vector<ImuRecording>& real, const std::vector<ImuRecording>& synthetic,
-                                         const std::string& position, double rate_hz) {
+                                         const SignalStatisticsOptions& options) {
+    options.validate();
+    const std::string& position = options.position;
+    const double rate_hz = options.rate_hz;
     const std::set<std::string> real_labels = labels_of(real, position), synthetic_labels = labels_of(synthetic, position);
     const auto r = statistics_by_activity(real, position, rate_hz, &real_labels, &synthetic_labels);
     const auto s = statistics_by_activity(synthetic, position, rate_hz, &synthetic_labels, &real_labels);

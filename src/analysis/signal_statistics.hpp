@@ -46,12 +46,18 @@ const std::vector<std::string>& signal_statistic_names();
 // One recording's statistics (names as above); throws Error for a recording under 2 s at rate_hz.
 std::map<std::string, double> recording_signal_statistics(const ImuRecording& recording, double rate_hz);
 
-// {activity: {"recordings": n, stat: median, ...}} over the recordings at `position` ("" = every position).
-nlohmann::json activity_signal_statistics(const std::vector<ImuRecording>& recordings, const std::string& position, double rate_hz);
+struct SignalStatisticsOptions {
+    std::string position;  // only recordings at this position; "" = every position
+    double rate_hz = 20;    // resampled to this rate first (HAR's)
+    void validate() const;  // throws Error naming --rate (8 to 1000 Hz)
+};
+
+// {activity: {"recordings": n, stat: median, ...}} over the recordings at the options' position.
+nlohmann::json activity_signal_statistics(const std::vector<ImuRecording>& recordings, const SignalStatisticsOptions& options);
 
 // {activity: {stat: {"real", "synthetic", "ratio", "real_spread", "synthetic_spread"}, "recordings": {...}}} for the activities
 // both sets hold (after coarsening stairs as class_map.hpp does).
 nlohmann::json compare_signal_statistics(const std::vector<ImuRecording>& real, const std::vector<ImuRecording>& synthetic,
-                                         const std::string& position, double rate_hz);
+                                         const SignalStatisticsOptions& options);
 
 }  // namespace t2imu

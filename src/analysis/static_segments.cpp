@@ -53,9 +53,15 @@ nlohmann::json quietest_window_statistics(const ImuRecording& r, double window_s
     return j;
 }
 
-nlohmann::json static_segment_noise(const std::vector<ImuRecording>& recordings, const std::string& position, double window_s,
+void StaticNoiseOptions::validate() const {
+    if (!(window_s >= 0.5 && window_s <= 60)) throw Error("--window", "window", "0.5 to 60 s", std::to_string(window_s));
+}
+
+nlohmann::json static_segment_noise(const std::vector<ImuRecording>& recordings, const StaticNoiseOptions& options,
                                     const SensorNoiseModel& device) {
-    if (!(window_s > 0)) throw Error("static segments", "window", "a positive length in seconds", std::to_string(window_s));
+    options.validate();
+    const std::string& position = options.position;
+    const double window_s = options.window_s;
     nlohmann::json per = nlohmann::json::array();
     std::vector<double> rates;
     for (const ImuRecording& r : recordings) {

@@ -28,9 +28,15 @@ namespace t2imu {
 // The quietest window's statistics (names above); throws Error for a recording shorter than one window.
 nlohmann::json quietest_window_statistics(const ImuRecording& recording, double window_s);
 
+struct StaticNoiseOptions {
+    std::string position;   // only recordings at this position; "" = every position
+    double window_s = 2;    // window length, s
+    void validate() const;  // throws Error naming --window (0.5 to 60 s)
+};
+
 // {"recordings": n, "rate_hz": median rate, "measured": {...}, "per_recording": [...]} over the recordings at
-// `position` ("" = all) of at least one window; with `device` enabled, also "device": {...} (what it predicts).
-nlohmann::json static_segment_noise(const std::vector<ImuRecording>& recordings, const std::string& position, double window_s,
+// the options' position of at least one window; with `device` enabled, also "device": {...} (what it predicts).
+nlohmann::json static_segment_noise(const std::vector<ImuRecording>& recordings, const StaticNoiseOptions& options,
                                     const SensorNoiseModel& device);
 
 }  // namespace t2imu
