@@ -216,6 +216,8 @@ TEST(Realism, ValidationNamesTheKeyOutOfRange) {
         {"impact_ms", [](RealismModel& m) { m.impact_ms = 4; }},
         {"tempo_sd", [](RealismModel& m) { m.tempo_sd = 0.6; }},
         {"roll_gain", [](RealismModel& m) { m.roll.gain = -3; }},
+        {"impact_size_sd", [](RealismModel& m) { m.impact_spread.size_sd = 1.5; }},
+        {"impact_horizontal_sd", [](RealismModel& m) { m.impact_spread.horizontal_sd = -0.1; }},
         {"roll_sigma_s", [](RealismModel& m) { m.roll.sigma_s = 0; }},
     };
     for (const auto& [key, spoil] : cases) {
@@ -237,6 +239,7 @@ TEST(Realism, JsonFormReadsBackAsTheSameModel) {
     m.impact_ms = 30;
     m.tempo_sd = 0.1;
     m.roll = {-0.5, 0.8};
+    m.impact_spread = {0.3, 0.7};
     const nlohmann::json j = m.to_json();
     // Every key but the name as a TOML file, from the "none" base: the same model.
     std::string toml;

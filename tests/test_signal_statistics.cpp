@@ -36,8 +36,11 @@ TEST(SignalStatistics, SinusoidsGiveTheirLevelFrequencyAndTilt) {
     EXPECT_NEAR(s.at("tilt_deg"), 16, 0.1);
     EXPECT_NEAR(s.at("mean_z"), -9.81 * std::sin(16 * M_PI / 180), 0.01);
     EXPECT_LT(s.at("hf_share"), 0.01);  // nothing above 3 Hz
+    EXPECT_LT(s.at("hf_sd_x"), 0.05);
     const auto fast = recording_signal_statistics(recording("running", 5.0, 2.0, 0, 5.0), 20);
     EXPECT_GT(fast.at("hf_share"), 0.99);
+    EXPECT_NEAR(fast.at("hf_sd_x"), 2.0 / std::sqrt(2), 0.03);  // the whole 5 Hz sway
+    EXPECT_NEAR(fast.at("hf_sd_y"), 1.0 / std::sqrt(2), 0.03);
     EXPECT_NEAR(fast.at("dom_x_hz"), 5.0, 0.02);
     // d|a|/dt of a 5 Hz bounce of 1 m/s^2 on g: rms 2 pi 5 / sqrt(2) (first differences at 20 Hz lose some).
     EXPECT_GT(fast.at("jerk_rms"), 10);

@@ -106,7 +106,7 @@ double dominant_frequency_hz(const std::vector<double>& x, double rate_hz, doubl
 
 const std::vector<std::string>& signal_statistic_names() {
     static const std::vector<std::string> names = {"mean_x", "mean_y", "mean_z", "tilt_deg", "sd_x", "sd_y", "sd_z", "mag_sd",
-                                                   "mag_p05", "mag_p50", "mag_p95", "dom_x_hz", "dom_y_hz", "dom_z_hz", "jerk_rms", "hf_share", "yaw_hz",
+                                                   "mag_p05", "mag_p50", "mag_p95", "dom_x_hz", "dom_y_hz", "dom_z_hz", "jerk_rms", "hf_share", "hf_sd_x", "hf_sd_y", "hf_sd_z", "yaw_hz",
                                                    "grav_x_re", "grav_x_im", "grav_y_re", "grav_y_im", "grav_z_re", "grav_z_im"};
     return names;
 }
@@ -136,10 +136,14 @@ std::map<std::string, double> recording_signal_statistics(const ImuRecording& re
         size_t length = 0;
         const std::vector<double> p = periodogram(axis[a], &length);
         s[std::string("dom_") + xyz[a] + "_hz"] = peak_frequency(p, length, rate_hz, kMinDominantHz);
+        double axis_high = 0, axis_total = 0;
         for (size_t k = 1; k < p.size(); ++k) {
-            total += p[k];
-            if (static_cast<double>(k) * rate_hz / static_cast<double>(length) > kHighFrequencyHz) high += p[k];
+            axis_total += p[k];
+            if (static_cast<double>(k) * rate_hz / static_cast<double>(length) > kHighFrequencyHz) axis_high += p[k];
         }
+        s[std::string("hf_sd_") + xyz[a]] = axis_total > 0 ? s[std::string("sd_") + xyz[a]] * std::sqrt(axis_high / axis_total) : 0;
+        high += axis_high;
+        total += axis_total;
     }
     const double largest = mean.cwiseAbs().maxCoeff();
     s["tilt_deg"] = mean.norm() > 0 ? std::acos(std::min(1.0, largest / mean.norm())) * 180 / M_PI : 0;

@@ -12,6 +12,7 @@
 //                     (zero-padded to >= 8 x the length); walking's stride (lateral sway) or step frequency
 //   jerk_rms          root mean square of d|a|/dt by first differences (m/s^3)
 //   hf_share          share of the mean-removed acceleration power (all axes) above 3 Hz
+//   hf_sd_x/y/z       standard deviation of each axis's part above 3 Hz (m/s^2): sd x sqrt(the axis's share)
 //   yaw_hz            frequency of the highest periodogram peak of the turning rate about the up direction (the
 //                     gyroscope projected on the mean's direction): walking's stride frequency; 0 without a gyroscope
 //   grav_x/y/z_re/im  at yaw_hz, each axis's gravity part over the rest (complex ratio G / K): G is what the

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "motion/skeleton.hpp"
 
@@ -56,19 +57,30 @@ double landing_transmissibility(int segment) {
     }
 }
 
-ImpactPulses impact_pulses(const std::vector<Landing>& landings, double gain, double duration_s, int segment, double fps) {
+ImpactPulses impact_pulses(const std::vector<Landing>& landings, double gain, double duration_s, int segment, double fps,
+                           const LandingSpread& spread, uint64_t seed) {
     ImpactPulses p;
     p.duration_s = duration_s;
     p.smoothing_s = 1 / fps;
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> normal;
+    const bool drawn = spread.size_sd > 0 || spread.horizontal_sd > 0;
     for (const Landing& l : landings) {
         p.time_s.push_back(l.time_s);
-        p.delta_v.push_back(gain * landing_transmissibility(segment));
+        const double up = gain * landing_transmissibility(segment);
+        if (!drawn) {
+            p.delta_v.push_back(Vector3d(0, up, 0));
+            continue;
+        }
+        const double size = up * std::exp(spread.size_sd * normal(rng));
+        const double x = spread.horizontal_sd * normal(rng), z = spread.horizontal_sd * normal(rng);
+        p.delta_v.push_back(size * Vector3d(x, 1, z));
     }
     return p;
 }
 
 Vector3d ImpactPulses::acceleration(double t) const {
-    double a = 0;
+    Vector3d a = Vector3d::Zero();
     const double centre_offset = duration_s / 2;
     for (size_t i = 0; i < time_s.size(); ++i) {
         const double s = t - time_s[i];
@@ -78,7 +90,7 @@ Vector3d ImpactPulses::acceleration(double t) const {
         const double spread = std::exp(-0.5 * z * z) / (smoothing_s * std::sqrt(2 * M_PI));
         a += delta_v[i] * (sharp - spread);
     }
-    return Vector3d(0, a, 0);
+    return a;
 }
 
 }  // namespace t2imu

@@ -20,6 +20,7 @@
 // against 47 m/s^3, median per recording).
 #pragma once
 #include <Eigen/Core>
+#include <cstdint>
 #include <vector>
 
 #include "motion/joint_sequence.hpp"
@@ -40,15 +41,27 @@ std::vector<Landing> detect_landings(const JointSequence& motion);
 // 0.15 arms. Approximate ratios of the peak accelerations in the literature above.
 double landing_transmissibility(int segment);
 
+// Landings are not all alike: each one's size is drawn log-normal about the gain (sd of its logarithm), and
+// the shock reaching the sensor is not purely vertical (heel strike's braking and mediolateral impulse, a strap
+// rocking on soft tissue): each landing gets horizontal components, world X and Z, drawn normal with an sd of
+// horizontal_sd times its vertical one. Zero spreads: every landing straight up and of the same size.
+struct LandingSpread {
+    double size_sd = 0;
+    double horizontal_sd = 0;
+};
+
 struct ImpactPulses {
-    std::vector<double> time_s, delta_v;  // per landing: contact time (s), upward velocity change at the sensor (m/s)
+    std::vector<double> time_s;             // per landing: contact time (s)
+    std::vector<Eigen::Vector3d> delta_v;   // per landing: velocity change at the sensor (m/s, world, Y up)
     double duration_s = 0.04;             // the sharp landing
     double smoothing_s = 0.05;            // the frames' spread: one frame period
     // The extra world acceleration (m/s^2, Y up) at time t (s).
     Eigen::Vector3d acceleration(double t) const;
 };
 
-// Pulses for a sensor on `segment`: delta_v = gain (m/s at the shank) x transmissibility; smoothing = 1 / fps.
-ImpactPulses impact_pulses(const std::vector<Landing>& landings, double gain, double duration_s, int segment, double fps);
+// Pulses for a sensor on `segment`: delta_v = gain (m/s at the shank) x transmissibility upwards, spread as
+// above with draws from `seed` in landing order; smoothing = 1 / fps.
+ImpactPulses impact_pulses(const std::vector<Landing>& landings, double gain, double duration_s, int segment, double fps,
+                           const LandingSpread& spread = {}, uint64_t seed = 0);
 
 }  // namespace t2imu

@@ -19,6 +19,8 @@ void read_keys(TomlSection& t, RealismModel& m) {
     t.read("tissue_damping", m.tissue.damping_ratio);
     t.read("impact_gain", m.impact_gain);
     t.read("impact_ms", m.impact_ms);
+    t.read("impact_size_sd", m.impact_spread.size_sd);
+    t.read("impact_horizontal_sd", m.impact_spread.horizontal_sd);
     t.read("tempo_sd", m.tempo_sd);
     t.read("roll_gain", m.roll.gain);
     t.read("roll_sigma_s", m.roll.sigma_s);
@@ -36,6 +38,8 @@ void RealismModel::validate(const std::string& source) const {
     tissue.validate(source);
     check("impact_gain", impact_gain, 0, 10);
     check("impact_ms", impact_ms, 5, 200);
+    check("impact_size_sd", impact_spread.size_sd, 0, 1);
+    check("impact_horizontal_sd", impact_spread.horizontal_sd, 0, 2);
     check("tempo_sd", tempo_sd, 0, 0.5);
     check("roll_gain", roll.gain, -2, 2);
     check("roll_sigma_s", roll.sigma_s, 0.1, 5);
@@ -45,6 +49,7 @@ void RealismModel::validate(const std::string& source) const {
 nlohmann::json RealismModel::to_json() const {
     return {{"name", name}, {"tilt_deg", tilt_deg}, {"tilt_sd_deg", tilt_sd_deg}, {"tissue_hz", tissue.frequency_hz},
             {"tissue_damping", tissue.damping_ratio}, {"impact_gain", impact_gain}, {"impact_ms", impact_ms},
+            {"impact_size_sd", impact_spread.size_sd}, {"impact_horizontal_sd", impact_spread.horizontal_sd},
             {"tempo_sd", tempo_sd}, {"roll_gain", roll.gain}, {"roll_sigma_s", roll.sigma_s}, {"device", device}};
 }
 

@@ -10,6 +10,9 @@
 //   impact_gain, impact_ms landing transients (heel_strike.hpp): the velocity change of a landing at the shank
 //                          (m/s; transmissibility scales it to the sensor's segment) and the duration of a
 //                          landing (ms); gain 0 = none
+//   impact_size_sd, impact_horizontal_sd
+//                          how landings differ (heel_strike.hpp, LandingSpread): sd of the log of each one's
+//                          size, and of its horizontal components over its vertical one; 0 = all alike, upright
 //   tempo_sd               motion tempo: the motion is played at its frame rate times exp(N(0, tempo_sd)) per
 //                          recording: a uniform time warp, which keeps the path and scales every speed by the
 //                          same factor (1.0 leaves the motion as it is)
@@ -35,6 +38,7 @@
 #include <vector>
 
 #include "imu/device_roll.hpp"
+#include "imu/heel_strike.hpp"
 #include "imu/soft_tissue.hpp"
 
 namespace t2imu {
@@ -44,6 +48,7 @@ struct RealismModel {
     double tilt_deg = 0, tilt_sd_deg = 0;
     SoftTissue tissue;
     double impact_gain = 0, impact_ms = 40;
+    LandingSpread impact_spread;
     double tempo_sd = 0;
     DeviceRoll roll;
     std::string device = "none";

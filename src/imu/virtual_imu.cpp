@@ -102,7 +102,9 @@ BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& spec, c
         apply_device_roll(realism.roll, out.mounts.back(), timed.fps, &q);
         AttachmentDynamics dynamics;
         dynamics.tissue = realism.tissue;
-        if (!landings.empty()) dynamics.impacts = impact_pulses(landings, realism.impact_gain, realism.impact_ms / 1000, placement.segment, timed.fps);
+        if (!landings.empty())
+            dynamics.impacts = impact_pulses(landings, realism.impact_gain, realism.impact_ms / 1000, placement.segment, timed.fps,
+                                             realism.impact_spread, derived_seed(options.seed, out.body.name, placement.position, "landings"));
         ImuSignals s = synthesize_imu(p, q, timed.fps, options.rate_hz, dynamics);
         apply_sensor_noise(device, derived_seed(options.seed, out.body.name, placement.position, "noise"), &s);
         out.signals.push_back(std::move(s));
