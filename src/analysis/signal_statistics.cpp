@@ -10,6 +10,7 @@
 #include "core/signal/fft.hpp"
 #include "har/class_map.hpp"
 #include "har/windowing.hpp"
+#include "imu/imu_synthesis.hpp"
 
 namespace t2imu {
 
@@ -18,7 +19,6 @@ namespace {
 constexpr double kMinSeconds = 2;
 constexpr double kMinDominantHz = 0.3;
 constexpr double kHighFrequencyHz = 3;
-constexpr double kGravity = 9.81;  // m/s^2, as the virtual sensors use (imu_synthesis.hpp)
 
 double percentile(std::vector<double> x, double p) {
     std::sort(x.begin(), x.end());
@@ -106,7 +106,8 @@ double dominant_frequency_hz(const std::vector<double>& x, double rate_hz, doubl
 
 const std::vector<std::string>& signal_statistic_names() {
     static const std::vector<std::string> names = {"mean_x", "mean_y", "mean_z", "tilt_deg", "sd_x", "sd_y", "sd_z", "mag_sd",
-                                                   "mag_p05", "mag_p50", "mag_p95", "dom_x_hz", "dom_y_hz", "dom_z_hz", "jerk_rms", "hf_share", "hf_sd_x", "hf_sd_y", "hf_sd_z", "yaw_hz",
+                                                   "mag_p05", "mag_p50", "mag_p95", "dom_x_hz", "dom_y_hz", "dom_z_hz", "jerk_rms", "hf_share",
+                                                   "hf_sd_x", "hf_sd_y", "hf_sd_z", "yaw_hz",
                                                    "grav_x_re", "grav_x_im", "grav_y_re", "grav_y_im", "grav_z_re", "grav_z_im"};
     return names;
 }

@@ -23,7 +23,8 @@ struct BodySpec {
 const std::vector<BodySpec>& paper_bodies();
 
 // One --body argument: "preset:NAME", "paper8", "height=172,mass=70,sex=f" (cm, kg), "smpl:FILE.npz[,betas=b0;b1;...]",
-// "population:N[,...]" (N bodies drawn from anthropometric statistics, body_population.hpp) or "none". Several specs may be joined with '+'. Throws Error naming "--body" for anything else.
+// "population:N[,...]" (N bodies drawn from anthropometric statistics, body_population.hpp) or "none". Several
+// specs may be joined with '+'. Throws Error naming "--body" for anything else.
 std::vector<BodySpec> parse_body_specs(const std::string& text);
 
 const char* sex_name(Sex s);

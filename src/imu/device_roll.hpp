@@ -9,7 +9,8 @@
 // Measured on the shared SisFall walking trials (`t2imu analysis signal-stats`, grav_x at the stride
 // frequency; README, "Sensor realism"): the gravity part of the real board's lateral axis, what its roll does to
 // gravity's projection, is in quadrature with the rest of that axis (ratio 0.01 - 0.33i, median of 56
-// recordings), where ours, rolling with the captured pelvis, is against it (-0.36 - 0.12i) and cancels it.
+// recordings), where ours, rolling with the captured pelvis, is against it (-0.38 - 0.11i over the 160 of the
+// ablation's ideal sensor) and cancels it.
 //
 // The edit: the roll angle, the elevation of the skin's horizontal tangent, is split into its slow part (a
 // Gaussian low-pass of sd `sigma_s`: posture, lying down, the mounting tilt) and its sway; the device is
