@@ -121,6 +121,11 @@ Vector3d horizontal_direction(const Vector3d& v) {
     return h.normalized();
 }
 
+Vector3d body_facing(const JointSequence& m, int frame) {
+    const Vector3d across = (m.at(frame, left_hip) - m.at(frame, right_hip)) + (m.at(frame, left_shoulder) - m.at(frame, right_shoulder));
+    return horizontal_direction(across.cross(Vector3d::UnitY()));
+}
+
 bool is_trunk_joint(int j) {
     while (j > 0 && j != spine1) j = kParents[static_cast<size_t>(j)];
     return j == spine1;
@@ -196,12 +201,13 @@ double lower_to_reach(JointSequence& m, const std::array<double, 2>& reach_m) {
     return most;
 }
 
-bool place_knees(JointSequence& m, const JointSequence& source, const Vector3d& forward, const BoneLengths& lengths) {
+bool place_knees(JointSequence& m, const JointSequence& source, const std::vector<Vector3d>& forward, const BoneLengths& lengths) {
     if (source.num_frames != m.num_frames) throw Error("place_knees", "source", "as many frames as the motion");
+    if (static_cast<int>(forward.size()) != m.num_frames) throw Error("place_knees", "forward", "one direction per frame");
     bool all = true;
     for (int f = 0; f < m.num_frames; ++f)
         for (const LegJoints& leg : kLegs) {
-            const Vector3d hint = m.at(f, leg.hip) + (source.at(f, leg.knee) - source.at(f, leg.hip)) + kKneeHintPush * forward;
+            const Vector3d hint = m.at(f, leg.hip) + (source.at(f, leg.knee) - source.at(f, leg.hip)) + kKneeHintPush * forward[static_cast<size_t>(f)];
             const TwoBoneIkResult ik = solve_two_bone_ik(m.at(f, leg.hip), m.at(f, leg.ankle), lengths[static_cast<size_t>(leg.knee)],
                                                          lengths[static_cast<size_t>(leg.ankle)], hint);
             m.at(f, leg.knee) = ik.middle;
@@ -210,6 +216,10 @@ bool place_knees(JointSequence& m, const JointSequence& source, const Vector3d& 
             all = all && ik.reached;
         }
     return all;
+}
+
+bool place_knees(JointSequence& m, const JointSequence& source, const Vector3d& forward, const BoneLengths& lengths) {
+    return place_knees(m, source, std::vector<Vector3d>(static_cast<size_t>(m.num_frames), forward), lengths);
 }
 
 double knee_flexion_rad(const JointSequence& m, int frame, int leg) {

@@ -40,6 +40,10 @@ double min_jerk(double x);
 // Horizontal unit direction of `v` (Y dropped); throws Error when `v` has no horizontal part.
 Eigen::Vector3d horizontal_direction(const Eigen::Vector3d& v);
 
+// The body's facing at one frame (horizontal unit): across the hips and shoulders, left to right, turned to the
+// front. Throws Error when that line is vertical.
+Eigen::Vector3d body_facing(const JointSequence& m, int frame);
+
 // spine1 and everything above it (spine, neck, head, collars, arms): the trunk as it bends at the hips.
 bool is_trunk_joint(int joint);
 // knees, ankles and toes: what moves with the feet or is re-solved by IK.
@@ -69,6 +73,8 @@ std::array<double, 2> reach_limits(const JointSequence& source, const BoneLength
 // out of reach moves to the end of the stretched leg, its toe with it. Returns whether every ankle was reached.
 constexpr double kKneeHintPush = 0.5;  // m
 bool place_knees(JointSequence& m, const JointSequence& source, const Eigen::Vector3d& forward, const BoneLengths& lengths);
+// The same with a facing per frame (`forward` holds one horizontal unit per frame): for motions that turn.
+bool place_knees(JointSequence& m, const JointSequence& source, const std::vector<Eigen::Vector3d>& forward, const BoneLengths& lengths);
 
 // Knee flexion of one leg at one frame (rad): the angle between thigh and shank, 0 when straight.
 double knee_flexion_rad(const JointSequence& m, int frame, int leg);

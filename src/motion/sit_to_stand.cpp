@@ -47,12 +47,6 @@ Posture posture_at(int f, const ChairOptions& o, double fps) {
     return standing_up(static_cast<double>(f - up_from) / (standing_from - up_from), o.trunk_flexion_peak_rad);
 }
 
-// The body's facing at frame 0 (horizontal unit): across the hips and shoulders, left to right, turned to the front.
-Vector3d facing(const JointSequence& s) {
-    const Vector3d across = (s.at(0, left_hip) - s.at(0, right_hip)) + (s.at(0, left_shoulder) - s.at(0, right_shoulder));
-    return horizontal_direction(across.cross(Vector3d::UnitY()));
-}
-
 // The seated pelvis: at seat height + pelvis_above_seat_m, as far behind the ankles as puts each knee straight
 // above its ankle with the thigh at its length (the mean of both legs), beside the standing pelvis of frame 0.
 Vector3d seated_pelvis(const JointSequence& s, const ChairOptions& o, const Vector3d& forward, const BoneLengths& len) {
@@ -95,7 +89,7 @@ JointSequence stand_sit_stand(const JointSequence& standing, const ChairOptions&
     if (standing.num_frames < n)
         throw Error("stand_sit_stand", "standing", "at least " + std::to_string(n) + " frames", std::to_string(standing.num_frames));
     const BoneLengths lengths = bone_lengths(standing, 0);
-    const Vector3d forward = facing(standing);
+    const Vector3d forward = body_facing(standing, 0);
     const Vector3d seat = seated_pelvis(standing, o, forward, lengths);
 
     JointSequence source(n, kNumJoints, standing.fps);

@@ -145,12 +145,8 @@ std::pair<double, double> progress_map(const std::vector<Hold>& holds) {
 
 // The body's mean facing over the walk (horizontal unit): across the hips and shoulders, turned to the front.
 Vector3d mean_facing(const JointSequence& w) {
-    using namespace smpl22;
     Vector3d sum = Vector3d::Zero();
-    for (int f = 0; f < w.num_frames; ++f) {
-        const Vector3d across = (w.at(f, left_hip) - w.at(f, right_hip)) + (w.at(f, left_shoulder) - w.at(f, right_shoulder));
-        sum += horizontal_direction(across.cross(Vector3d::UnitY()));
-    }
+    for (int f = 0; f < w.num_frames; ++f) sum += body_facing(w, f);
     return horizontal_direction(sum);
 }
 
