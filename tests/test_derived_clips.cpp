@@ -18,6 +18,7 @@ constexpr const char* kWalk = "bandai_bvh/dataset-2_walk_normal_001.bvh";  // fo
 constexpr const char* kWalkBack = "bandai_bvh/dataset-1_walk-back_active_001.bvh";
 constexpr const char* kIdle = "reactidle_bvh/000_genuine.bvh";
 constexpr const char* kLieDown = "hdm05_amc/HDM_bd_lieDownFloor_001_120.amc";
+constexpr const char* kHop = "hdm05_amc/HDM_bk_hopBothLegs1hops_013_120.amc";
 
 JointSequence shared_clip(const std::string& archive, const std::string& file) {
     const std::string root = test::unpacked_shared_archive(archive);
@@ -109,6 +110,34 @@ TEST(DerivedClips, ALieDownClipGivesLyingStillClips) {
     }
     // A standing recording does not end lying: it gives no lying clip.
     EXPECT_TRUE(derive_clips(shared_clip("mocap/bandai_bvh_native.tar.xz", kWalk), "lying", kWalk, report).empty());
+}
+
+// Highest minus lowest pelvis height over the clip (m).
+double pelvis_height_range(const JointSequence& m) {
+    double lo = 1e9, hi = -1e9;
+    for (int f = 0; f < m.num_frames; ++f) lo = std::min(lo, m.at(f, 0).y()), hi = std::max(hi, m.at(f, 0).y());
+    return hi - lo;
+}
+
+TEST(DerivedClips, ACapturedJumpGivesOneJumpOfAnotherHeight) {
+    std::string archive;
+    SHARED_OR_SKIP(archive, "mocap/hdm05_amc_native.tar.xz");
+    const JointSequence hop = shared_clip("mocap/hdm05_amc_native.tar.xz", kHop);
+    DeriveReport report;
+    const std::vector<DerivedClip> clips = derive_clips(hop, "jumping", kHop, report);
+    ASSERT_EQ(clips.size(), 1u) << "refused " << report.refused << ", failed quality " << report.failed_quality;
+    const DerivedClip& c = clips[0];
+    EXPECT_EQ(c.method, "jump_rescaled");
+    EXPECT_EQ(c.activity, "jumping");
+    const double k = c.parameters["time_scale"].get<double>();
+    EXPECT_TRUE((k >= 0.88 && k <= 0.95) || (k >= 1.05 && k <= 1.12)) << k;
+    EXPECT_DOUBLE_EQ(c.parameters["height_scale"].get<double>(), k * k);
+    EXPECT_NEAR(c.joints.num_frames, k * (hop.num_frames - 1) + 1, 1.0);
+    // Every vertical excursion of the body is k^2 as large: the crouch and the flight (5 %: resampling at 20 fps).
+    EXPECT_NEAR(pelvis_height_range(c.joints) / pelvis_height_range(hop), k * k, 0.05 * k * k);
+    EXPECT_TRUE(quality_failures(score_motion(c.joints), default_quality_thresholds()).empty());
+    EXPECT_LT(max_bone_change(c.joints), 1e-6);
+    EXPECT_EQ(c.captions.size(), 3u);
 }
 
 }  // namespace

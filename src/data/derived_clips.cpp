@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "motion/jump_rescale.hpp"
 #include "motion/lying_still.hpp"
 #include "motion/motion_quality.hpp"
 #include "motion/sit_to_stand.hpp"
@@ -57,6 +58,10 @@ const std::vector<std::string>& captions_for(const std::string& method) {
         "a person lies still on the floor, breathing quietly", "someone is lying on the ground and resting",
         "a person lies on the floor without moving", "the person rests lying down", "someone lies motionless on the floor",
         "a person is lying down, breathing calmly"};
+    static const std::vector<std::string> jump = {
+        "a person jumps", "someone jumps up and lands again", "a person jumps off the ground with both feet",
+        "the person makes a jump", "a man jumps and lands on his feet", "someone is jumping"};
+    if (method == "jump_rescaled") return jump;
     return method == "stairs_up" ? up : method == "stairs_down" ? down : method == "lying_still" ? lie : sit;
 }
 
@@ -165,6 +170,27 @@ void derive_lying_clips(const JointSequence& lie_down, const std::string& file, 
     }
 }
 
+void derive_jump_clip(const JointSequence& jump, const std::string& file, DeriveReport& report, std::vector<DerivedClip>& out) {
+    const uint64_t seed = file_seed(file);
+    std::mt19937_64 rng(seed);
+    JumpRescaleOptions o;
+    o.time_scale = seed % 2 == 0 ? uniform(rng, 0.88, 0.95) : uniform(rng, 1.05, 1.12);
+    DerivedClip c;
+    try {
+        c.joints = rescale_jump(jump, o);
+    } catch (const Error&) {
+        ++report.refused;  // too short, or never on both feet
+        return;
+    }
+    if (!passes(score_motion(c.joints))) { ++report.failed_quality; return; }
+    c.method = "jump_rescaled";
+    c.activity = "jumping";
+    c.parameters = {{"time_scale", o.time_scale}, {"height_scale", o.time_scale * o.time_scale}};
+    c.seed = seed;
+    c.captions = pick_captions(captions_for(c.method), rng);
+    out.push_back(std::move(c));
+}
+
 }  // namespace
 
 std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::string& tags, const std::string& file,
@@ -175,6 +201,7 @@ std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::
     if (t.count("walking")) derive_stairs_clip(captured, file, report, out);
     if (t.count("standing")) derive_sit_clips(captured, file, report, out);
     if (t.count("lying")) derive_lying_clips(captured, file, report, out);
+    if (t.count("jumping")) derive_jump_clip(captured, file, report, out);
     return out;
 }
 

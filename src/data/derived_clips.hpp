@@ -1,7 +1,7 @@
 // Motions derived from captured ones where open motion capture has (almost) none: stairs from captured level
 // walks (motion/stair_gait.hpp), sitting down, sitting and standing up from captured idle standing
 // (motion/sit_to_stand.hpp), and lying still, breathing, from the end of captured lie-down clips
-// (motion/lying_still.hpp). Each derived clip says what it is: method, source file, parameters and seed; the
+// (motion/lying_still.hpp), and jumps of another height from captured jumps (motion/jump_rescale.hpp). Each derived clip says what it is: method, source file, parameters and seed; the
 // dataset builder tags it as source_dataset "edited" with the source clip's licence.
 //
 // Which captured recordings give which clips (only single-activity recordings, so the edit starts from what it
@@ -19,6 +19,9 @@
 //   lying     kLyingPerRecording clips of the final pose held, breathing: 6-9.4 s long, 12-20 breaths/min
 //             (quiet breathing at rest), peak rib-cage turn 0.015-0.025 rad. HDM05's lie-down clips reach the
 //             floor seconds before they end; a HAR "lying" recording is mostly lying still.
+//   jumping   one clip of the jump rescaled, lower or higher by the seed's parity: time scale k uniform in
+//             [0.88, 0.95] or [1.05, 1.12], so flights 0.77-0.90 or 1.10-1.25 times as high: within the spread of
+//             jump heights between healthy adults, which is wider.
 // A clip is kept only when it passes motion_quality's default thresholds, measured above the staircase for
 // stairs (score_motion_on_ground) and above the floor otherwise.
 // Each recording's seed is a hash of its file name, so a build gives the same clips every time.
@@ -36,8 +39,8 @@ constexpr int kSitsPerRecording = 6;
 constexpr int kLyingPerRecording = 2;
 
 struct DerivedClip {
-    std::string method;                 // "stairs_up", "stairs_down", "sit_down_stand_up", "lying_still"
-    std::string activity;               // its activity tag: stairs_up, stairs_down, sitting, lying
+    std::string method;                 // "stairs_up", "stairs_down", "sit_down_stand_up", "lying_still", "jump_rescaled"
+    std::string activity;               // its activity tag: stairs_up, stairs_down, sitting, lying, jumping
     JointSequence joints;               // 20 fps, floor at y = 0 under the lowest joint
     nlohmann::json parameters;          // the edit's options
     uint64_t seed = 0;
