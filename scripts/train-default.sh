@@ -4,6 +4,8 @@
 #   models/default-lacc     the default model fine-tuned with the paper's L_acc added, λ_acc = 0.01 (finetune-lacc.toml)
 #   models/default-lacc-1   the same with λ_acc = 1 (finetune-lacc-1.toml), for the comparison in its model card
 #   models/default-control  the default model trained on for as many steps without L_acc (finetune-control.toml)
+#   models/default-v5       the default model trained on over the shared mocap v5 and the derived clips
+#                           (finetune-v5.toml; the main job's model; its model card says how many steps shipped)
 # and their per-sample L_acc on the test split (cache/lacc/*.csv; `t2imu analysis lacc` aggregates them).
 # Usage: bash scripts/train-default.sh [--device cuda] [--base-steps N] [--finetune-steps N] [--mocap DIR]
 # The shipped models came from a GPU run of the same steps (their model cards say which hardware and steps).
@@ -26,7 +28,7 @@ if [ ! -f cache/dataset/summary.json ]; then
   build/t2imu data build --mocap cache/mocap --mirror --out cache/dataset
 fi
 $t2imu train --config experiments/train-default.toml ${base_steps:+--steps $base_steps}
-for run in lacc lacc-1 control; do
+for run in lacc lacc-1 control v5; do
   $t2imu finetune --from models/default --config experiments/finetune-$run.toml ${finetune_steps:+--steps $finetune_steps}
 done
 mkdir -p cache/lacc
