@@ -11,7 +11,14 @@ cd "$(dirname "$0")/.."
 out=${1:?usage: capture-rate-check.sh OUT}
 real_features=${REAL_FEATURES:-out/coverage-v5/features/real-sisfall.csv}
 t2imu="build/t2imu --threads 1"
+[ -f "$real_features" ] || { echo "$real_features: missing (the real SisFall catch22 table; set REAL_FEATURES)" >&2; exit 2; }
+[ -f cache/imu/sisfall/manifest.csv ] || { echo "cache/imu/sisfall/manifest.csv: missing (unpack ../shared/data/imu/sisfall)" >&2; exit 2; }
 mkdir -p "$out"
+# The real windows of each class, once for both rates.
+for activity in walking running; do
+  head -1 "$real_features" > "$out/real-$activity.csv"
+  awk -F, -v a="$activity" 'NR > 1 && $3 == a' "$real_features" >> "$out/real-$activity.csv"
+done
 
 # clip|activity|native fps|import options
 clips() {
@@ -39,10 +46,8 @@ for rate in 20 native; do
   $t2imu features catch22 --dataset "$set_dir" --out "$set_dir/features.csv"
   $t2imu analysis signal-stats --real cache/imu/sisfall --synthetic "$set_dir" --position waist --out "$set_dir/signal-stats.json"
   for activity in walking running; do
-    head -1 "$real_features" > "$set_dir/real-$activity.csv"
-    awk -F, -v a="$activity" 'NR > 1 && $3 == a' "$real_features" >> "$set_dir/real-$activity.csv"
     head -1 "$set_dir/features.csv" > "$set_dir/syn-$activity.csv"
     awk -F, -v a="$activity" 'NR > 1 && $3 == a' "$set_dir/features.csv" >> "$set_dir/syn-$activity.csv"
-    $t2imu analysis domain-gap --real "$set_dir/real-$activity.csv" --synthetic "$set_dir/syn-$activity.csv" --out "$set_dir/gap-$activity.json"
+    $t2imu analysis domain-gap --real "$out/real-$activity.csv" --synthetic "$set_dir/syn-$activity.csv" --out "$set_dir/gap-$activity.json"
   done
 done

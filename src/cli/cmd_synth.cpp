@@ -13,7 +13,7 @@ namespace t2imu::cli {
 
 namespace {
 
-// Relative to the working directory, like models/default: the quick start runs from the repository root.
+// Relative to the working directory, like models/default-v5: the quick start runs from the repository root.
 const char* const kDefaultActivityReference = "models/motion-activity.csv";
 
 struct SynthArgs {
