@@ -188,3 +188,84 @@ TEST(DatasetBuilder, DerivedClipsCarryTheirProvenanceCountApartAndCanBeLeftOut) 
     build_dataset(o);
     for (const auto& row : read_csv(o.out_dir + "/clips.csv").rows) EXPECT_NE(row[clips.column("source_dataset")], "edited");
 }
+
+namespace {
+
+// Frame g of the capture-rate copy that falls on 20 fps frame f of the clip, or -1 between them.
+int capture_frame_at(int f, double fps, double start_s) {
+    const double s = (f / 20.0 - start_s) * fps;
+    return std::fabs(s - std::round(s)) < 1e-3 ? static_cast<int>(std::lround(s)) : -1;
+}
+
+}  // namespace
+
+TEST(DatasetBuilder, CapturedClipsKeepTheirCaptureRateWhereNew_jointsAre) {
+    // An HDM05 jog (120 fps, kept at 60), a Bandai Namco walk (30 fps) and a CMU walk (20 fps files: no copy).
+    std::string manifest;
+    SHARED_OR_SKIP(manifest, "mocap/manifest.csv");
+    const std::string hdm = test::unpacked_shared_archive("mocap/hdm05_amc_native.tar.xz");
+    const std::string bandai = test::unpacked_shared_archive("mocap/bandai_bvh_native.tar.xz");
+    const std::string cmu = test::unpacked_shared_archive("mocap/cmu_daz_bvh_20fps.tar.xz");
+    ASSERT_FALSE(hdm.empty() || bandai.empty() || cmu.empty());
+    const std::string dir = test::scratch_dir("builder_capture_rate");
+    const std::vector<std::pair<std::string, std::string>> files = {
+        {hdm, "hdm05_amc/HDM_bd_jogLeftCircle4StepsRstart_001_120.amc"}, {hdm, "hdm05_amc/HDM_bd.asf"},
+        {bandai, "bandai_bvh/dataset-2_walk_normal_001.bvh"}, {cmu, "bvh20/07_05.bvh"}};
+    std::ofstream captions(dir + "/captions.csv");
+    captions << "file,start_frame,end_frame,caption,subject,licence\n";
+    for (const auto& [root, f] : files) {
+        fs::create_directories(fs::path(dir + "/" + f).parent_path());
+        fs::copy_file(root + "/" + f, dir + "/" + f);
+        if (f.find(".asf") == std::string::npos) captions << f << ",0,100000,a person moves,s" << f.size() << ",test\n";
+    }
+    captions.close();
+    BuildOptions o;
+    o.mocap_dir = dir;
+    o.out_dir = dir + "/set";
+    o.mirror = true;
+    o.derive = false;
+    build_dataset(o);
+
+    const CsvTable clips = read_csv(o.out_dir + "/clips.csv");
+    std::map<int, int> copies_at;  // by capture rate, mirrored clips included
+    for (const auto& row : clips.rows) {
+        const std::string id = row[clips.column("id")], fps_text = row[clips.column("capture_fps")];
+        const std::string copy_path = o.out_dir + "/capture_joints/" + id + ".npy";
+        if (row[clips.column("file")].rfind("bvh20/", 0) == 0) {  // already 20 fps: nothing to keep
+            EXPECT_TRUE(fps_text.empty());
+            EXPECT_FALSE(fs::exists(copy_path));
+            continue;
+        }
+        const double fps = std::stod(fps_text), start_s = std::stod(row[clips.column("capture_start_s")]);
+        ++copies_at[static_cast<int>(std::lround(fps))];
+        EXPECT_GT(start_s, -1 / fps - 1e-9);
+        EXPECT_LE(start_s, 1e-9);
+        const JointSequence joints = joint_sequence_from_array(read_npy(o.out_dir + "/new_joints/" + id + ".npy"), id, 22, 1, 20);
+        const JointSequence copy = joint_sequence_from_array(read_npy(copy_path), copy_path, 22, 1, fps);
+        // It spans the clip: its last frame at or after new_joints' last.
+        EXPECT_GE(start_s + (copy.num_frames - 1) / fps, (joints.num_frames - 1) / 20.0 - 1e-6) << id;
+        EXPECT_LT(start_s + (copy.num_frames - 1) / fps, (joints.num_frames - 1) / 20.0 + 1 / fps) << id;
+        // Where a captured frame falls on a 20 fps frame, both show the same pose at the same place, to float32
+        // rounding (measured: 6e-8 m).
+        double worst = 0;
+        int compared = 0;
+        for (int f = 0; f < joints.num_frames; ++f) {
+            const int g = capture_frame_at(f, fps, start_s);
+            if (g < 0) continue;
+            ++compared;
+            for (int j = 0; j < 22; ++j) worst = std::max(worst, (joints.at(f, j) - copy.at(g, j)).norm());
+        }
+        EXPECT_GT(compared, joints.num_frames / 3) << id;
+        EXPECT_LT(worst, 1e-5) << id;
+    }
+    EXPECT_EQ(copies_at[60], 2);  // the jog and its mirror
+    EXPECT_GE(copies_at[30], 2);
+    EXPECT_EQ(copies_at.size(), 2u);
+    const nlohmann::json summary = nlohmann::json::parse(read_file_text(o.out_dir + "/summary.json"));
+    EXPECT_GT(summary["capture_rate"]["minutes"].get<double>(), 0.1);
+
+    o.capture_rate = false;  // --no-capture-rate
+    build_dataset(o);
+    EXPECT_TRUE(fs::is_empty(o.out_dir + "/capture_joints"));
+    for (const auto& row : read_csv(o.out_dir + "/clips.csv").rows) EXPECT_TRUE(row[clips.column("capture_fps")].empty());
+}

@@ -155,6 +155,31 @@ TEST(MocapImport, NativeRateFilesAgreeWithTheir20FpsVersions) {
     std::printf("[ mocap    ] native 120 fps vs shipped 20 fps: %d clips, max joint difference %.2e m\n", compared, worst);
 }
 
+TEST(MocapImport, CaptureRateKeepsCapturedFramesOnly) {
+    EXPECT_DOUBLE_EQ(capture_fps_for(120), 60);
+    EXPECT_DOUBLE_EQ(capture_fps_for(1 / 0.00833333), 1 / 0.00833333 / 2);  // as BVH files print 1/120 s
+    EXPECT_DOUBLE_EQ(capture_fps_for(30), 30);
+    EXPECT_DOUBLE_EQ(capture_fps_for(24), 24);
+    EXPECT_DOUBLE_EQ(capture_fps_for(100), 50);
+    EXPECT_DOUBLE_EQ(capture_fps_for(250), 250.0 / 5);
+    EXPECT_THROW(capture_fps_for(0), Error);
+    std::string manifest;
+    SHARED_OR_SKIP(manifest, "mocap/manifest.csv");
+    // A 120 fps file at fps 0 is every second captured frame: the 20 fps import's frames are every third of them.
+    const std::string native = test::unpacked_shared_archive("mocap/cmu_daz_bvh_native.tar.xz") + "/native";
+    const std::string path = files_in(native, ".bvh").front();
+    ImportOptions capture;
+    capture.fps = 0;
+    const JointSequence a = import_motion(path, capture), b = import_motion(path);
+    EXPECT_NEAR(a.fps, 60, 1e-3);
+    EXPECT_EQ((a.num_frames - 1) / 3, b.num_frames - 1);
+    for (int f = 0; f < b.num_frames; ++f)
+        for (int j = 0; j < 22; ++j) ASSERT_LT((a.at(3 * f, j) - b.at(f, j)).norm(), 1e-9) << f;
+    ImportOptions npy = capture;
+    npy.format = "npy";
+    EXPECT_THROW(import_motion(path, npy), Error);  // an .npy does not know its rate
+}
+
 TEST(MocapImport, RefusesUnknownSkeletonNamingTheJoints) {
     const std::string dir = test::scratch_dir("mocap_unknown_skeleton");
     const std::string path = dir + "/robot.bvh";

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <set>
 
 #include "core/csv.hpp"
@@ -88,6 +89,39 @@ TEST(MotionSource, RetrievalPrefersTaggedClipsTheClassifierAgreesWith) {
     EXPECT_EQ(clips_drawn(*source, "a person walks", "running", &tier), (std::set<std::string>{"c3", "c4", "c5"}));
     EXPECT_EQ(tier, "tags");
     EXPECT_EQ(source->draw_record(0)["classifier"], "walking");
+}
+
+// A dataset's capture-rate copies (dataset_builder.hpp): the retrieval draw's copy shows the same instants of the
+// same clip as the 20 fps draw, time warp and crop included. The copies here join the clips' frames by curves
+// (test::add_capture_copies), so they agree with the 20 fps draw's linear time warp up to the difference of the
+// two interpolations between 20 fps frames; a clip without a copy gives none.
+TEST(MotionSource, RetrievalGivesTheSameSpanAtTheCaptureRate) {
+    const std::string data = misleading_dataset("retrieval_capture_rate");
+    test::add_capture_copies(data, {"c0", "c1", "c2", "c3", "c4"});
+    auto source = open_motion_source("retrieval:" + data, SampleOptions{}, "cpu", data + "/vocab.safetensors");
+    int with_copy = 0, without = 0;
+    for (uint64_t seed = 0; seed < 30; ++seed) {
+        const JointSequence draw = source->generate({"a person walks"}, {seed % 2 ? "walking" : "running"}, {seed}, 30)[0];
+        const std::optional<JointSequence> copy = source->capture_rate_motion(0);
+        if (source->draw_record(0)["clip"] == "c5") {
+            EXPECT_FALSE(copy.has_value());
+            ++without;
+            continue;
+        }
+        ++with_copy;
+        ASSERT_TRUE(copy.has_value());
+        EXPECT_DOUBLE_EQ(copy->fps, 60);
+        EXPECT_EQ(copy->num_frames, 3 * (draw.num_frames - 1) + 1);
+        double error = 0, step = 0;  // mean over joints and frames: copy against draw, and one 20 fps frame's travel
+        for (int k = 0; k + 1 < draw.num_frames; ++k)
+            for (int j = 0; j < 22; ++j) {
+                error += (copy->at(3 * k, j) - draw.at(k, j)).norm();
+                step += (draw.at(k + 1, j) - draw.at(k, j)).norm();
+            }
+        EXPECT_LT(error, 0.05 * step) << "seed " << seed;
+    }
+    EXPECT_GT(with_copy, 0);
+    EXPECT_GT(without, 0);
 }
 
 // The hybrid: retrieval's clip for the prompt (tags as above), noised to the strength and finished by a (tiny,

@@ -227,6 +227,46 @@ TEST(Synth, RetrievalGivesCapturedMotionThatPassesTheFilter) {
     EXPECT_EQ(read_npy(out + "/motions/j00000_joints.npy").shape, (std::vector<int64_t>{40, 22, 3}));
 }
 
+// --capture-rate: the sensors see the retrieved clip's capture-rate copy (here 60 fps, the clip's frames joined by
+// Catmull-Rom curves: test::add_capture_copies), recorded in synth.json and each marker; the recordings keep their
+// rate and length, and differ from the 20 fps ones (the same motion, sampled otherwise) by less than the signal.
+TEST(Synth, CaptureRateCopiesReachTheSensors) {
+    const std::string data = test::scratch_dir("synth_capture_rate_data");
+    fs::remove_all(data);
+    fs::copy(tiny().data, data, fs::copy_options::recursive);
+    test::add_capture_copies(data, {"c0", "c1", "c2", "c3", "c4", "c5"});
+    const std::string out20 = test::scratch_dir("synth_capture_rate_20"), out60 = test::scratch_dir("synth_capture_rate_60");
+    SynthOptions o = tiny_options(out20);
+    o.model = "retrieval:" + data;
+    o.vocab = data + "/vocab.safetensors";
+    run_synth(o);
+    o.out = out60;
+    o.capture_rate = true;
+    run_synth(o);
+    const nlohmann::json settings = nlohmann::json::parse(read_file_text(out60 + "/synth.json"));
+    EXPECT_TRUE(settings["capture_rate"].get<bool>());
+    EXPECT_FALSE(nlohmann::json::parse(read_file_text(out20 + "/synth.json")).contains("capture_rate"));
+    for (const char* job : {"j00000", "j00003"}) {
+        const nlohmann::json m60 = nlohmann::json::parse(read_file_text(out60 + "/jobs/" + job + ".json"));
+        const nlohmann::json m20 = nlohmann::json::parse(read_file_text(out20 + "/jobs/" + job + ".json"));
+        EXPECT_DOUBLE_EQ(m60["sensor_motion_fps"].get<double>(), 60);
+        EXPECT_FALSE(m20.contains("sensor_motion_fps"));
+        EXPECT_EQ(m60["source_draw"], m20["source_draw"]);
+        const CsvTable a = read_csv(csv_of(out20, job, "male_average")), b = read_csv(csv_of(out60, job, "male_average"));
+        ASSERT_EQ(a.rows.size(), b.rows.size());
+        double diff = 0, signal = 0;  // vertical acceleration (SisFall's y): rms of the difference and of the signal
+        for (size_t r = 0; r < a.rows.size(); ++r) {
+            diff += std::pow(a.number(r, a.column("acc_y")) - b.number(r, b.column("acc_y")), 2);
+            signal += std::pow(a.number(r, a.column("acc_y")) - a.number(0, a.column("acc_y")), 2);
+        }
+        EXPECT_GT(diff, 0) << job;
+        EXPECT_LT(diff, 0.5 * signal) << job;
+    }
+    // A resume that asks for the other rate is refused: the folder holds one synthesis.
+    o.capture_rate = false;
+    EXPECT_THROW(run_synth(o), Error);
+}
+
 TEST(Synth, FilterRegeneratesThenDropsWhatNeverPasses) {
     const std::string out = test::scratch_dir("synth_filter");
     SynthOptions o = tiny_options(out);

@@ -1,9 +1,11 @@
 #include "tiny_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 
+#include "core/csv.hpp"
 #include "core/npy.hpp"
 #include "motion/humanml3d.hpp"
 #include "motion/mocap_import.hpp"
@@ -36,6 +38,37 @@ std::string make_tiny_motion_dataset(const std::string& dir) {
     for (size_t i = 0; i < v.size(); ++i) v[i] = static_cast<float>(std::cos(0.3 * static_cast<double>(i)));
     WordVectors(words, v).save(dir + "/vocab.safetensors");
     return dir;
+}
+
+void add_capture_copies(const std::string& dir, const std::vector<std::string>& ids) {
+    CsvTable clips;
+    if (fs::exists(dir + "/clips.csv")) {
+        clips = read_csv(dir + "/clips.csv");
+    } else {
+        clips.header = {"id", "activity_tags", "split"};
+        std::ifstream train(dir + "/train.txt");
+        for (std::string id; std::getline(train, id);) clips.rows.push_back({id, "walking", "train"});
+    }
+    clips.header.insert(clips.header.end(), {"capture_fps", "capture_start_s"});
+    fs::create_directories(dir + "/capture_joints");
+    for (auto& row : clips.rows) {
+        const bool copy = std::find(ids.begin(), ids.end(), row[0]) != ids.end();
+        row.insert(row.end(), {copy ? "60" : "", copy ? "0" : ""});
+        if (!copy) continue;
+        const std::string file = dir + "/new_joint_vecs/" + row[0] + ".npy";
+        const JointSequence clip = recover_from_ric(feature_matrix_from_array(read_npy(file), file));
+        JointSequence up(3 * (clip.num_frames - 1) + 1, 22, 60);
+        auto at = [&](int k, int j) { return clip.at(std::clamp(k, 0, clip.num_frames - 1), j); };
+        for (int g = 0; g < up.num_frames; ++g)
+            for (int j = 0; j < 22; ++j) {  // Catmull-Rom: through every frame, with continuous velocity
+                const int k = std::min(g / 3, clip.num_frames - 2);
+                const double t = g / 3.0 - k;
+                const Eigen::Vector3d p0 = at(k - 1, j), p1 = at(k, j), p2 = at(k + 1, j), p3 = at(k + 2, j);
+                up.at(g, j) = 0.5 * (2 * p1 + (p2 - p0) * t + (2 * p0 - 5 * p1 + 4 * p2 - p3) * t * t + (3 * p1 - p0 - 3 * p2 + p3) * t * t * t);
+            }
+        write_npy(dir + "/capture_joints/" + row[0] + ".npy", joint_sequence_to_array(up));
+    }
+    write_csv(dir + "/clips.csv", clips);
 }
 
 std::string write_tiny_train_config(const std::string& dir, const std::string& data, const std::string& out, const std::string& extra) {

@@ -14,7 +14,7 @@ static void add_import_command(CLI::App& motion) {
     static ImportOptions options;
     cmd->add_option("input", in, "motion file (.bvh, .amc, .npy)")->required()->check(CLI::ExistingFile);
     cmd->add_option("--out", out, "output joints .npy (float32)")->required();
-    cmd->add_option("--fps", options.fps, "output frame rate")->capture_default_str();
+    cmd->add_option("--fps", options.fps, "output frame rate (0: the capture rate, decimated by a whole number to at most 60)")->capture_default_str();
     cmd->add_option("--format", options.format, "bvh, amc or npy (default: by extension)");
     cmd->add_option("--asf", options.asf, "ASF skeleton of an AMC clip (default: the .asf beside it named as its prefix)");
     cmd->add_option("--up", options.up, "the source's up axis: y or z (Z-up captures are turned to Y up)")

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <unistd.h>
 
@@ -110,6 +111,22 @@ std::vector<std::pair<int, int>> spread(const std::vector<std::pair<int, int>>& 
     return out;
 }
 
+std::string decimal(double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.9g", x);
+    return buf;
+}
+
+// The recording at its capture rate (capture_fps_for), or nothing when that is 20 fps or less: the clip itself
+// then is the capture.
+std::optional<JointSequence> import_at_capture_rate(const std::string& path) {
+    ImportOptions at_capture;
+    at_capture.fps = 0;
+    JointSequence s = import_motion(path, at_capture);
+    if (s.fps <= kFps + 1e-9) return std::nullopt;
+    return s;
+}
+
 JointSequence mirrored(const JointSequence& s) {
     JointSequence out = s;
     for (int f = 0; f < s.num_frames; ++f)
@@ -194,9 +211,10 @@ struct Tally {
     std::vector<Written> written;
     std::map<std::string, TagTally> per_tag;  // by single tag ("jumping;standing" counts for both)
     int next_id = 0;
+    double capture_minutes = 0;  // of the capture-rate copies
     Tally() {
         clips_csv.header = {"id", "file", "source_dataset", "subject", "licence", "activity_tags", "start_frame", "end_frame",
-                            "frames", "mirrored", "provenance", "split"};  // "split" holds the split key until the deal
+                            "frames", "mirrored", "provenance", "capture_fps", "capture_start_s", "split"};  // "split" holds the split key until the deal
     }
 };
 
@@ -219,9 +237,21 @@ ClipSource derived_source(const ClipSource& captured, const DerivedClip& d) {
     return c;
 }
 
-// Cuts one recording into chunks (at most chunks_per_file of them, 0 = all) and writes each, and its mirror.
+// The span of a captured recording's capture-rate copy that covers a chunk's new_joints (20 fps frames begin to
+// end - 2: features hold one frame fewer than the joints), from the captured frame at or before `begin`, placed
+// as process_file places the chunk (`part`, its 20 fps frames); and that first frame's time after the chunk's, s.
+std::pair<JointSequence, double> capture_span(const JointSequence& capture, const JointSequence& part, int begin, int end) {
+    const double r = capture.fps;
+    const int first = static_cast<int>(std::floor(begin / kFps * r + 1e-6));
+    const int last = std::min(capture.num_frames - 1, static_cast<int>(std::ceil((end - 2) / kFps * r - 1e-6)));
+    return {place_like_process_file(slice_frames(capture, first, last + 1), part), first / r - begin / kFps};
+}
+
+// Cuts one recording into chunks (at most chunks_per_file of them, 0 = all) and writes each, and its mirror;
+// with `capture` (the recording at its capture rate), each chunk's capture-rate copy too.
 void write_recording(const BuildOptions& o, const std::string& tmp, const ClipSource& c, const std::string& key,
-                     const JointSequence& joints, int max_frames, size_t chunks_per_file, Tally& tally, BuildSummary& summary) {
+                     const JointSequence& joints, const JointSequence* capture, int max_frames, size_t chunks_per_file, Tally& tally,
+                     BuildSummary& summary) {
     for (const auto& [begin, end] : spread(chunks(joints.num_frames, max_frames), chunks_per_file)) {
         const std::vector<CaptionLine> captions = captions_for_chunk(c, begin, end, joints.num_frames);
         if (captions.empty() || end - begin < 2) continue;
@@ -235,7 +265,15 @@ void write_recording(const BuildOptions& o, const std::string& tmp, const ClipSo
             if (mirror)
                 for (CaptionLine& l : lines) l.caption = swap_left_right(l.caption);
             Written w{clip_id, key, {}};
-            write_clip(tmp, clip_id, mirror ? mirrored(part) : part, lines, w.features);
+            const JointSequence clip = mirror ? mirrored(part) : part;
+            write_clip(tmp, clip_id, clip, lines, w.features);
+            std::string capture_fps, capture_start;
+            if (capture) {
+                const auto [copy, start_s] = capture_span(mirror ? mirrored(*capture) : *capture, clip, begin, end);
+                write_npy(tmp + "/capture_joints/" + clip_id + ".npy", joint_sequence_to_array(copy));
+                capture_fps = decimal(capture->fps), capture_start = decimal(start_s);
+                tally.capture_minutes += copy.num_frames / copy.fps / 60.0;
+            }
             const double minutes = static_cast<double>(w.features.rows()) / kFps / 60.0;
             summary.minutes += minutes;
             summary.captions += static_cast<int>(lines.size());
@@ -249,7 +287,7 @@ void write_recording(const BuildOptions& o, const std::string& tmp, const ClipSo
             }
             tally.clips_csv.rows.push_back({clip_id, c.file, c.source_dataset, c.subject, c.licence, c.tags, std::to_string(begin),
                                             std::to_string(end), std::to_string(w.features.rows()), mirror ? "1" : "0",
-                                            c.provenance.is_null() ? "" : c.provenance.dump(), key});
+                                            c.provenance.is_null() ? "" : c.provenance.dump(), capture_fps, capture_start, key});
             tally.written.push_back(std::move(w));
         }
     }
@@ -271,7 +309,7 @@ nlohmann::json train_draw_share(const CsvTable& clips) {
 BuildSummary build_into(const BuildOptions& o, const std::string& tmp) {
     const std::map<std::string, ClipSource> sources = read_sources(o);
     fs::remove_all(tmp);
-    for (const char* sub : {"new_joints", "new_joint_vecs", "texts"}) fs::create_directories(tmp + "/" + sub);
+    for (const char* sub : {"new_joints", "new_joint_vecs", "texts", "capture_joints"}) fs::create_directories(tmp + "/" + sub);
     const int max_frames = static_cast<int>(std::floor(o.max_seconds * kFps + 1e-9));
     const size_t chunks_per_file = o.max_seconds_per_file > 0 ? static_cast<size_t>(std::max(1.0, std::floor(o.max_seconds_per_file / o.max_seconds))) : 0;
 
@@ -285,8 +323,10 @@ BuildSummary build_into(const BuildOptions& o, const std::string& tmp) {
         if (c.captions.empty()) continue;
         if (!o.licences.empty() && !o.licences.count(c.source_dataset)) continue;
         JointSequence joints;
+        std::optional<JointSequence> capture;
         try {
             joints = import_motion(o.mocap_dir + "/" + file);
+            if (o.capture_rate) capture = import_at_capture_rate(o.mocap_dir + "/" + file);
         } catch (const Error& e) {
             if (o.strict) throw;
             skipped.push_back({{"file", file}, {"reason", e.what()}});
@@ -294,10 +334,10 @@ BuildSummary build_into(const BuildOptions& o, const std::string& tmp) {
             continue;
         }
         const std::string key = split_key(c);
-        write_recording(o, tmp, c, key, joints, max_frames, chunks_per_file, tally, summary);
+        write_recording(o, tmp, c, key, joints, capture ? &*capture : nullptr, max_frames, chunks_per_file, tally, summary);
         if (!o.derive) continue;
         for (DerivedClip& d : derive_clips(joints, c.tags, file, derive_report))
-            write_recording(o, tmp, derived_source(c, d), key, d.joints, max_frames, chunks_per_file, tally, summary);
+            write_recording(o, tmp, derived_source(c, d), key, d.joints, nullptr, max_frames, chunks_per_file, tally, summary);
     }
     if (tally.written.empty()) throw Error(o.out_dir, "clips", "at least one clip with a caption after filtering");
     summary.clips = static_cast<int>(tally.written.size());
@@ -335,6 +375,7 @@ BuildSummary build_into(const BuildOptions& o, const std::string& tmp) {
                                       {"derived_minutes", v.minutes - v.captured_minutes}};
     j["derived"] = {{"included", o.derive}, {"edits_refused", derive_report.refused}, {"failed_quality", derive_report.failed_quality}};
     j["train_draw_share"] = train_draw_share(clips_csv);
+    j["capture_rate"] = {{"included", o.capture_rate}, {"minutes", tally.capture_minutes}};
     for (Split s : {Split::train, Split::val, Split::test})
         j["split_clips"][split_name(s)] = std::count(lists[s].begin(), lists[s].end(), '\n');
     summary.json = j.dump(1);

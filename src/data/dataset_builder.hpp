@@ -4,8 +4,14 @@
 //   texts/ID.txt           caption#tokens#start#end lines
 //   Mean.npy, Std.npy      over every clip, mirrored ones included (as cal_mean_variance does)
 //   train.txt, val.txt, test.txt, all.txt   ids; a clip and its mirror share a split
+//   capture_joints/ID.npy  [G,22,3] float32: a captured clip at its capture rate where that is over 20 fps (120 fps
+//                          HDM05 kept at 60, Bandai Namco 30, ReActIdle 24; mocap_import.hpp's capture_fps_for),
+//                          placed as new_joints (place_like_process_file), from the captured frame at or before the
+//                          clip's first: what the virtual sensors see of a retrieved clip (motion_source.hpp)
 //   clips.csv              id, file, source_dataset, subject, licence, activity_tags, start/end frame, frames, mirrored,
-//                          provenance (JSON of a derived clip: source file, method, parameters, seed; empty if captured), split
+//                          provenance (JSON of a derived clip: source file, method, parameters, seed; empty if captured),
+//                          capture_fps and capture_start_s (the copy's rate and its first frame's time after the clip's
+//                          first, s, in (-1/capture_fps, 0]; empty without a copy), split
 //   summary.json           clips, minutes, captions, per activity tag (captured and derived minutes), each tag's share
 //                          of the training draws, derived clips refused or failing quality, skipped files and why
 //
@@ -39,6 +45,9 @@ struct BuildOptions {
     // Add the clips derived from captured ones (derived_clips.hpp: stairs from walks, sitting down and standing
     // up from idle standing), tagged source_dataset "edited" with their provenance in clips.csv.
     bool derive = true;
+    // Keep each captured clip at its capture rate too (capture_joints/): derived clips are made at 20 fps and
+    // have no such copy.
+    bool capture_rate = true;
     bool strict = false;  // abort on the first clip that fails to import (default: skip it and report it)
 
     // Throws Error naming the option unless the folders are given and the lengths are in range.

@@ -173,29 +173,56 @@ JointSequence uniform_skeleton(const JointSequence& joints, const std::array<Vec
     return out;
 }
 
+namespace {
+
+// Where process_file puts a retargeted motion: its lowest joint on the floor, its root's frame-0 XZ at the
+// origin, its frame-0 facing turned to +Z.
+struct Placement {
+    double floor = 0;
+    Vector3d root_xz;
+    Vector3d forward;  // frame 0's facing before the turn
+    Quatf rotation;
+};
+
+Placement placement_of(const JointSequence& p) {
+    Placement out;
+    out.floor = p.positions[0].y();
+    for (const Vector3d& v : p.positions) out.floor = std::min(out.floor, v.y());
+    out.root_xz = Vector3d(p.at(0, 0).x(), 0, p.at(0, 0).z());
+    // process_file unpacks face_joint_indx [2,1,17,16] as r_hip, l_hip, sdr_r, sdr_l.
+    const Vector3d across = across_body(p, 0, right_hip, left_hip, right_shoulder, left_shoulder).normalized();
+    out.forward = kUp.cross(across).normalized();
+    out.rotation = qbetween_f32(to_f32(out.forward), kFacing.cast<float>());
+    return out;
+}
+
+// The official code holds the canonicalised positions in float32 (its qrot returns float32), and every later
+// quantity is computed from them; rounding here is what keeps short bones (the head: 0.10 m) within 1e-5 of the
+// released features.
+JointSequence placed(JointSequence p, const Placement& at) {
+    for (Vector3d& v : p.positions) {
+        v.y() -= at.floor;
+        v = qrot_f32(at.rotation, to_f32(v - at.root_xz)).cast<double>();
+    }
+    return p;
+}
+
+}  // namespace
+
+JointSequence place_like_process_file(const JointSequence& joints, const JointSequence& reference) {
+    require_motion(joints, 1, "place_like_process_file");
+    return placed(uniform_skeleton(joints, kTargetOffsets), placement_of(uniform_skeleton(reference, kTargetOffsets)));
+}
+
 ProcessFileResult process_file(const JointSequence& joints, double feet_threshold) {
     require_motion(joints, 2, "process_file");
     ProcessFileResult r;
     r.after_uniform_skeleton = uniform_skeleton(joints, kTargetOffsets);
-    JointSequence p = r.after_uniform_skeleton;
+    const Placement placement = placement_of(r.after_uniform_skeleton);
+    r.forward_init = placement.forward;
+    r.root_quat_init = to_quat(placement.rotation);
+    JointSequence p = r.global_positions = placed(r.after_uniform_skeleton, placement);
     const int n = p.num_frames;
-
-    double floor = p.positions[0].y();
-    for (const Vector3d& v : p.positions) floor = std::min(floor, v.y());
-    for (Vector3d& v : p.positions) v.y() -= floor;
-    const Vector3d root_init_xz(p.at(0, 0).x(), 0, p.at(0, 0).z());
-    for (Vector3d& v : p.positions) v -= root_init_xz;
-
-    // process_file unpacks face_joint_indx [2,1,17,16] as r_hip, l_hip, sdr_r, sdr_l.
-    const Vector3d across = across_body(p, 0, right_hip, left_hip, right_shoulder, left_shoulder).normalized();
-    r.forward_init = kUp.cross(across).normalized();
-    // The official code holds the canonicalised positions in float32 (its qrot returns float32), and every
-    // later quantity is computed from them; rounding here is what keeps short bones (the head: 0.10 m) within
-    // 1e-5 of the released features.
-    const Quatf root_init = qbetween_f32(to_f32(r.forward_init), kFacing.cast<float>());
-    r.root_quat_init = to_quat(root_init);
-    for (Vector3d& v : p.positions) v = qrot_f32(root_init, to_f32(v)).cast<double>();
-    r.global_positions = p;
 
     FeatureMatrix& d = r.features;
     d = FeatureMatrix::Zero(n - 1, kFeatureDim);

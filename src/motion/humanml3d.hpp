@@ -42,6 +42,13 @@ struct ProcessFileResult {
 ProcessFileResult process_file(const JointSequence& joints, double feet_threshold = 0.002);
 FeatureMatrix joints_to_features(const JointSequence& joints);  // process_file(...).features
 
+// The same motion at another frame rate (the capture rate, t2imu data build's capture_joints/) placed where
+// process_file places `reference`, that motion at 20 fps from the same first instant: retargeted to
+// smpl22::kTargetOffsets, lowered by the reference's floor, moved by its frame-0 root XZ and turned by its frame-0
+// facing. At the reference's frame times it equals process_file(reference).global_positions up to float32
+// rounding (and the lowest point between 20 fps frames may dip under the floor by millimetres).
+JointSequence place_like_process_file(const JointSequence& joints, const JointSequence& reference);
+
 // Naive inverse kinematics (Skeleton.inverse_kinematics_np): the root rotation turns the body's forward
 // direction to +Z; each bone's local rotation is the shortest arc from its rest direction (smpl22::kRawOffsets)
 // to its current direction, relative to the chain's accumulated rotation. Bone twist is not observable from

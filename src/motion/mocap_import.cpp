@@ -30,6 +30,7 @@ JointSequence smpl_joints_from_poses(const BvhMotion& structure, const SkeletonM
         from[j] = structure.find(map.joints[j].from);
         to[j] = map.joints[j].to.empty() ? -1 : structure.find(map.joints[j].to);
     }
+    if (fps == 0) fps = capture_fps_for(1.0 / frame_time);
     const std::vector<BvhPose> resampled = resample_poses(poses, frame_time, fps);
     JointSequence out(static_cast<int>(resampled.size()), 22, fps);
     for (int f = 0; f < out.num_frames; ++f) {
@@ -98,14 +99,21 @@ JointSequence import_motion_as_captured(const std::string& path, const ImportOpt
     const std::string format = options.format.empty() ? lower_extension(path) : options.format;
     if (format == "bvh") return import_bvh(path, options);
     if (format == "amc") return import_amc(path, options);
+    if (format == "npy" && options.fps == 0) throw Error(path, "--fps", "the joints' frame rate (an .npy does not record it)", "0");
     if (format == "npy") return joint_sequence_from_array(read_npy(path), path, 22, 1, options.fps);
     throw Error(path, "format", "bvh, amc or npy (by extension, or --format)", format.empty() ? "none" : format);
 }
 
 }  // namespace
 
+double capture_fps_for(double capture_fps) {
+    if (!(capture_fps > 0 && std::isfinite(capture_fps))) throw Error("import", "capture rate", "a positive frame rate", std::to_string(capture_fps));
+    // Rates are printed rounded (0.00833333 s for 1/120 s): a thousandth over a whole multiple still divides.
+    return capture_fps / std::max(1.0, std::ceil(capture_fps / kMaxCaptureFps - 1e-3));
+}
+
 JointSequence import_motion(const std::string& path, const ImportOptions& options) {
-    if (!(options.fps > 0) || options.fps > 1000) throw Error(path, "--fps", "a frame rate in (0, 1000]");
+    if (!(options.fps >= 0) || options.fps > 1000) throw Error(path, "--fps", "a frame rate in (0, 1000], or 0 for the capture rate");
     if (options.up != 'y' && options.up != 'z') throw Error(path, "--up", "y or z", std::string(1, options.up));
     JointSequence s = import_motion_as_captured(path, options);
     return options.up == 'z' ? z_up_to_y_up(std::move(s)) : s;

@@ -38,6 +38,7 @@ void read_synth(TomlSection s, SynthOptions& o, const std::string& path) {
     o.sampling.seed = read_seed(s, "seed", o.sampling.seed, path, "synth.seed");
     s.read("seconds", o.seconds);
     s.read("rate_hz", o.rate_hz);
+    s.read("capture_rate", o.capture_rate);
     s.read("filter", o.filter);
     s.read("max_retries", o.max_retries);
     s.read("activity_reference", o.activity_reference);

@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "core/csv.hpp"
+#include "core/npy.hpp"
 #include "data/hml3d_dataset.hpp"
 #include "motion/activity_names.hpp"
 #include "motion/humanml3d.hpp"
@@ -94,6 +95,56 @@ std::map<std::string, std::vector<std::string>> clip_tags(const std::string& dat
     return out;
 }
 
+// A captured clip's copy at its capture rate (dataset_builder.hpp: capture_joints/ and clips.csv).
+struct CaptureCopy {
+    double fps = 0;
+    double start_s = 0;  // its first frame's time after the clip's first frame, s
+};
+
+std::map<std::string, CaptureCopy> capture_copies(const std::string& dataset) {
+    std::map<std::string, CaptureCopy> out;
+    const std::string path = dataset + "/clips.csv";
+    if (!std::filesystem::exists(path)) return out;
+    const CsvTable t = read_csv(path);
+    if (!t.has_column("capture_fps")) return out;  // a dataset built before capture-rate copies existed
+    const size_t id = t.column("id"), fps = t.column("capture_fps"), start = t.column("capture_start_s");
+    for (size_t r = 0; r < t.rows.size(); ++r)
+        if (!t.rows[r][fps].empty()) out[t.rows[r][id]] = {t.number(r, fps), t.number(r, start)};
+    return out;
+}
+
+// Catmull-Rom interpolation of every joint at fractional frame `s` (clamped to the sequence): continuous
+// velocity, so resampling adds no kink (and no acceleration spike) between captured frames.
+void interpolate_frame(const JointSequence& m, double s, JointSequence& out, int frame) {
+    s = std::clamp(s, 0.0, static_cast<double>(m.num_frames - 1));
+    const int i = std::min(static_cast<int>(std::floor(s)), m.num_frames - 1);
+    const double t = s - i;
+    auto at = [&](int f, int j) { return m.at(std::clamp(f, 0, m.num_frames - 1), j); };
+    for (int j = 0; j < m.num_joints; ++j) {
+        const Eigen::Vector3d p0 = at(i - 1, j), p1 = at(i, j), p2 = at(i + 1, j), p3 = at(i + 2, j);
+        out.at(frame, j) = 0.5 * ((2 * p1) + (p2 - p0) * t + (2 * p0 - 5 * p1 + 4 * p2 - p3) * t * t + (3 * p1 - p0 - 3 * p2 + p3) * t * t * t);
+    }
+}
+
+// The frames of `copy` (at copy.fps) that show what the 20 fps draw shows: span frames a.. of the clip, time-warped
+// by `factor` and cropped from warped frame `start`, `frames` long. Output frame g, at g / fps s into the draw,
+// shows the clip at (a + (start + g 20 / fps) factor) / 20 s.
+JointSequence capture_rate_crop(const JointSequence& copy, const CaptureCopy& c, int a, double factor, int start, int frames) {
+    const int n = static_cast<int>(std::floor((frames - 1) * c.fps / 20.0 + 1e-6)) + 1;
+    JointSequence out(n, copy.num_joints, c.fps);
+    for (int g = 0; g < n; ++g) {
+        const double clip_s = (a + (start + g * 20.0 / c.fps) * factor) / 20.0;
+        interpolate_frame(copy, (clip_s - c.start_s) * c.fps, out, g);
+    }
+    return out;
+}
+
+// "000123#40-120" -> 40: the first 20 fps frame of a caption span within its clip (0 for a whole clip).
+int span_start(const std::string& id) {
+    const size_t hash = id.find('#');
+    return hash == std::string::npos ? 0 : std::stoi(id.substr(hash + 1));
+}
+
 enum class Tier { tags_and_classifier, tags, any };
 const char* tier_name(Tier t) { return t == Tier::tags_and_classifier ? "tags+classifier" : t == Tier::tags ? "tags" : "any"; }
 
@@ -101,7 +152,7 @@ class RetrievalSource : public MotionSource {
 public:
     RetrievalSource(const std::string& dataset, const std::string& vocab, const std::string& activity_reference)
         : dataset_(dataset), vocab_(WordVectors::load(vocab.empty() ? default_vocab() : vocab)), sif_(vocab_, 1e-4),
-          clips_(Hml3dDataset(dataset, "train").clips()) {
+          clips_(Hml3dDataset(dataset, "train").clips()), capture_(capture_copies(dataset)) {
         if (clips_.empty()) throw Error(dataset, "train split", "at least one clip to retrieve");
         const auto tags = clip_tags(dataset);
         std::optional<MotionActivityClassifier> classifier;
@@ -123,6 +174,7 @@ public:
             throw Error("retrieval", "seeds, activities", "one per prompt");
         std::vector<JointSequence> out;
         records_.clear();
+        capture_rate_.clear();
         for (size_t i = 0; i < prompts.size(); ++i) {
             std::mt19937_64 rng(seeds[i]);
             const std::string asked = activities[i].empty() ? activity_named_in(prompts[i]) : canonical_activity(activities[i]);
@@ -134,6 +186,7 @@ public:
             const int n = std::min(frames, warped.num_frames);
             const int start = std::uniform_int_distribution<int>(0, warped.num_frames - n)(rng);
             out.push_back(slice_frames(warped, start, start + n));
+            capture_rate_.push_back(capture_rate_draw(clips_[pick].id, factor, start, n));
             records_.push_back({{"clip", clips_[pick].id}, {"tags", tags_[pick]}, {"classifier", shown_[pick]},
                                 {"activity_asked", asked}, {"tier", tier_name(tier)}, {"tags_show_activity", tagged(pick, asked)}});
         }
@@ -147,7 +200,19 @@ public:
 
     nlohmann::json draw_record(size_t i) const override { return i < records_.size() ? records_[i] : nlohmann::json(); }
 
+    std::optional<JointSequence> capture_rate_motion(size_t i) const override {
+        return i < capture_rate_.size() ? capture_rate_[i] : std::nullopt;
+    }
+
 private:
+    std::optional<JointSequence> capture_rate_draw(const std::string& id, double factor, int start, int frames) const {
+        const auto c = capture_.find(clip_file_id(id));
+        if (c == capture_.end()) return std::nullopt;
+        const std::string path = dataset_ + "/capture_joints/" + c->first + ".npy";
+        const JointSequence copy = joint_sequence_from_array(read_npy(path), path, 22, 1, c->second.fps);
+        return capture_rate_crop(copy, c->second, span_start(id), factor, start, frames);
+    }
+
     bool tagged(size_t c, const std::string& asked) const {
         for (const std::string& t : tags_[c])
             if (shows_activity(t, asked)) return true;
@@ -200,7 +265,9 @@ private:
     std::vector<std::vector<std::string>> tags_;  // canonical activity names per clip
     std::vector<std::string> shown_;              // the classifier's class per clip ("" without one)
     std::vector<std::string> classes_;            // the classifier's classes (empty without one)
+    std::map<std::string, CaptureCopy> capture_;   // by clip file id: the clips with a capture-rate copy
     std::vector<nlohmann::json> records_;         // per motion of the last generate()
+    std::vector<std::optional<JointSequence>> capture_rate_;  // likewise
 };
 
 // Retrieval, then the model: each prompt's retrieved clip (HumanML3D features, `frames` long; a shorter clip

@@ -13,11 +13,14 @@
 // between the prompt and its captions; a sample takes one of the kRetrievalTopK best at random, time-warps it by
 // a factor in [1 - kRetrievalWarp, 1 + kRetrievalWarp] (the dataset holds the left-right mirrors already) and
 // crops a random window of the asked length (a shorter clip is used whole). Nothing is invented: every frame is
-// captured (or, for clips.csv's source_dataset "edited", derived) motion, resampled.
+// captured (or, for clips.csv's source_dataset "edited", derived) motion, resampled. A captured clip with a
+// capture-rate copy gives that copy's same span too (capture_rate_motion; Catmull-Rom between captured frames),
+// so the virtual sensors can see the motion between 20 fps frames.
 #pragma once
 #include <cstdint>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +44,11 @@ public:
     virtual nlohmann::json describe() const = 0;
     // What produced motion i of the last generate() call (retrieval: the clip, its tags, the tier), or null.
     virtual nlohmann::json draw_record(size_t) const { return nullptr; }
+    // Motion i of the last generate() call at its capture rate, the same span of the same captured motion (at most
+    // a capture frame's interpolation apart at the ends), or nothing: retrieval of a captured clip from a dataset
+    // that holds capture-rate copies (dataset_builder.hpp) has one; derived clips and the models' motions do not.
+    // Placed like the 20 fps motion up to a turn about the vertical and a shift, which no body-frame sensor reads.
+    virtual std::optional<JointSequence> capture_rate_motion(size_t) const { return std::nullopt; }
 };
 
 // `spec`: a model folder, retrieval:DATASET, or hybrid:MODEL_FOLDER,DATASET,STRENGTH: the clip retrieval would

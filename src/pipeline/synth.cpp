@@ -42,6 +42,7 @@ std::string job_name(int k) {
 // A job's motion after the quality filter: the attempt kept, or the last one when every attempt failed.
 struct Drawn {
     JointSequence joints;
+    std::optional<JointSequence> sensor_joints;  // what the sensors see when not `joints` (the capture-rate copy)
     uint64_t seed = 0;
     MotionQuality quality;
     std::vector<std::string> failures;  // of the kept (or last) attempt
@@ -106,6 +107,8 @@ std::vector<Drawn> draw_filtered(MotionSource& source, const std::vector<int>& j
             place_on_floor(d.joints);
             d.seed = seeds[p];
             d.source = source.draw_record(p);
+            d.sensor_joints = o.capture_rate ? source.capture_rate_motion(p) : std::nullopt;
+            if (d.sensor_joints) place_on_floor(*d.sensor_joints);
             d.quality = score_motion(d.joints);
             d.failures = quality_failures(d.quality, o.thresholds);
             if (classifier) check_activity(*classifier, expected[pending[p]], o.min_activity_agreement, d);
@@ -167,6 +170,7 @@ void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt&
     json marker = {{"job", name}, {"index", job}, {"prompt", prompt.text}, {"activity", prompt.activity}, {"sample", sample},
                    {"seed", d.seed}, {"attempts", d.attempts}, {"quality", quality_json(d.quality)}, {"kept", d.kept},
                    {"frames", d.joints.num_frames}, {"recordings", json::array()}};
+    if (d.sensor_joints) marker["sensor_motion_fps"] = d.sensor_joints->fps;
     if (!d.source.is_null()) marker["source_draw"] = d.source;
     if (!d.activity_shown.empty())
         marker["activity_check"] = {{"shown", d.activity_shown}, {"agreement", d.activity_agreement}, {"passed", d.activity_agreement >= o.min_activity_agreement}};
@@ -176,7 +180,7 @@ void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt&
         VirtualImuOptions imu = stage.imu;
         imu.seed = stage.imu.seed + static_cast<uint64_t>(job);
         for (const BodySpec& b : stage.bodies) {
-            const BodyImu r = synthesize_body_imu(d.joints, b, stage.sensors, imu);
+            const BodyImu r = synthesize_body_imu(d.sensor_joints ? *d.sensor_joints : d.joints, b, stage.sensors, imu);
             for (size_t s = 0; s < r.mounts.size(); ++s) {
                 const std::string path = "recordings/" + name + "/" + r.body.name + "/" + r.mounts[s].placement.position + ".csv";
                 write_imu_recording(o.out + "/" + path, r.signals[s]);
@@ -213,6 +217,7 @@ json settings_json(const SynthOptions& o, const std::vector<Prompt>& prompts, co
             {"rate_hz", o.rate_hz}, {"placed_on_floor", true}, {"filter", o.filter}, {"max_retries", o.max_retries},
             {"thresholds", quality_limits(o.thresholds)}};
     if (o.realism != "none") s["realism"] = realism.to_json();  // absent: folders from before it stay valid
+    if (o.capture_rate) s["capture_rate"] = true;               // likewise
     // placed_on_floor is always true: it makes a resume refuse folders drawn before floor placement existed.
     // activity_check is absent without a check, so folders made before the check existed stay valid.
     if (!o.activity_reference.empty())
@@ -228,6 +233,9 @@ void check_or_write_settings(const std::string& out, const json& settings) {
         for (const auto& [key, value] : settings.items())
             if (before.value(key, json()) != value)
                 throw Error(path, key, value.dump() + " as this run asks (a folder holds one synthesis; use another --out)", before.value(key, json()).dump());
+        for (const auto& [key, value] : before.items())  // a switch on then, off now (realism, capture_rate)
+            if (!settings.contains(key))
+                throw Error(path, key, "absent (off) as this run asks (a folder holds one synthesis; use another --out)", value.dump());
         return;
     }
     write_file_atomic(path, settings.dump(1) + "\n");

@@ -10,7 +10,9 @@
 //   jobs/<job>.json                 written last for a job: it is done (resume skips it); its prompt, seeds,
 //                                   quality scores, and its recordings or why it was dropped
 //   recordings/<job>/<body>/<position>.csv   t,acc_xyz,gyr_xyz (s, m/s^2 with gravity, rad/s)
-//   motions/<job>_joints.npy, <job>.bvh   the motion: SMPL-22 joints [F,22,3] (20 fps; metres, Y up)
+//   motions/<job>_joints.npy, <job>.bvh   the motion: SMPL-22 joints [F,22,3] (20 fps; metres, Y up); the
+//                                   sensors' copy at the capture rate (capture_rate) is not written: the marker
+//                                   names its rate (sensor_motion_fps) and the retrieved clip
 //   manifest.csv                    rebuilt from every job marker when a run ends: dataset t2imu, subject = the
 //                                   body (a synthetic subject), extra columns source, prompt, body, seed, job
 //   synth_report.json               counts per activity, the quality filter's work and the time of each stage
@@ -48,6 +50,9 @@ struct SynthOptions {
     std::string bodies = "paper8", sensors = "realworld", noise = "none";
     std::string realism = "none";        // imu/realism.hpp: a preset or a .toml file
     double rate_hz = 50;
+    // The virtual sensors see a retrieved captured clip at its capture rate (MotionSource::capture_rate_motion)
+    // rather than at 20 fps; motions without a capture-rate copy (derived clips, the models') stay at 20 fps.
+    bool capture_rate = false;
     bool filter = true;
     int max_retries = 2;
     MotionQualityThresholds thresholds = default_quality_thresholds();
