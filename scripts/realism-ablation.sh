@@ -6,7 +6,9 @@
 # Needs cache/dataset (t2imu data build), the GloVe vocabulary and the real set unpacked (scripts/paper-experiment.sh).
 # Usage: bash scripts/realism-ablation.sh [OUT=out/realism-sisfall] [SET=sisfall] [REPEATS=3] [VARIANTS="none tilt ..."]
 # BODIES=SPEC (environment) renders other bodies than the paper's eight, e.g. BODIES=population:8,seed=1;
-# ROLL_GAIN=G the device roll lever's gain when on (default 0: the device does not roll with the pelvis's sway).
+# ROLL_GAIN=G the device roll lever's gain when on (default 0: the device does not roll with the pelvis's sway);
+# CAPTURE_RATE=off renders retrieved clips at 20 fps (t2imu synth --no-capture-rate), as every run before
+# 2026-12-03 did; by default the sensors see captured clips at their capture rate.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-out/realism-sisfall}
@@ -56,7 +58,8 @@ for v in $variants; do
   # As experiments/coverage.toml: 2 motions per prompt, no quality filter, the activity check's reference.
   $t2imu synth --prompts "prompts/$set.tsv" --model retrieval:cache/dataset --vocab cache/text/glove-100k.safetensors \
     --activity-reference models/motion-activity.csv --samples-per-prompt 2 --no-filter --sensors "$set" \
-    --realism "$realism" --bodies "${BODIES:-paper8}" --out "$dir/synth" > "$dir/synth.log"
+    --realism "$realism" --bodies "${BODIES:-paper8}" $([ "${CAPTURE_RATE:-on}" = off ] && echo --no-capture-rate) \
+    --out "$dir/synth" > "$dir/synth.log"
   $t2imu analysis signal-stats --real "$real" --synthetic "$dir/synth" --position waist --out "$dir/signal-stats.json"
   [ -f "$dir/catch22.csv" ] || $t2imu features catch22 --dataset "$dir/synth" --positions waist --out "$dir/catch22.csv"
   $t2imu analysis domain-gap --real "$out/real-catch22.csv" --synthetic "$dir/catch22.csv" --out "$dir/gap.json"

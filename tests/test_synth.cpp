@@ -227,7 +227,7 @@ TEST(Synth, RetrievalGivesCapturedMotionThatPassesTheFilter) {
     EXPECT_EQ(read_npy(out + "/motions/j00000_joints.npy").shape, (std::vector<int64_t>{40, 22, 3}));
 }
 
-// --capture-rate: the sensors see the retrieved clip's capture-rate copy (here 60 fps, the clip's frames joined by
+// capture_rate (on by default): the sensors see the retrieved clip's capture-rate copy (here 60 fps, the clip's frames joined by
 // Catmull-Rom curves: test::add_capture_copies), recorded in synth.json and each marker; the recordings keep their
 // rate and length, and differ from the 20 fps ones (the same motion, sampled otherwise) by less than the signal.
 TEST(Synth, CaptureRateCopiesReachTheSensors) {
@@ -239,6 +239,7 @@ TEST(Synth, CaptureRateCopiesReachTheSensors) {
     SynthOptions o = tiny_options(out20);
     o.model = "retrieval:" + data;
     o.vocab = data + "/vocab.safetensors";
+    o.capture_rate = false;
     run_synth(o);
     o.out = out60;
     o.capture_rate = true;

@@ -77,8 +77,8 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--rate", o.rate_hz, "sensor sample rate, Hz");
     cmd->add_option("--noise", o.noise, "sensor error model: none (default), smartphone, hugadb, sisfall, umafall [,key=value...]");
     cmd->add_option("--realism", o.realism, "realism model: none (default), sisfall, umafall, hugadb, smartphone or FILE.toml");
-    cmd->add_flag("--capture-rate", o.capture_rate,
-                  "the sensors see a retrieved captured clip at its capture rate (dataset capture_joints/), not at 20 fps");
+    cmd->add_flag("--no-capture-rate{false}", o.capture_rate,
+                  "the sensors see a retrieved captured clip at 20 fps, not at its capture rate (the dataset's capture_joints/)");
     cmd->add_flag("--no-filter", a.no_filter, "keep every motion (the quality filter is on by default)");
     o.activity_reference = kDefaultActivityReference;
     cmd->add_option("--activity-reference", o.activity_reference,

@@ -128,9 +128,11 @@ void interpolate_frame(const JointSequence& m, double s, JointSequence& out, int
 
 // The frames of `copy` (at copy.fps) that show what the 20 fps draw shows: span frames a.. of the clip, time-warped
 // by `factor` and cropped from warped frame `start`, `frames` long. Output frame g, at g / fps s into the draw,
-// shows the clip at (a + (start + g 20 / fps) factor) / 20 s.
+// shows the clip at (a + (start + g 20 / fps) factor) / 20 s. The last frame is at or after the draw's last, less
+// than a capture frame later, so the recordings are not shorter than the 20 fps ones; where that passes the copy's
+// end (at or after the clip's, dataset_builder.hpp), it holds the copy's last frame.
 JointSequence capture_rate_crop(const JointSequence& copy, const CaptureCopy& c, int a, double factor, int start, int frames) {
-    const int n = static_cast<int>(std::floor((frames - 1) * c.fps / 20.0 + 1e-6)) + 1;
+    const int n = static_cast<int>(std::ceil((frames - 1) * c.fps / 20.0 - 1e-6)) + 1;
     JointSequence out(n, copy.num_joints, c.fps);
     for (int g = 0; g < n; ++g) {
         const double clip_s = (a + (start + g * 20.0 / c.fps) * factor) / 20.0;
