@@ -39,6 +39,12 @@ std::string make_mocap_folder(const std::string& name) {
     return dir;
 }
 
+// Copies `file` (a path under the unpacked archive `root`) to the same path under the mocap folder `dir`.
+void copy_into(const std::string& dir, const std::string& root, const std::string& file) {
+    fs::create_directories(fs::path(dir + "/" + file).parent_path());
+    fs::copy_file(root + "/" + file, dir + "/" + file);
+}
+
 }  // namespace
 
 TEST(DatasetBuilder, WritesTheHumanML3DLayout) {
@@ -149,8 +155,7 @@ TEST(DatasetBuilder, DerivedClipsCarryTheirProvenanceCountApartAndCanBeLeftOut) 
     std::ofstream captions(dir + "/captions.csv");
     captions << "file,start_frame,end_frame,caption\n";
     for (const std::string& f : files) {
-        fs::create_directories(fs::path(dir + "/" + f).parent_path());
-        fs::copy_file((f[0] == 'b' ? bandai : idle) + "/" + f, dir + "/" + f);
+        copy_into(dir, f[0] == 'b' ? bandai : idle, f);
         captions << f << ",0,100000," << (f[0] == 'b' ? "a person walks forward" : "a person stands idle") << "\n";
     }
     captions.close();
@@ -214,8 +219,7 @@ TEST(DatasetBuilder, CapturedClipsKeepTheirCaptureRateWhereNew_jointsAre) {
     std::ofstream captions(dir + "/captions.csv");
     captions << "file,start_frame,end_frame,caption,subject,licence\n";
     for (const auto& [root, f] : files) {
-        fs::create_directories(fs::path(dir + "/" + f).parent_path());
-        fs::copy_file(root + "/" + f, dir + "/" + f);
+        copy_into(dir, root, f);
         if (f.find(".asf") == std::string::npos) captions << f << ",0,100000,a person moves,s" << f.size() << ",test\n";
     }
     captions.close();

@@ -238,13 +238,15 @@ ClipSource derived_source(const ClipSource& captured, const DerivedClip& d) {
 }
 
 // The span of a captured recording's capture-rate copy that covers a chunk's new_joints (20 fps frames begin to
-// end - 2: features hold one frame fewer than the joints), from the captured frame at or before `begin`, placed
-// as process_file places the chunk (`part`, its 20 fps frames); and that first frame's time after the chunk's, s.
-std::pair<JointSequence, double> capture_span(const JointSequence& capture, const JointSequence& part, int begin, int end) {
+// end - 2: features hold one frame fewer than the joints), from the captured frame at or before `begin`, mirrored
+// when the chunk is, placed as process_file places the chunk (`clip`, its 20 fps frames as written); and that first
+// frame's time after the chunk's, s.
+std::pair<JointSequence, double> capture_span(const JointSequence& capture, const JointSequence& clip, int begin, int end, bool mirror) {
     const double r = capture.fps;
     const int first = static_cast<int>(std::floor(begin / kFps * r + 1e-6));
     const int last = std::min(capture.num_frames - 1, static_cast<int>(std::ceil((end - 2) / kFps * r - 1e-6)));
-    return {place_like_process_file(slice_frames(capture, first, last + 1), part), first / r - begin / kFps};
+    const JointSequence span = slice_frames(capture, first, last + 1);
+    return {place_like_process_file(mirror ? mirrored(span) : span, clip), first / r - begin / kFps};
 }
 
 // Cuts one recording into chunks (at most chunks_per_file of them, 0 = all) and writes each, and its mirror;
@@ -269,7 +271,7 @@ void write_recording(const BuildOptions& o, const std::string& tmp, const ClipSo
             write_clip(tmp, clip_id, clip, lines, w.features);
             std::string capture_fps, capture_start;
             if (capture) {
-                const auto [copy, start_s] = capture_span(mirror ? mirrored(*capture) : *capture, clip, begin, end);
+                const auto [copy, start_s] = capture_span(*capture, clip, begin, end, mirror);
                 write_npy(tmp + "/capture_joints/" + clip_id + ".npy", joint_sequence_to_array(copy));
                 capture_fps = decimal(capture->fps), capture_start = decimal(start_s);
                 tally.capture_minutes += copy.num_frames / copy.fps / 60.0;
