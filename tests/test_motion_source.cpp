@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <set>
@@ -122,6 +123,24 @@ TEST(MotionSource, RetrievalGivesTheSameSpanAtTheCaptureRate) {
     }
     EXPECT_GT(with_copy, 0);
     EXPECT_GT(without, 0);
+
+    // A dataset whose copies do not hold together is refused when the source opens, naming the field or file.
+    auto refused_naming = [&](const std::string& what) {
+        try {
+            open_motion_source("retrieval:" + data, SampleOptions{}, "cpu", data + "/vocab.safetensors");
+            ADD_FAILURE() << "accepted; expected an error naming " << what;
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+        }
+    };
+    CsvTable clips = read_csv(data + "/clips.csv");
+    const CsvTable good = clips;
+    clips.rows[0][clips.column("capture_start_s")] = "0.5";
+    write_csv(data + "/clips.csv", clips);
+    refused_naming("capture_start_s");
+    write_csv(data + "/clips.csv", good);
+    std::filesystem::remove(data + "/capture_joints/c1.npy");
+    refused_naming("c1.npy");
 }
 
 // The hybrid: retrieval's clip for the prompt (tags as above), noised to the strength and finished by a (tiny,

@@ -101,6 +101,8 @@ struct CaptureCopy {
     double start_s = 0;  // its first frame's time after the clip's first frame, s
 };
 
+// Every copy clips.csv names, checked before any draw: its rate positive, its start within one capture frame
+// before the clip's, its file present.
 std::map<std::string, CaptureCopy> capture_copies(const std::string& dataset) {
     std::map<std::string, CaptureCopy> out;
     const std::string path = dataset + "/clips.csv";
@@ -108,8 +110,17 @@ std::map<std::string, CaptureCopy> capture_copies(const std::string& dataset) {
     const CsvTable t = read_csv(path);
     if (!t.has_column("capture_fps")) return out;  // a dataset built before capture-rate copies existed
     const size_t id = t.column("id"), fps = t.column("capture_fps"), start = t.column("capture_start_s");
-    for (size_t r = 0; r < t.rows.size(); ++r)
-        if (!t.rows[r][fps].empty()) out[t.rows[r][id]] = {t.number(r, fps), t.number(r, start)};
+    for (size_t r = 0; r < t.rows.size(); ++r) {
+        if (t.rows[r][fps].empty()) continue;
+        const CaptureCopy c{t.number(r, fps), t.number(r, start)};
+        const std::string row = path + " row " + t.rows[r][id];
+        if (!(c.fps > 0 && c.fps <= 1000)) throw Error(row, "capture_fps", "a frame rate in (0, 1000]", t.rows[r][fps]);
+        if (!(c.start_s > -1 / c.fps - 1e-9 && c.start_s <= 1e-9))
+            throw Error(row, "capture_start_s", "within one capture frame before the clip's start, in (-1/capture_fps, 0]", t.rows[r][start]);
+        const std::string file = dataset + "/capture_joints/" + t.rows[r][id] + ".npy";
+        if (!std::filesystem::exists(file)) throw Error(file, "capture_joints", "the capture-rate copy clips.csv names (t2imu data build)");
+        out[t.rows[r][id]] = c;
+    }
     return out;
 }
 
