@@ -61,6 +61,33 @@ TEST(FootContacts, ALowSlowMomentShorterThanTheMinimumIsNoStance) {
     }
 }
 
+TEST(FootContacts, TheMinimumStanceIsInSecondsAtAnyRate) {
+    // At 60 fps: the left foot stands for 0.5 s, then pauses mid-swing for 0.1 s (4 still frames by central
+    // difference: more than three frames, less than 0.15 s), then stands again from 1 s. Two frames in which the
+    // planted right foot reads 6 cm high (1/30 s, under the 0.05 s gap bound) are closed.
+    constexpr double fps = 60;
+    JointSequence m(90, kNumJoints, fps);
+    for (int f = 0; f < m.num_frames; ++f) {
+        const double t = f / fps;
+        for (int j = 0; j < kNumJoints; ++j) m.at(f, j) = Vector3d(0, 0.9, 0);
+        const bool paused = f >= 42 && f < 48, swinging = f > 30 && f < 60 && !paused;
+        const double z = f <= 30 ? 0.0 : f < 42 ? 2 * (t - 0.5) : f < 48 ? 0.4 : f < 60 ? 0.4 + 2 * (t - 0.8) : 0.8;
+        place_foot(m, f, left_ankle, left_foot, Vector3d(0.1, 0.08 + (swinging ? 0.10 : 0.0), z));
+        place_foot(m, f, right_ankle, right_foot, Vector3d(-0.1, f == 40 || f == 41 ? 0.14 : 0.08, 0.3));
+    }
+    int left = 0;
+    for (const StancePhase& p : detect_stance_phases(m)) {
+        if (p.foot == Foot::right) {
+            EXPECT_EQ(p.first_frame, 0);
+            EXPECT_EQ(p.last_frame, 89);
+            continue;
+        }
+        ++left;
+        EXPECT_TRUE(p.last_frame <= 31 || p.first_frame >= 59) << p.first_frame << "-" << p.last_frame;  // not the pause
+    }
+    EXPECT_EQ(left, 2);
+}
+
 TEST(FootContacts, RefusesTooFewFrames) { EXPECT_THROW(detect_stance_phases(JointSequence(2, kNumJoints, kFps)), Error); }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // resample_poses: a constant-rate rotation and translation resampled 30 -> 20 fps land on the exact angles and
 // positions in between; a 120 -> 20 fps decimation with a rounded frame time keeps source frames exactly (and
 // the last one); the same rate is the identity; empty input and bad rates are refused.
+// resample_joints: exact at shared instants, exact on a parabola between (Catmull-Rom), up and down in rate.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -81,4 +82,36 @@ TEST(Resample, RefusesEmptyInputAndBadRates) {
     EXPECT_NE(message([] { resample_poses(turning(3, 0.1, 0), 0.01, 0); }).find("rate"), std::string::npos);
     EXPECT_NE(message([] { resample_poses(turning(3, 0.1, 0), -0.01, 20); }).find("rate"), std::string::npos);
     EXPECT_NE(message([] { resample_poses(turning(3, 0.1, 0), 0.01, NAN); }).find("rate"), std::string::npos);
+}
+
+namespace {
+// Two joints: one on the parabola x = t^2 / 2, y = 1 - 3 t (m, t in s), one fixed.
+JointSequence parabola(int frames, double fps) {
+    JointSequence m(frames, 2, fps);
+    for (int f = 0; f < frames; ++f) {
+        const double t = f / fps;
+        m.at(f, 0) = Vector3d(0.5 * t * t, 1 - 3 * t, 0);
+        m.at(f, 1) = Vector3d(0.2, 0.3, 0.4);
+    }
+    return m;
+}
+}  // namespace
+
+TEST(Resample, JointPositionsAreExactAtSharedInstantsAndOnAParabolaBetween) {
+    const JointSequence m = parabola(31, 30);  // 1 s
+    const JointSequence r = resample_joints(m, 20);
+    ASSERT_EQ(r.num_frames, 21);
+    EXPECT_DOUBLE_EQ(r.fps, 20);
+    for (int k = 0; k < r.num_frames; ++k) {
+        const double t = k / 20.0;
+        if (k % 2 == 0) EXPECT_EQ(r.at(k, 0), m.at(3 * k / 2, 0)) << k;  // a source frame: taken as it is
+        // Catmull-Rom reproduces a quadratic exactly away from the ends (where the end frame repeats).
+        if (t > 1 / 30.0 && t < 1 - 1 / 30.0) EXPECT_NEAR((r.at(k, 0) - Vector3d(0.5 * t * t, 1 - 3 * t, 0)).norm(), 0, 1e-12) << k;
+        EXPECT_EQ(r.at(k, 1), Vector3d(0.2, 0.3, 0.4));
+    }
+    // Upward: 20 -> 60 fps keeps the span, three frames per source frame.
+    const JointSequence up = resample_joints(parabola(21, 20), 60);
+    EXPECT_EQ(up.num_frames, 61);
+    EXPECT_NEAR(up.at(31, 0).x(), 0.5 * std::pow(31 / 60.0, 2), 1e-12);
+    EXPECT_THROW(resample_joints(m, 0), Error);
 }

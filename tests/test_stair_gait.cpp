@@ -26,11 +26,11 @@ constexpr double kWalkPelvisHeight = 0.82, kAnkleHeight = 0.08, kToeHeight = 0.0
 // A level walk on HumanML3D's target skeleton along +Z at 1 m/s, one stride (two steps) a second: each foot
 // stands still for 60% of its cycle and swings 1 m forward in the other 40% (minimum-jerk, 6 cm arc); the left
 // foot lands at cycle phase 0, the right at 0.5. Upper body in the rest pose; knees by IK, bending forward.
-JointSequence procedural_walk(double seconds) {
-    const int n = static_cast<int>(seconds * kFps) + 1;
-    JointSequence m(n, kNumJoints, kFps);
+JointSequence procedural_walk(double seconds, double fps = kFps) {
+    const int n = static_cast<int>(seconds * fps) + 1;
+    JointSequence m(n, kNumJoints, fps);
     for (int f = 0; f < n; ++f) {
-        const double t = f / kFps;
+        const double t = f / fps;
         m.at(f, pelvis) = Vector3d(0, kWalkPelvisHeight, t);
         for (int j = 1; j < kNumJoints; ++j)
             if (!is_leg_joint(j)) m.at(f, j) = m.at(f, kParents[static_cast<size_t>(j)]) + kTargetOffsets[static_cast<size_t>(j)];
@@ -164,6 +164,31 @@ TEST(StairGait, ClimbingBendsTheKneesMoreAndLeansTheTrunk) {
     // The rest-pose trunk is upright: pelvis -> neck leans forward by the option's angle.
     const Vector3d trunk = up.at(10, neck) - up.at(10, pelvis);
     EXPECT_NEAR(std::atan2(trunk.z(), trunk.y()), 0.12, 1e-9);
+}
+
+// Root mean square of the pelvis's vertical acceleration (m/s^2, second differences).
+double pelvis_vertical_acceleration_rms(const JointSequence& m) {
+    double sum = 0;
+    for (int f = 1; f + 1 < m.num_frames; ++f) {
+        const double a = (m.at(f + 1, pelvis).y() - 2 * m.at(f, pelvis).y() + m.at(f - 1, pelvis).y()) * m.fps * m.fps;
+        sum += a * a;
+    }
+    return std::sqrt(sum / (m.num_frames - 2));
+}
+
+TEST(StairGait, TheEditIsTheSameAtAnyFrameRate) {
+    // The same walk at 20 and 60 fps climbs the same flight with the same body motion: every smoothing and
+    // threshold of the edit counts seconds. (Counted in frames, the 60 fps body rose with a third of the
+    // smoothing: its vertical acceleration was 23 times larger.)
+    for (bool ascend : {true, false}) {
+        const StairMotion at_20 = derive_stairs(procedural_walk(8), stairs(ascend));
+        const StairMotion at_60 = derive_stairs(procedural_walk(8, 60), stairs(ascend));
+        EXPECT_EQ(at_60.stairs.steps, at_20.stairs.steps);
+        EXPECT_EQ(at_60.footholds.size(), at_20.footholds.size());
+        EXPECT_NEAR(at_60.motion.num_frames / 60.0, at_20.motion.num_frames / 20.0, 0.1);
+        const double rms_20 = pelvis_vertical_acceleration_rms(at_20.motion), rms_60 = pelvis_vertical_acceleration_rms(at_60.motion);
+        EXPECT_NEAR(rms_60, rms_20, 0.2 * rms_20) << rms_60 << " against " << rms_20;
+    }
 }
 
 TEST(StairGait, PassesTheQualityCheckAgainstTheTreads) {

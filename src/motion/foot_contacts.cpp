@@ -27,6 +27,20 @@ double lowest_height(const JointSequence& m, int j) {
     return low;
 }
 
+int frames_of(double seconds, double fps) { return static_cast<int>(std::lround(seconds * fps)); }
+
+// Sets every run of at most `gap` false flags that has a true flag on both sides.
+void close_short_gaps(std::vector<bool>& stance, int gap) {
+    const int n = static_cast<int>(stance.size());
+    for (int f = 1; f < n;) {
+        if (stance[static_cast<size_t>(f)] || !stance[static_cast<size_t>(f - 1)]) { ++f; continue; }
+        int end = f;
+        while (end < n && !stance[static_cast<size_t>(end)]) ++end;
+        if (end < n && end - f <= gap) std::fill(stance.begin() + f, stance.begin() + end, true);
+        f = end;
+    }
+}
+
 void require_walk(const JointSequence& m) {
     if (m.num_joints != smpl22::kNumJoints) throw Error("foot contacts", "joints", "22 SMPL joints", std::to_string(m.num_joints));
     if (m.num_frames < 3) throw Error("foot contacts", "frames", "at least 3", std::to_string(m.num_frames));
@@ -41,20 +55,20 @@ std::vector<bool> stance_frames(const JointSequence& m, Foot foot) {
     std::vector<bool> stance(static_cast<size_t>(m.num_frames));
     for (int f = 0; f < m.num_frames; ++f)
         stance[static_cast<size_t>(f)] = low_and_slow(m, f, joints[0], low_ankle) || low_and_slow(m, f, joints[1], low_toe);
-    for (size_t f = 1; f + 1 < stance.size(); ++f)
-        if (!stance[f] && stance[f - 1] && stance[f + 1]) stance[f] = true;
+    close_short_gaps(stance, std::max(1, frames_of(kMaxStanceGapSeconds, m.fps)));
     return stance;
 }
 
 std::vector<StancePhase> detect_stance_phases(const JointSequence& m) {
     std::vector<StancePhase> phases;
+    const int min_frames = frames_of(kMinStanceSeconds, m.fps);
     for (Foot foot : {Foot::left, Foot::right}) {
         const std::vector<bool> stance = stance_frames(m, foot);
         for (int f = 0; f < m.num_frames;) {
             if (!stance[static_cast<size_t>(f)]) { ++f; continue; }
             int last = f;
             while (last + 1 < m.num_frames && stance[static_cast<size_t>(last + 1)]) ++last;
-            if (last - f + 1 >= kMinStanceFrames) phases.push_back({foot, f, last});
+            if (last - f + 1 >= min_frames) phases.push_back({foot, f, last});
             f = last + 1;
         }
     }

@@ -7,8 +7,9 @@
 // strike, the toe down and the heel rising before toe-off. In level walking a swinging foot moves at 2-5 m/s
 // and clears the floor by 1-2 cm at the toe and several cm at the ankle (Winter 1991, The Biomechanics and
 // Motor Control of Human Gait), so the two thresholds leave a wide margin on both sides. Runs of stance shorter
-// than kMinStanceFrames are dropped (a swinging foot passing slowly over its lowest point) and gaps of one
-// frame inside a stance are closed (capture jitter). HumanML3D's own foot-contact channels (humanml3d.hpp)
+// than kMinStanceSeconds are dropped (a swinging foot passing slowly over its lowest point) and gaps of up to
+// kMaxStanceGapSeconds inside a stance are closed (capture jitter); both count frames at the motion's rate (3 and 1
+// at 20 fps, 5 and 2 at 30, 9 and 3 at 60). HumanML3D's own foot-contact channels (humanml3d.hpp)
 // use displacement alone with a looser threshold (0.9 m/s at 20 fps); they label contacts, not placements.
 #pragma once
 #include <vector>
@@ -19,7 +20,8 @@ namespace t2imu {
 
 constexpr double kStanceHeight = 0.05;  // m above the joint's lowest height in the clip
 constexpr double kStanceSpeed = 0.5;    // m/s, horizontal
-constexpr int kMinStanceFrames = 3;     // 0.15 s at 20 fps
+constexpr double kMinStanceSeconds = 0.15;   // shortest stance kept
+constexpr double kMaxStanceGapSeconds = 0.05; // longest gap closed inside a stance (one frame at 20 fps)
 
 enum class Foot : int { left = 0, right = 1 };
 

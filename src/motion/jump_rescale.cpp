@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "core/error.hpp"
@@ -29,13 +30,23 @@ double standing_pelvis_height(const JointSequence& m, const std::array<std::vect
     return heights[heights.size() / 2];
 }
 
-// Per frame, how much a foot moves with the body (0 in stance, 1 in the air), smoothed by a [1/4, 1/2, 1/4]
-// kernel so that a foot leaving or meeting the floor takes the body's extra lift over two frames, not one.
-std::vector<double> airborne_weight(const std::vector<bool>& stance) {
+// Per frame, how much a foot moves with the body (0 in stance, 1 in the air), smoothed by a triangle 0.1 s
+// wide either side ([1/4, 1/2, 1/4] at 20 fps) so that a foot leaving or meeting the floor takes the body's
+// extra lift over 0.1 s, not one frame.
+std::vector<double> airborne_weight(const std::vector<bool>& stance, double fps) {
     const int n = static_cast<int>(stance.size());
+    const double half_width = 0.1 * fps;  // frames
+    const int reach = static_cast<int>(std::ceil(half_width)) - 1;
     std::vector<double> w(stance.size());
     auto air = [&](int f) { return stance[static_cast<size_t>(std::clamp(f, 0, n - 1))] ? 0.0 : 1.0; };
-    for (int f = 0; f < n; ++f) w[static_cast<size_t>(f)] = 0.25 * air(f - 1) + 0.5 * air(f) + 0.25 * air(f + 1);
+    for (int f = 0; f < n; ++f) {
+        double sum = 0, weights = 0;
+        for (int k = -reach; k <= reach; ++k) {
+            const double weight = half_width - std::abs(k);
+            sum += weight * air(f + k), weights += weight;
+        }
+        w[static_cast<size_t>(f)] = sum / weights;
+    }
     return w;
 }
 
@@ -50,7 +61,7 @@ JointSequence rescale_jump(const JointSequence& jump, const JumpRescaleOptions& 
     const double k = o.time_scale;
     const JointSequence source = retime(jump, 1.0 / k);  // k times slower; bones at the source's lengths
     const std::array<std::vector<bool>, 2> stance = {stance_frames(source, Foot::left), stance_frames(source, Foot::right)};
-    const std::array<std::vector<double>, 2> airborne = {airborne_weight(stance[0]), airborne_weight(stance[1])};
+    const std::array<std::vector<double>, 2> airborne = {airborne_weight(stance[0], source.fps), airborne_weight(stance[1], source.fps)};
     const double standing = standing_pelvis_height(source, stance);
 
     JointSequence m = source;

@@ -189,8 +189,8 @@ double lower_to_reach(JointSequence& m, const std::array<double, 2>& reach_m) {
         for (size_t leg = 0; leg < 2; ++leg)
             drop[static_cast<size_t>(f)] = std::max(drop[static_cast<size_t>(f)],
                                                     drop_to_reach(m.at(f, kLegs[leg].hip), m.at(f, kLegs[leg].ankle), reach_m[leg]));
-    // Eight frames (0.4 s at 20 fps) either side: the body sinks into a deep step instead of jerking down.
-    const std::vector<double> smooth = upper_envelope(drop, 8);
+    // 0.4 s either side (8 frames at 20 fps): the body sinks into a deep step instead of jerking down.
+    const std::vector<double> smooth = upper_envelope(drop, std::max(1, static_cast<int>(std::lround(0.4 * m.fps))));
     double most = 0;
     for (int f = 0; f < m.num_frames; ++f) {
         const double d = smooth[static_cast<size_t>(f)];

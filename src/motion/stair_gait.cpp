@@ -164,13 +164,13 @@ Staircase flight_along(const JointSequence& w, const StairOptions& o) {
     return stairs;
 }
 
-// The body's rise per frame: the mean of the two feet's foothold heights, smoothed over 0.3 s (sigma 6 frames)
-// so that it climbs through each step instead of jumping when a foot lands.
-TimeSeries body_heights(const std::array<FootPath, 2>& feet) {
+// The body's rise per frame: the mean of the two feet's foothold heights, smoothed over 0.3 s (a Gaussian of
+// that sigma; 6 frames at 20 fps) so that it climbs through each step instead of jumping when a foot lands.
+TimeSeries body_heights(const std::array<FootPath, 2>& feet, double fps) {
     const Eigen::Index n = static_cast<Eigen::Index>(feet[0].height.size());
     TimeSeries h(n, 1);
     for (Eigen::Index f = 0; f < n; ++f) h(f, 0) = 0.5 * (feet[0].height[static_cast<size_t>(f)] + feet[1].height[static_cast<size_t>(f)]);
-    return gaussian_filter1d_nearest(h, 6.0);
+    return gaussian_filter1d_nearest(h, 0.3 * fps);
 }
 
 JointSequence frame_range(const JointSequence& m, int first, int last) {
@@ -225,7 +225,7 @@ StairMotion derive_stairs(const JointSequence& walk, const StairOptions& o) {
     const auto [first, last] = covered_frames(holds);
     if (last - first < 2) throw Error("walk_to_stairs", "walk", "both feet stepping for at least 3 frames");
     const auto [offset, scale] = progress_map(holds);
-    const TimeSeries body_height = body_heights(feet);
+    const TimeSeries body_height = body_heights(feet, w.fps);
 
     const JointSequence source = frame_range(w, first, last);
     JointSequence& m = out.motion = source;

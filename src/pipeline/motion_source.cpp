@@ -9,13 +9,14 @@
 #include <sstream>
 #include <tuple>
 
-#include "core/error.hpp"
 #include "core/csv.hpp"
+#include "core/error.hpp"
 #include "core/npy.hpp"
 #include "data/hml3d_dataset.hpp"
 #include "motion/activity_names.hpp"
 #include "motion/humanml3d.hpp"
 #include "motion/motion_activity.hpp"
+#include "motion/resample.hpp"
 #include "text/sentence_similarity.hpp"
 
 namespace t2imu {
@@ -122,19 +123,6 @@ std::map<std::string, CaptureCopy> capture_copies(const std::string& dataset) {
         out[t.rows[r][id]] = c;
     }
     return out;
-}
-
-// Catmull-Rom interpolation of every joint at fractional frame `s` (clamped to the sequence): continuous
-// velocity, so resampling adds no kink (and no acceleration spike) between captured frames.
-void interpolate_frame(const JointSequence& m, double s, JointSequence& out, int frame) {
-    s = std::clamp(s, 0.0, static_cast<double>(m.num_frames - 1));
-    const int i = std::min(static_cast<int>(std::floor(s)), m.num_frames - 1);
-    const double t = s - i;
-    auto at = [&](int f, int j) { return m.at(std::clamp(f, 0, m.num_frames - 1), j); };
-    for (int j = 0; j < m.num_joints; ++j) {
-        const Eigen::Vector3d p0 = at(i - 1, j), p1 = at(i, j), p2 = at(i + 1, j), p3 = at(i + 2, j);
-        out.at(frame, j) = 0.5 * ((2 * p1) + (p2 - p0) * t + (2 * p0 - 5 * p1 + 4 * p2 - p3) * t * t + (3 * p1 - p0 - 3 * p2 + p3) * t * t * t);
-    }
 }
 
 // The frames of `copy` (at copy.fps) that show what the 20 fps draw shows: span frames a.. of the clip, time-warped
