@@ -21,6 +21,7 @@
 #include "data/splits.hpp"
 #include "motion/humanml3d.hpp"
 #include "motion/mocap_import.hpp"
+#include "motion/resample.hpp"
 #include "motion/skeleton.hpp"
 
 namespace t2imu {
@@ -218,9 +219,9 @@ struct Tally {
     }
 };
 
-// A derived clip as a recording of its own: captions over the whole clip, the source's subject, split key and
-// licence (an edit of a clip is bound by the clip's licence), source_dataset "edited".
-ClipSource derived_source(const ClipSource& captured, const DerivedClip& d) {
+// A derived clip as a recording of its own: captions over the whole clip (`frames` at 20 fps), the source's
+// subject, split key and licence (an edit of a clip is bound by the clip's licence), source_dataset "edited".
+ClipSource derived_source(const ClipSource& captured, const DerivedClip& d, int frames) {
     ClipSource c;
     c.file = "edited/" + d.method + "/" + captured.file;
     c.subject = captured.subject;
@@ -230,10 +231,10 @@ ClipSource derived_source(const ClipSource& captured, const DerivedClip& d) {
     for (const std::string& caption : d.captions) {
         CaptionLine line;
         line.caption = caption;
-        c.captions.push_back({{0, d.joints.num_frames}, line});
+        c.captions.push_back({{0, frames}, line});
     }
     c.provenance = {{"derived_from", captured.file}, {"source_dataset", captured.source_dataset}, {"method", d.method},
-                    {"parameters", d.parameters}, {"seed", d.seed}};
+                    {"parameters", d.parameters}, {"seed", d.seed}, {"made_at_fps", d.joints.fps}};
     return c;
 }
 
@@ -338,8 +339,14 @@ BuildSummary build_into(const BuildOptions& o, const std::string& tmp) {
         const std::string key = split_key(c);
         write_recording(o, tmp, c, key, joints, capture ? &*capture : nullptr, max_frames, chunks_per_file, tally, summary);
         if (!o.derive) continue;
-        for (DerivedClip& d : derive_clips(joints, c.tags, file, derive_report))
-            write_recording(o, tmp, derived_source(c, d), key, d.joints, nullptr, max_frames, chunks_per_file, tally, summary);
+        // Derived at the capture rate where there is one; the dataset holds them at 20 fps, with the
+        // capture-rate clip as their copy for the sensors.
+        for (DerivedClip& d : derive_clips(capture ? *capture : joints, c.tags, file, derive_report)) {
+            const bool over_20 = d.joints.fps > kFps + 1e-9;
+            const JointSequence at_20 = over_20 ? resample_joints(d.joints, kFps) : d.joints;
+            write_recording(o, tmp, derived_source(c, d, at_20.num_frames), key, at_20, over_20 ? &d.joints : nullptr, max_frames,
+                            chunks_per_file, tally, summary);
+        }
     }
     if (tally.written.empty()) throw Error(o.out_dir, "clips", "at least one clip with a caption after filtering");
     summary.clips = static_cast<int>(tally.written.size());

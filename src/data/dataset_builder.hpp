@@ -7,7 +7,8 @@
 //   capture_joints/ID.npy  [G,22,3] float32: a captured clip at its capture rate where that is over 20 fps (120 fps
 //                          HDM05 kept at 60, Bandai Namco 30, ReActIdle 24; mocap_import.hpp's capture_fps_for),
 //                          placed as new_joints (place_like_process_file), from the captured frame at or before the
-//                          clip's first: what the virtual sensors see of a retrieved clip (motion_source.hpp)
+//                          clip's first: what the virtual sensors see of a retrieved clip (motion_source.hpp). A clip
+//                          derived from such a recording is made at its rate and has its copy too.
 //   clips.csv              id, file, source_dataset, subject, licence, activity_tags, start/end frame, frames, mirrored,
 //                          provenance (JSON of a derived clip: source file, method, parameters, seed; empty if captured),
 //                          capture_fps and capture_start_s (the copy's rate and its first frame's time after the clip's
@@ -45,8 +46,9 @@ struct BuildOptions {
     // Add the clips derived from captured ones (derived_clips.hpp: stairs from walks, sitting down and standing
     // up from idle standing), tagged source_dataset "edited" with their provenance in clips.csv.
     bool derive = true;
-    // Keep each captured clip at its capture rate too (capture_joints/): derived clips are made at 20 fps and
-    // have no such copy.
+    // Keep each captured clip at its capture rate too (capture_joints/), and derive clips from the recording at
+    // that rate (their copy is the derived clip at it; new_joints hold it at 20 fps, Catmull-Rom). false: every
+    // clip, derived ones too, only at 20 fps.
     bool capture_rate = true;
     bool strict = false;  // abort on the first clip that fails to import (default: skip it and report it)
 

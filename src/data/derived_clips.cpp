@@ -11,6 +11,7 @@
 #include "motion/jump_rescale.hpp"
 #include "motion/lying_still.hpp"
 #include "motion/motion_quality.hpp"
+#include "motion/resample.hpp"
 #include "motion/sit_to_stand.hpp"
 #include "motion/skeleton.hpp"
 #include "motion/stair_gait.hpp"
@@ -69,6 +70,9 @@ double uniform(std::mt19937_64& rng, double lo, double hi) { return std::uniform
 
 bool passes(const MotionQuality& q) { return quality_failures(q, default_quality_thresholds()).empty(); }
 
+// What the quality thresholds were set on and the dataset holds: the motion at 20 fps.
+JointSequence at_dataset_rate(const JointSequence& m) { return m.fps == smpl22::kFps ? m : resample_joints(m, smpl22::kFps); }
+
 void derive_stairs_clip(const JointSequence& walk, const std::string& file, DeriveReport& report, std::vector<DerivedClip>& out) {
     const uint64_t seed = file_seed(file);
     std::mt19937_64 rng(seed);
@@ -86,7 +90,7 @@ void derive_stairs_clip(const JointSequence& walk, const std::string& file, Deri
         return;
     }
     const Staircase stairs = m.stairs;
-    if (!passes(score_motion_on_ground(m.motion, [&](const Eigen::Vector3d& p) { return stairs.height_at(p); }))) {
+    if (!passes(score_motion_on_ground(at_dataset_rate(m.motion), [&](const Eigen::Vector3d& p) { return stairs.height_at(p); }))) {
         ++report.failed_quality;
         return;
     }
@@ -133,7 +137,7 @@ void derive_sit_clips(const JointSequence& standing, const std::string& file, De
             ++report.refused;
             continue;
         }
-        if (!passes(score_motion(c.joints))) { ++report.failed_quality; continue; }
+        if (!passes(score_motion(at_dataset_rate(c.joints)))) { ++report.failed_quality; continue; }
         c.method = "sit_down_stand_up";
         c.activity = "sitting";
         c.parameters = {{"source_start_frame", begin}, {"seat_height_m", o.seat_height_m}, {"pelvis_above_seat_m", o.pelvis_above_seat_m},
@@ -160,7 +164,7 @@ void derive_lying_clips(const JointSequence& lie_down, const std::string& file, 
             ++report.refused;  // the clip does not end lying
             return;
         }
-        if (!passes(score_motion(c.joints))) { ++report.failed_quality; continue; }
+        if (!passes(score_motion(at_dataset_rate(c.joints)))) { ++report.failed_quality; continue; }
         c.method = "lying_still";
         c.activity = "lying";
         c.parameters = {{"seconds", o.seconds}, {"breaths_per_min", o.breaths_per_min}, {"chest_rad", o.chest_rad}};
@@ -182,7 +186,7 @@ void derive_jump_clip(const JointSequence& jump, const std::string& file, Derive
         ++report.refused;  // too short, or never on both feet
         return;
     }
-    if (!passes(score_motion(c.joints))) { ++report.failed_quality; return; }
+    if (!passes(score_motion(at_dataset_rate(c.joints)))) { ++report.failed_quality; return; }
     c.method = "jump_rescaled";
     c.activity = "jumping";
     c.parameters = {{"time_scale", o.time_scale}, {"height_scale", o.time_scale * o.time_scale}};

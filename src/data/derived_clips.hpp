@@ -22,8 +22,10 @@
 //   jumping   one clip of the jump rescaled, lower or higher by the seed's parity: time scale k uniform in
 //             [0.88, 0.95] or [1.05, 1.12], so flights 0.77-0.90 or 1.10-1.25 times as high: within the spread of
 //             jump heights between healthy adults, which is wider.
-// A clip is kept only when it passes motion_quality's default thresholds, measured above the staircase for
-// stairs (score_motion_on_ground) and above the floor otherwise.
+// Every edit runs at the rate of the recording it is given (the builder gives the capture rate where that is over
+// 20 fps, so a derived clip keeps the texture the capture has: Bandai Namco walks 30 fps, ReActIdle 24, HDM05 60).
+// A clip is kept only when it passes motion_quality's default thresholds at 20 fps (the dataset's rate, what the
+// models see), measured above the staircase for stairs (score_motion_on_ground) and above the floor otherwise.
 // Each recording's seed is a hash of its file name, so a build gives the same clips every time.
 #pragma once
 #include <cstdint>
@@ -41,7 +43,7 @@ constexpr int kLyingPerRecording = 2;
 struct DerivedClip {
     std::string method;                 // "stairs_up", "stairs_down", "sit_down_stand_up", "lying_still", "jump_rescaled"
     std::string activity;               // its activity tag: stairs_up, stairs_down, sitting, lying, jumping
-    JointSequence joints;               // 20 fps, floor at y = 0 under the lowest joint
+    JointSequence joints;               // at the source recording's rate, floor at y = 0 under the lowest joint
     nlohmann::json parameters;          // the edit's options
     uint64_t seed = 0;
     std::vector<std::string> captions;  // three sentences for the whole clip
@@ -52,8 +54,8 @@ struct DeriveReport {
     int failed_quality = 0;  // derived clips that failed the quality thresholds
 };
 
-// The derived clips of one captured recording whose activity tags are `tags` (the mocap manifest's, ';'
-// between several). `file` seeds the draw. Counts what was left out in `report`.
+// The derived clips of one captured recording (at any rate of at least 20 fps) whose activity tags are `tags`
+// (the mocap manifest's, ';' between several). `file` seeds the draw. Counts what was left out in `report`.
 std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::string& tags, const std::string& file,
                                       DeriveReport& report);
 
