@@ -63,9 +63,25 @@ TEST(MotionSource, RetrievalTakesTheAskedActivityFromTheLabelOrTheWordsNotTheCap
     source->generate({"a person walks"}, {"running"}, {3}, 40);
     EXPECT_TRUE(source->draw_record(0)["tags_show_activity"].get<bool>());
     EXPECT_EQ(source->draw_record(0)["activity_asked"], "running");
-    // A gesture no clip is tagged with: every clip competes on its captions (top 5 of 6).
-    EXPECT_EQ(clips_drawn(*source, "a person claps", "applauding", &tier).size(), 5u);
+    // A gesture no clip is tagged with: every clip competes on its captions (the top 5 of 6, and the sixth, whose
+    // caption is one of theirs).
+    EXPECT_EQ(clips_drawn(*source, "a person claps", "applauding", &tier).size(), 6u);
     EXPECT_EQ(tier, "any");
+}
+
+TEST(MotionSource, RetrievalDrawsFromEveryClipTiedWithTheKth) {
+    // Six walking clips with one caption (as derived clips share theirs): the five best by similarity are every
+    // one of them, so draws reach all six, not the first five listed.
+    const std::string data = misleading_dataset("retrieval_ties");
+    CsvTable clips;
+    clips.header = {"id", "activity_tags", "split"};
+    for (int k = 0; k < 6; ++k) {
+        std::ofstream(data + "/texts/c" + std::to_string(k) + ".txt") << "a person walks##0.0#0.0\n";
+        clips.rows.push_back({"c" + std::to_string(k), "walking", "train"});
+    }
+    write_csv(data + "/clips.csv", clips);
+    auto source = open_motion_source("retrieval:" + data, SampleOptions{}, "cpu", data + "/vocab.safetensors");
+    EXPECT_EQ(clips_drawn(*source, "a person walks", "walking"), (std::set<std::string>{"c0", "c1", "c2", "c3", "c4", "c5"}));
 }
 
 TEST(MotionSource, RetrievalPrefersTaggedClipsTheClassifierAgreesWith) {

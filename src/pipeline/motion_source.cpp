@@ -249,10 +249,12 @@ private:
         for (size_t c : candidates) {
             double best = -2;
             for (const Eigen::VectorXd& e : caption_embeddings_[c]) best = std::max(best, cosine_similarity(p, e));
-            scored.push_back({-best, c});  // ascending: most similar first, ties by clip order
+            scored.push_back({-best, c});  // ascending: most similar first
         }
-        const size_t k = std::min<size_t>(kRetrievalTopK, scored.size());
-        std::partial_sort(scored.begin(), scored.begin() + static_cast<std::ptrdiff_t>(k), scored.end());
+        std::sort(scored.begin(), scored.end());
+        // The k best and every clip as similar as the k-th (identical captions embed identically).
+        size_t k = std::min<size_t>(kRetrievalTopK, scored.size());
+        while (k < scored.size() && scored[k].first <= scored[k - 1].first + 1e-9) ++k;
         std::vector<size_t> out;
         for (size_t i = 0; i < k; ++i) out.push_back(scored[i].second);
         return out;

@@ -10,12 +10,14 @@
 // used: clips whose activity tags (DATASET/clips.csv) name the activity and whose motion the activity classifier
 // places in that activity (when a classifier is given and has a class for the activity); clips whose tags name it; every clip (no activity asked or none tagged).
 // Within the tier each clip scores by the best SIF similarity (GloVe, a = 1e-4, as the activity categoriser)
-// between the prompt and its captions; a sample takes one of the kRetrievalTopK best at random, time-warps it by
+// between the prompt and its captions; a sample takes one of the kRetrievalTopK best at random (with every clip
+// tied with the k-th: derived clips share their captions, hundreds to a sentence, and a tie broken by clip order
+// drew every stairs motion from the first-listed recordings' acted walks), time-warps it by
 // a factor in [1 - kRetrievalWarp, 1 + kRetrievalWarp] (the dataset holds the left-right mirrors already) and
 // crops a random window of the asked length (a shorter clip is used whole). Nothing is invented: every frame is
-// captured (or, for clips.csv's source_dataset "edited", derived) motion, resampled. A captured clip with a
-// capture-rate copy gives that copy's same span too (capture_rate_motion; Catmull-Rom between captured frames),
-// so the virtual sensors can see the motion between 20 fps frames.
+// captured (or, for clips.csv's source_dataset "edited", derived) motion, resampled. A clip with a capture-rate
+// copy (captured, or derived from a capture at that rate) gives that copy's same span too (capture_rate_motion;
+// Catmull-Rom between its frames), so the virtual sensors can see the motion between 20 fps frames.
 #pragma once
 #include <cstdint>
 #include <memory>
