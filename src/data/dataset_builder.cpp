@@ -21,7 +21,6 @@
 #include "data/splits.hpp"
 #include "motion/humanml3d.hpp"
 #include "motion/mocap_import.hpp"
-#include "motion/resample.hpp"
 #include "motion/skeleton.hpp"
 
 namespace t2imu {
@@ -341,12 +340,9 @@ BuildSummary build_into(const BuildOptions& o, const std::string& tmp) {
         if (!o.derive) continue;
         // Derived at the capture rate where there is one; the dataset holds them at 20 fps, with the
         // capture-rate clip as their copy for the sensors.
-        for (DerivedClip& d : derive_clips(capture ? *capture : joints, c.tags, file, derive_report)) {
-            const bool over_20 = d.joints.fps > kFps + 1e-9;
-            const JointSequence at_20 = over_20 ? resample_joints(d.joints, kFps) : d.joints;
-            write_recording(o, tmp, derived_source(c, d, at_20.num_frames), key, at_20, over_20 ? &d.joints : nullptr, max_frames,
-                            chunks_per_file, tally, summary);
-        }
+        for (DerivedClip& d : derive_clips(capture ? *capture : joints, c.tags, file, derive_report))
+            write_recording(o, tmp, derived_source(c, d, d.joints_20fps.num_frames), key, d.joints_20fps,
+                            capture ? &d.joints : nullptr, max_frames, chunks_per_file, tally, summary);
     }
     if (tally.written.empty()) throw Error(o.out_dir, "clips", "at least one clip with a caption after filtering");
     summary.clips = static_cast<int>(tally.written.size());

@@ -90,7 +90,8 @@ void derive_stairs_clip(const JointSequence& walk, const std::string& file, Deri
         return;
     }
     const Staircase stairs = m.stairs;
-    if (!passes(score_motion_on_ground(at_dataset_rate(m.motion), [&](const Eigen::Vector3d& p) { return stairs.height_at(p); }))) {
+    JointSequence at_20 = at_dataset_rate(m.motion);
+    if (!passes(score_motion_on_ground(at_20, [&](const Eigen::Vector3d& p) { return stairs.height_at(p); }))) {
         ++report.failed_quality;
         return;
     }
@@ -98,6 +99,7 @@ void derive_stairs_clip(const JointSequence& walk, const std::string& file, Deri
     c.method = ascend ? "stairs_up" : "stairs_down";
     c.activity = c.method;
     c.joints = std::move(m.motion);
+    c.joints_20fps = std::move(at_20);
     c.parameters = {{"rise_m", o.rise_m}, {"going_m", o.going_m}, {"ascend", o.ascend}, {"trunk_lean_rad", o.trunk_lean_rad},
                     {"cadence_factor", o.cadence_factor}, {"swing_clearance_m", o.swing_clearance_m}, {"steps", stairs.steps}};
     c.seed = seed;
@@ -137,7 +139,8 @@ void derive_sit_clips(const JointSequence& standing, const std::string& file, De
             ++report.refused;
             continue;
         }
-        if (!passes(score_motion(at_dataset_rate(c.joints)))) { ++report.failed_quality; continue; }
+        c.joints_20fps = at_dataset_rate(c.joints);
+        if (!passes(score_motion(c.joints_20fps))) { ++report.failed_quality; continue; }
         c.method = "sit_down_stand_up";
         c.activity = "sitting";
         c.parameters = {{"source_start_frame", begin}, {"seat_height_m", o.seat_height_m}, {"pelvis_above_seat_m", o.pelvis_above_seat_m},
@@ -164,7 +167,8 @@ void derive_lying_clips(const JointSequence& lie_down, const std::string& file, 
             ++report.refused;  // the clip does not end lying
             return;
         }
-        if (!passes(score_motion(at_dataset_rate(c.joints)))) { ++report.failed_quality; continue; }
+        c.joints_20fps = at_dataset_rate(c.joints);
+        if (!passes(score_motion(c.joints_20fps))) { ++report.failed_quality; continue; }
         c.method = "lying_still";
         c.activity = "lying";
         c.parameters = {{"seconds", o.seconds}, {"breaths_per_min", o.breaths_per_min}, {"chest_rad", o.chest_rad}};
@@ -186,7 +190,8 @@ void derive_jump_clip(const JointSequence& jump, const std::string& file, Derive
         ++report.refused;  // too short, or never on both feet
         return;
     }
-    if (!passes(score_motion(at_dataset_rate(c.joints)))) { ++report.failed_quality; return; }
+    c.joints_20fps = at_dataset_rate(c.joints);
+    if (!passes(score_motion(c.joints_20fps))) { ++report.failed_quality; return; }
     c.method = "jump_rescaled";
     c.activity = "jumping";
     c.parameters = {{"time_scale", o.time_scale}, {"height_scale", o.time_scale * o.time_scale}};

@@ -44,6 +44,7 @@ struct DerivedClip {
     std::string method;                 // "stairs_up", "stairs_down", "sit_down_stand_up", "lying_still", "jump_rescaled"
     std::string activity;               // its activity tag: stairs_up, stairs_down, sitting, lying, jumping
     JointSequence joints;               // at the source recording's rate, floor at y = 0 under the lowest joint
+    JointSequence joints_20fps;         // the same at 20 fps (Catmull-Rom), as quality-scored and as the dataset holds it
     nlohmann::json parameters;          // the edit's options
     uint64_t seed = 0;
     std::vector<std::string> captions;  // three sentences for the whole clip

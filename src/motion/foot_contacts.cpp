@@ -27,8 +27,6 @@ double lowest_height(const JointSequence& m, int j) {
     return low;
 }
 
-int frames_of(double seconds, double fps) { return static_cast<int>(std::lround(seconds * fps)); }
-
 // Sets every run of at most `gap` false flags that has a true flag on both sides.
 void close_short_gaps(std::vector<bool>& stance, int gap) {
     const int n = static_cast<int>(stance.size());

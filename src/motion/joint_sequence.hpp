@@ -1,6 +1,7 @@
 // A motion as joint positions over time: [frames, joints, 3], metres, Y-up world frame, at `fps`.
 #pragma once
 #include <Eigen/Core>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,10 @@ struct JointSequence {
         return positions[static_cast<size_t>(frame * num_joints + joint)];
     }
 };
+
+// The nearest whole number of frames to `seconds` at `fps`: how the motion edits turn their time constants
+// (seconds) into frame counts at any rate.
+inline int frames_of(double seconds, double fps) { return static_cast<int>(std::lround(seconds * fps)); }
 
 // Frames [begin, end) of `s`, same joints and rate.
 JointSequence slice_frames(const JointSequence& s, int begin, int end);

@@ -43,7 +43,7 @@ JointSequence lying_still(const JointSequence& lie_down, const LyingOptions& o) 
     if (lie_down.num_joints != kNumJoints || lie_down.num_frames < 1) throw Error("lying_still", "lie_down", "22 SMPL joints, at least one frame");
     const int last = lie_down.num_frames - 1;
     require_lying(lie_down, last);
-    const int n = static_cast<int>(std::lround(o.seconds * lie_down.fps)) + 1;
+    const int n = frames_of(o.seconds, lie_down.fps) + 1;
     JointSequence m(n, kNumJoints, lie_down.fps);
     const Vector3d pivot = lie_down.at(last, spine2);
     Vector3d axis = (lie_down.at(last, left_hip) - lie_down.at(last, right_hip)).normalized();

@@ -190,7 +190,7 @@ double lower_to_reach(JointSequence& m, const std::array<double, 2>& reach_m) {
             drop[static_cast<size_t>(f)] = std::max(drop[static_cast<size_t>(f)],
                                                     drop_to_reach(m.at(f, kLegs[leg].hip), m.at(f, kLegs[leg].ankle), reach_m[leg]));
     // 0.4 s either side (8 frames at 20 fps): the body sinks into a deep step instead of jerking down.
-    const std::vector<double> smooth = upper_envelope(drop, std::max(1, static_cast<int>(std::lround(0.4 * m.fps))));
+    const std::vector<double> smooth = upper_envelope(drop, std::max(1, frames_of(0.4, m.fps)));
     double most = 0;
     for (int f = 0; f < m.num_frames; ++f) {
         const double d = smooth[static_cast<size_t>(f)];

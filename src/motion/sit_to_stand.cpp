@@ -15,8 +15,6 @@ using namespace smpl22;
 
 namespace {
 
-int frames_of(double seconds, double fps) { return static_cast<int>(std::lround(seconds * fps)); }
-
 // How far the pelvis is from standing toward the seat (horizontal and vertical, 0 standing .. 1 seated) and how
 // far the trunk is bent (rad) at one frame.
 struct Posture {
