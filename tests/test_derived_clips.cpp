@@ -75,7 +75,15 @@ TEST(DerivedClips, IdleStandingGivesSitDownStandUpClipsThatPassTheQualityThresho
     ASSERT_GE(clips.size(), 4u);
     for (const DerivedClip& c : clips) {
         EXPECT_EQ(c.activity, "sitting");
-        EXPECT_LE(c.joints.num_frames, 9.4 * 20 + 1);  // one training clip
+        EXPECT_LE(c.joints.num_frames, 9.4 * 20 + 1);  // one training clip, however slow the pace
+        // The pace scales both movements; the still phases make room for a slow one.
+        const double pace = c.parameters["pace_factor"].get<double>();
+        EXPECT_GE(pace, kSitPaceFactorMin);
+        EXPECT_LE(pace, kSitPaceFactorMax);
+        EXPECT_GE(c.parameters["sit_down_s"].get<double>() / pace, 1.8 - 1e-9);
+        EXPECT_LE(c.parameters["sit_down_s"].get<double>() / pace, 2.4 + 1e-9);
+        EXPECT_GE(c.parameters["stand_up_s"].get<double>() / pace, 1.5 - 1e-9);
+        EXPECT_LE(c.parameters["stand_up_s"].get<double>() / pace, 2.0 + 1e-9);
         EXPECT_TRUE(quality_failures(score_motion(c.joints), default_quality_thresholds()).empty());
         EXPECT_LT(max_bone_change(c.joints), 1e-6);
         // Seated, the pelvis rests pelvis_above_seat_m above the seat, which is about half the hip height.

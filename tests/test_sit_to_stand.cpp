@@ -124,6 +124,30 @@ TEST(SitToStand, TheTrunkBendsForwardToItsPeakOnTheWayDownAndUp) {
     EXPECT_NEAR(lean(m, 90), lean(stand, 90), 1e-9);
 }
 
+// The pace knob the dataset builder turns (data/derived_clips.hpp): every move is a minimum-jerk blend, so taking
+// k times as long lowers the pelvis's vertical acceleration by k^2 (the reach limit's fixed 0.4 s envelope bends
+// the last of the rise, hence the tolerance).
+TEST(SitToStand, ASlowerPaceLowersThePelvisAccelerationByItsSquare) {
+    auto peak_vertical_acceleration = [](const JointSequence& m, double from_s, double to_s) {  // m/s^2
+        double peak = 0;
+        for (int f = std::max(1, frames_of(from_s, m.fps)); f < std::min(m.num_frames - 1, frames_of(to_s, m.fps)); ++f)
+            peak = std::max(peak, std::abs(m.at(f + 1, pelvis).y() - 2 * m.at(f, pelvis).y() + m.at(f - 1, pelvis).y()) * m.fps * m.fps);
+        return peak;
+    };
+    ChairOptions natural, slow;
+    slow.sit_down_s = 1.3 * natural.sit_down_s;
+    slow.stand_up_s = 1.3 * natural.stand_up_s;
+    slow.seated_s = 1.0;
+    const JointSequence a = stand_sit_stand(procedural_stand(200), natural), b = stand_sit_stand(procedural_stand(200), slow);
+    const double down_a = peak_vertical_acceleration(a, 1.0, 3.2), down_b = peak_vertical_acceleration(b, 1.0, 1.0 + slow.sit_down_s);
+    const double up_from_a = 6.2, up_from_b = 1.0 + slow.sit_down_s + 1.0;
+    const double up_a = peak_vertical_acceleration(a, up_from_a, up_from_a + 1.8), up_b = peak_vertical_acceleration(b, up_from_b, up_from_b + slow.stand_up_s);
+    EXPECT_GT(down_a, 0.5);
+    EXPECT_GT(up_a, 0.5);
+    EXPECT_NEAR(down_a / down_b, 1.69, 0.2);
+    EXPECT_NEAR(up_a / up_b, 1.69, 0.2);
+}
+
 TEST(SitToStand, RefusesBadOptionsAndShortSourcesNamingTheField) {
     ChairOptions o;
     o.seat_height_m = 0.70;
@@ -134,6 +158,20 @@ TEST(SitToStand, RefusesBadOptionsAndShortSourcesNamingTheField) {
         EXPECT_NE(std::string(e.what()).find("seat_height_m"), std::string::npos) << e.what();
     }
     EXPECT_THROW(stand_sit_stand(procedural_stand(100), ChairOptions{}), Error);
+    // A source that steps 0.3 m to the side halfway: the planted feet would be left behind.
+    JointSequence stepping = procedural_stand(200);
+    for (int f = 100; f < stepping.num_frames; ++f)
+        for (int j = 0; j < kNumJoints; ++j) stepping.at(f, j).x() += 0.3 * std::min(1.0, (f - 100) / 10.0);
+    try {
+        stand_sit_stand(stepping, ChairOptions{});
+        FAIL() << "accepted a source that steps away";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("at frame 109"), std::string::npos) << e.what();
+    }
+    stepping = procedural_stand(200);
+    for (int f = 0; f < stepping.num_frames; ++f)
+        for (int j = 0; j < kNumJoints; ++j) stepping.at(f, j).x() += 0.2 * f / 200.0;  // 0.18 m: a weight shift
+    EXPECT_NO_THROW(stand_sit_stand(stepping, ChairOptions{}));
 }
 
 TEST(SitToStand, ACapturedIdleStandSitsDown) {

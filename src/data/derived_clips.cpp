@@ -115,19 +115,34 @@ double hip_joint_height(const JointSequence& s) {
     return 0.5 * (s.at(0, smpl22::left_hip).y() + s.at(0, smpl22::right_hip).y()) - floor;
 }
 
+// The longest sit clip (s): one training clip of 9.4 s less the rounding of five phases to 20 fps frames (0.125 s).
+// The still phases (standing before and after, seated) shrink in proportion where a slow pace leaves less room.
+constexpr double kMaxSitSeconds = 9.25;
+
+void fit_still_phases(ChairOptions& o) {
+    const double still = o.stand_before_s + o.seated_s + o.stand_after_s;
+    const double room = kMaxSitSeconds - o.sit_down_s - o.stand_up_s;
+    if (still <= room) return;
+    o.stand_before_s *= room / still;
+    o.seated_s *= room / still;
+    o.stand_after_s *= room / still;
+}
+
 void derive_sit_clips(const JointSequence& standing, const std::string& file, DeriveReport& report, std::vector<DerivedClip>& out) {
     const uint64_t seed = file_seed(file);
     const double hip_height = hip_joint_height(standing);
     std::mt19937_64 rng(seed);
     for (int k = 0; k < kSitsPerRecording; ++k) {
+        const double pace_factor = uniform(rng, kSitPaceFactorMin, kSitPaceFactorMax);
         ChairOptions o;
         o.seat_height_m = uniform(rng, 0.47, 0.57) * hip_height;
-        o.sit_down_s = uniform(rng, 1.8, 2.4);
+        o.sit_down_s = pace_factor * uniform(rng, 1.8, 2.4);
         o.seated_s = uniform(rng, 2.0, 3.0);
-        o.stand_up_s = uniform(rng, 1.5, 2.0);
+        o.stand_up_s = pace_factor * uniform(rng, 1.5, 2.0);
         o.stand_before_s = uniform(rng, 0.5, 1.0);
         o.stand_after_s = uniform(rng, 0.5, 1.0);
         o.trunk_flexion_peak_rad = uniform(rng, 0.55, 0.85);
+        fit_still_phases(o);
         const int frames = stand_sit_stand_frames(o, standing.fps);
         if (frames > standing.num_frames) { ++report.refused; continue; }
         // Window k of kSitsPerRecording spread evenly over the recording.
@@ -145,7 +160,8 @@ void derive_sit_clips(const JointSequence& standing, const std::string& file, De
         c.activity = "sitting";
         c.parameters = {{"source_start_frame", begin}, {"seat_height_m", o.seat_height_m}, {"pelvis_above_seat_m", o.pelvis_above_seat_m},
                         {"stand_before_s", o.stand_before_s}, {"sit_down_s", o.sit_down_s}, {"seated_s", o.seated_s},
-                        {"stand_up_s", o.stand_up_s}, {"stand_after_s", o.stand_after_s}, {"trunk_flexion_peak_rad", o.trunk_flexion_peak_rad}};
+                        {"stand_up_s", o.stand_up_s}, {"stand_after_s", o.stand_after_s}, {"trunk_flexion_peak_rad", o.trunk_flexion_peak_rad},
+                        {"pace_factor", pace_factor}};
         c.seed = seed + static_cast<uint64_t>(k);
         c.captions = pick_captions(captions_for(c.method), rng);
         out.push_back(std::move(c));

@@ -13,9 +13,17 @@
 //             footholds) give nothing.
 //   standing  up to kSitsPerRecording sit-down/stand-up clips, from windows spread evenly over the recording:
 //             seat height uniform in [0.47, 0.57] x the standing hip-joint height (0.40-0.50 m for an adult's
-//             0.88 m: ordinary chairs; ReActIdle's rigs stand 0.66-0.95 m at the hip), sitting down 1.8-2.4 s, seated 2-3 s, standing up
-//             1.5-2.0 s, 0.5-1.0 s of standing before and after (at most 9.4 s: one training clip), peak
-//             trunk flexion 0.55-0.85 rad.
+//             0.88 m: ordinary chairs; ReActIdle's rigs stand 0.66-0.95 m at the hip), sitting down 1.8-2.4 s and
+//             standing up 1.5-2.0 s (self-paced, sit_to_stand.hpp) times a pace factor uniform in
+//             [kSitPaceFactorMin, kSitPaceFactorMax], seated 2-3 s, 0.5-1.0 s of standing before and after (the
+//             three still phases shrunk in proportion where a slow pace leaves less room: at most 9.4 s, one
+//             training clip), peak trunk flexion 0.55-0.85 rad. Windows where the idle stand steps away are
+//             refused (sit_to_stand.hpp's kMaxStandingDriftM).
+//             The pace spans what the real data sets show at the waist, measured as the rise and dip of |a|
+//             (0.2 s means) above and below its median: UMAFall's self-paced trials 2.8 and 2.0 m/s², the
+//             self-paced durations here 3.0 and 2.2; SisFall's D07/D09, done "slowly" by protocol, 1.9 and 1.0,
+//             these durations times 1.3: 1.7 and 1.1. Captions do not name the pace (GloVe sentence vectors put
+//             "quickly" next to "slowly": measured, pace-worded captions drew slow clips for "quickly" prompts).
 //   lying     kLyingPerRecording clips of the final pose held, breathing: 6-9.4 s long, 12-20 breaths/min
 //             (quiet breathing at rest), peak rib-cage turn 0.015-0.025 rad. HDM05's lie-down clips reach the
 //             floor seconds before they end; a HAR "lying" recording is mostly lying still.
@@ -38,6 +46,10 @@
 namespace t2imu {
 
 constexpr int kSitsPerRecording = 6;
+// The pace of sitting down and standing up: a factor on both movements' durations, drawn per clip (uniform) from
+// the self-paced trials of UMAFall to SisFall's slow ones (header above).
+constexpr double kSitPaceFactorMin = 0.9;
+constexpr double kSitPaceFactorMax = 1.45;
 constexpr int kLyingPerRecording = 2;
 
 struct DerivedClip {

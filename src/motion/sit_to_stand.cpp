@@ -86,6 +86,12 @@ JointSequence stand_sit_stand(const JointSequence& standing, const ChairOptions&
     const int n = stand_sit_stand_frames(o, standing.fps);
     if (standing.num_frames < n)
         throw Error("stand_sit_stand", "standing", "at least " + std::to_string(n) + " frames", std::to_string(standing.num_frames));
+    for (int f = 1; f < n; ++f) {
+        const Vector3d drift = standing.at(f, pelvis) - standing.at(0, pelvis);
+        if (std::hypot(drift.x(), drift.z()) > kMaxStandingDriftM)
+            throw Error("stand_sit_stand", "standing", "a pelvis within " + std::to_string(kMaxStandingDriftM) + " m of where it stands at frame 0 (horizontally)",
+                        "moves away at frame " + std::to_string(f));
+    }
     const BoneLengths lengths = bone_lengths(standing, 0);
     const Vector3d forward = body_facing(standing, 0);
     const Vector3d seat = seated_pelvis(standing, o, forward, lengths);

@@ -48,7 +48,14 @@ void validate(const ChairOptions& o);
 // fps, plus one.
 int stand_sit_stand_frames(const ChairOptions& o, double fps);
 
-// Refuses (Error) a source that is not 22 joints or is shorter than stand_sit_stand_frames.
+// How far (m, horizontally) the source's pelvis may wander from where it stands at frame 0: the feet stay planted
+// there and the seat is placed from them, so a source that steps away stretches one leg and sinks the seated
+// pelvis below the seat. Measured on windows of a captured idle stand (ReActIdle 000_genuine, 6-9 s): pelvis
+// drifts of 0.12-0.18 m (weight shifts) sink it by less than 1 cm, steps of 0.31 and 0.41 m by 6 and 4 cm.
+constexpr double kMaxStandingDriftM = 0.25;
+
+// Refuses (Error) a source that is not 22 joints, is shorter than stand_sit_stand_frames, or whose pelvis wanders
+// further than kMaxStandingDriftM over those frames.
 JointSequence stand_sit_stand(const JointSequence& standing, const ChairOptions& o);
 
 }  // namespace t2imu
