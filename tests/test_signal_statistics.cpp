@@ -47,6 +47,24 @@ TEST(SignalStatistics, SinusoidsGiveTheirLevelFrequencyAndTilt) {
     EXPECT_LT(fast.at("jerk_rms"), 2 * M_PI * 5 / std::sqrt(2) * 1.1);
 }
 
+// Standing still with one 1 s push up (|a| 2 m/s^2 above g) and, later, one 1 s drop (1 m/s^2 below): the swings.
+TEST(SignalStatistics, TheSwingsOfATransitionAreItsRiseAndDipAboveAndBelowTheMedian) {
+    ImuRecording r;
+    r.dataset = "t2imu", r.activity = "sitting", r.position = "waist", r.rate_hz = 50, r.path = "sitting.csv";
+    for (int i = 0; i < 600; ++i) {
+        const double t = i / 50.0, push = t >= 4 && t < 5 ? 2.0 : t >= 8 && t < 9 ? -1.0 : 0.0;
+        r.t.push_back(t);
+        r.samples.push_back({0, -(9.81 + push), 0, 0, 0, 0});
+    }
+    const auto s = recording_signal_statistics(r, 20);
+    EXPECT_NEAR(s.at("mag_p50"), 9.81, 1e-3);
+    EXPECT_NEAR(s.at("mag_rise"), 2.0, 0.05);
+    EXPECT_NEAR(s.at("mag_dip"), 1.0, 0.05);
+    // A 5 Hz bounce of 1 m/s^2 averages out over 0.2 s: steps are not swings.
+    const auto bounce = recording_signal_statistics(recording("running", 5.0, 0.0, 0, 5.0), 20);
+    EXPECT_LT(bounce.at("mag_rise"), 0.1);
+}
+
 TEST(SignalStatistics, ComparesActivitiesBothSetsHoldWithRatios) {
     const std::vector<ImuRecording> real = {recording("walking", 0.9, 2.0, 16), recording("lying", 0.5, 0.1, 80)};
     const std::vector<ImuRecording> synthetic = {recording("walking", 0.9, 1.0, 4), recording("walking", 0.9, 1.0, 4)};

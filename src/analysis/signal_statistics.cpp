@@ -19,6 +19,20 @@ namespace {
 constexpr double kMinSeconds = 2;
 constexpr double kMinDominantHz = 0.3;
 constexpr double kHighFrequencyHz = 3;
+constexpr double kSwingSeconds = 0.2;  // mag_rise / mag_dip average |a| over this long: a movement's swing, not a step's spike
+
+// Means of every run of `width` consecutive values (width <= x.size()).
+std::vector<double> moving_mean(const std::vector<double>& x, size_t width) {
+    std::vector<double> out;
+    double sum = 0;
+    for (size_t i = 0; i < x.size(); ++i) {
+        sum += x[i];
+        if (i >= width) sum -= x[i - width];
+        if (i + 1 >= width) out.push_back(sum / static_cast<double>(width));
+    }
+    return out;
+}
+
 
 double percentile(std::vector<double> x, double p) {
     std::sort(x.begin(), x.end());
@@ -106,7 +120,7 @@ double dominant_frequency_hz(const std::vector<double>& x, double rate_hz, doubl
 
 const std::vector<std::string>& signal_statistic_names() {
     static const std::vector<std::string> names = {"mean_x", "mean_y", "mean_z", "tilt_deg", "sd_x", "sd_y", "sd_z", "mag_sd",
-                                                   "mag_p05", "mag_p50", "mag_p95", "dom_x_hz", "dom_y_hz", "dom_z_hz", "jerk_rms", "hf_share",
+                                                   "mag_p05", "mag_p50", "mag_p95", "mag_rise", "mag_dip", "dom_x_hz", "dom_y_hz", "dom_z_hz", "jerk_rms", "hf_share",
                                                    "hf_sd_x", "hf_sd_y", "hf_sd_z", "yaw_hz",
                                                    "grav_x_re", "grav_x_im", "grav_y_re", "grav_y_im", "grav_z_re", "grav_z_im"};
     return names;
@@ -154,6 +168,9 @@ std::map<std::string, double> recording_signal_statistics(const ImuRecording& re
     s["mag_p05"] = percentile(magnitude, 0.05);
     s["mag_p50"] = percentile(magnitude, 0.5);
     s["mag_p95"] = percentile(magnitude, 0.95);
+    const std::vector<double> smooth = moving_mean(magnitude, std::max<size_t>(1, static_cast<size_t>(std::lround(kSwingSeconds * rate_hz))));
+    s["mag_rise"] = *std::max_element(smooth.begin(), smooth.end()) - s["mag_p50"];
+    s["mag_dip"] = s["mag_p50"] - *std::min_element(smooth.begin(), smooth.end());
     double jerk = 0;
     for (size_t i = 1; i < n; ++i) jerk += std::pow((magnitude[i] - magnitude[i - 1]) * rate_hz, 2);
     s["jerk_rms"] = std::sqrt(jerk / static_cast<double>(n - 1));

@@ -8,6 +8,8 @@
 //                     tilt, whatever the data set's axis convention
 //   sd_x/y/z, mag_sd  standard deviations of each axis and of the magnitude |a| (m/s^2)
 //   mag_p05/p50/p95   percentiles of |a| (m/s^2)
+//   mag_rise/dip      the highest and lowest mean of |a| over 0.2 s, above and below mag_p50 (m/s^2): the swing of
+//                     a transition (sitting down, standing up), whose pace sets it (~1 / duration^2)
 //   dom_x/y/z_hz      frequency of the highest periodogram peak of each mean-removed axis in 0.3 Hz .. rate/2
 //                     (zero-padded to >= 8 x the length); walking's stride (lateral sway) or step frequency
 //   jerk_rms          root mean square of d|a|/dt by first differences (m/s^3)

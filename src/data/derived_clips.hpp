@@ -19,17 +19,11 @@
 //             three still phases shrunk in proportion where a slow pace leaves less room: at most 9.4 s, one
 //             training clip), peak trunk flexion 0.55-0.85 rad. Windows where the idle stand steps away are
 //             refused (sit_to_stand.hpp's kMaxStandingDriftM).
-//             The pace spans what the real data sets show at the waist, measured as the rise and dip of |a|
-//             (0.2 s means) above and below its median: UMAFall's self-paced trials 2.8 and 2.0 m/s², the
-//             self-paced durations here 3.0 and 2.2; SisFall's D07/D09, done "slowly" by protocol, 1.9 and 1.0,
-//             these durations times 1.3: 1.7 and 1.1. Captions do not name the pace (GloVe sentence vectors put
-//             "quickly" next to "slowly": measured, pace-worded captions drew slow clips for "quickly" prompts).
-//   lying     kLyingPerRecording clips of the final pose held, breathing: 6-9.4 s long, 12-20 breaths/min
-//             (quiet breathing at rest), peak rib-cage turn 0.015-0.025 rad. HDM05's lie-down clips reach the
-//             floor seconds before they end; a HAR "lying" recording is mostly lying still.
-//   jumping   one clip of the jump rescaled, lower or higher by the seed's parity: time scale k uniform in
-//             [0.88, 0.95] or [1.05, 1.12], so flights 0.77-0.90 or 1.10-1.25 times as high: within the spread of
-//             jump heights between healthy adults, which is wider.
+//             The pace spans what the real data sets show at the waist (signal_statistics' mag_rise / mag_dip,
+//             m/s², medians): UMAFall's self-paced trials 3.05 / 1.98, SisFall's D07/D09, done "slowly" by
+//             protocol, 2.04 / 0.98; the durations above alone (factor 1) gave 2.85 / 2.28 through SisFall's
+//             device model, and 1.3 times them matched SisFall's. Captions do not name the pace (GloVe sentence
+//             vectors put "quickly" next to "slowly": pace-worded captions drew slow clips for "quickly" prompts).
 // Every edit runs at the rate of the recording it is given (the builder gives the capture rate where that is over
 // 20 fps, so a derived clip keeps the texture the capture has: Bandai Namco walks 30 fps, ReActIdle 24, HDM05 60).
 // A clip is kept only when it passes motion_quality's default thresholds at 20 fps (the dataset's rate, what the
