@@ -2,6 +2,7 @@
 // cannot be a source gives nothing; the draw is the same every time.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "data/derived_clips.hpp"
@@ -100,22 +101,43 @@ TEST(DerivedClips, IdleStandingGivesSitDownStandUpClipsThatPassTheQualityThresho
     }
 }
 
-TEST(DerivedClips, ALieDownClipGivesLyingStillClips) {
+TEST(DerivedClips, ALieDownClipGivesLyingStillAndTurningClips) {
     std::string archive;
     SHARED_OR_SKIP(archive, "mocap/hdm05_amc_native.tar.xz");
     const JointSequence lie = shared_clip("mocap/hdm05_amc_native.tar.xz", kLieDown);
     DeriveReport report;
     const std::vector<DerivedClip> clips = derive_clips(lie, "lying", kLieDown, report);
-    ASSERT_EQ(static_cast<int>(clips.size()), kLyingPerRecording);
+    ASSERT_EQ(static_cast<int>(clips.size()), kLyingPerRecording + kLyingTurnsPerRecording);
+    const Eigen::Vector3d end = lie.at(lie.num_frames - 1, 0);
+    int still = 0, turns = 0, left = 0;
     for (const DerivedClip& c : clips) {
-        EXPECT_EQ(c.method, "lying_still");
         EXPECT_EQ(c.activity, "lying");
         EXPECT_TRUE(quality_failures(score_motion(c.joints), default_quality_thresholds()).empty());
         EXPECT_LT(max_bone_change(c.joints), 1e-6);
-        // Still: the pelvis stays where the captured clip left it, within breathing's millimetres.
-        const Eigen::Vector3d end = lie.at(lie.num_frames - 1, 0);
-        for (int f = 0; f < c.joints.num_frames; ++f) EXPECT_LT((c.joints.at(f, 0) - end).norm(), 0.01);
+        EXPECT_LE(c.joints.num_frames, 9.4 * 20 + 1);  // one training clip
+        if (c.method == "lying_still") {
+            ++still;
+            // Still: the pelvis stays where the captured clip left it, within breathing's millimetres.
+            for (int f = 0; f < c.joints.num_frames; ++f) EXPECT_LT((c.joints.at(f, 0) - end).norm(), 0.01);
+            continue;
+        }
+        ASSERT_EQ(c.method, "lying_turn");
+        ++turns;
+        left += c.parameters["angle_rad"].get<double>() > 0;
+        // It starts and ends lying where the captured clip left it, and turns by its angle in between.
+        EXPECT_LT((c.joints.at(0, 0) - end).norm(), 0.01);
+        EXPECT_LT((c.joints.at(c.joints.num_frames - 1, 0) - end).norm(), 0.01);
+        const Eigen::Vector3d across0 = c.joints.at(0, smpl22::left_hip) - c.joints.at(0, smpl22::right_hip);
+        double most = 0;
+        for (int f = 0; f < c.joints.num_frames; ++f) {
+            const Eigen::Vector3d across = c.joints.at(f, smpl22::left_hip) - c.joints.at(f, smpl22::right_hip);
+            most = std::max(most, std::acos(std::clamp(across0.normalized().dot(across.normalized()), -1.0, 1.0)));
+        }
+        EXPECT_NEAR(most, std::abs(c.parameters["angle_rad"].get<double>()), 0.02);  // breathing does not turn the hips
     }
+    EXPECT_EQ(still, kLyingPerRecording);
+    EXPECT_EQ(turns, kLyingTurnsPerRecording);
+    EXPECT_EQ(left, 1);  // one onto each side
     // A standing recording does not end lying: it gives no lying clip.
     EXPECT_TRUE(derive_clips(shared_clip("mocap/bandai_bvh_native.tar.xz", kWalk), "lying", kWalk, report).empty());
 }

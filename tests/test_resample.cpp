@@ -104,9 +104,13 @@ TEST(Resample, JointPositionsAreExactAtSharedInstantsAndOnAParabolaBetween) {
     EXPECT_DOUBLE_EQ(r.fps, 20);
     for (int k = 0; k < r.num_frames; ++k) {
         const double t = k / 20.0;
-        if (k % 2 == 0) EXPECT_EQ(r.at(k, 0), m.at(3 * k / 2, 0)) << k;  // a source frame: taken as it is
+        if (k % 2 == 0) {
+            EXPECT_EQ(r.at(k, 0), m.at(3 * k / 2, 0)) << k;  // a source frame: taken as it is
+        }
         // Catmull-Rom reproduces a quadratic exactly away from the ends (where the end frame repeats).
-        if (t > 1 / 30.0 && t < 1 - 1 / 30.0) EXPECT_NEAR((r.at(k, 0) - Vector3d(0.5 * t * t, 1 - 3 * t, 0)).norm(), 0, 1e-12) << k;
+        if (t > 1 / 30.0 && t < 1 - 1 / 30.0) {
+            EXPECT_NEAR((r.at(k, 0) - Vector3d(0.5 * t * t, 1 - 3 * t, 0)).norm(), 0, 1e-12) << k;
+        }
         EXPECT_EQ(r.at(k, 1), Vector3d(0.2, 0.3, 0.4));
     }
     // Upward: 20 -> 60 fps keeps the span, three frames per source frame.

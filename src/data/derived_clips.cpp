@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "motion/jump_rescale.hpp"
 #include "motion/lying_still.hpp"
+#include "motion/lying_turn.hpp"
 #include "motion/motion_quality.hpp"
 #include "motion/resample.hpp"
 #include "motion/sit_to_stand.hpp"
@@ -59,10 +60,15 @@ const std::vector<std::string>& captions_for(const std::string& method) {
         "a person lies still on the floor, breathing quietly", "someone is lying on the ground and resting",
         "a person lies on the floor without moving", "the person rests lying down", "someone lies motionless on the floor",
         "a person is lying down, breathing calmly"};
+    static const std::vector<std::string> turn = {
+        "a person lying on the floor rolls onto their side and back again", "someone lying on their back turns onto their side, then back",
+        "the person lies on the floor and turns over to one side", "a person lying down rolls to the side and then onto their back",
+        "someone turns from their back onto their side while lying down", "a person lying on the ground turns over onto one side and back"};
     static const std::vector<std::string> jump = {
         "a person jumps", "someone jumps up and lands again", "a person jumps off the ground with both feet",
         "the person makes a jump", "a man jumps and lands on his feet", "someone is jumping"};
     if (method == "jump_rescaled") return jump;
+    if (method == "lying_turn") return turn;
     return method == "stairs_up" ? up : method == "stairs_down" ? down : method == "lying_still" ? lie : sit;
 }
 
@@ -194,6 +200,39 @@ void derive_lying_clips(const JointSequence& lie_down, const std::string& file, 
     }
 }
 
+void derive_lying_turn_clips(const JointSequence& lie_down, const std::string& file, DeriveReport& report, std::vector<DerivedClip>& out) {
+    std::mt19937_64 rng(file_seed(file) + 1);  // its own stream: the still clips stay as they were
+    for (int k = 0; k < kLyingTurnsPerRecording; ++k) {
+        LyingOptions still;
+        still.breaths_per_min = uniform(rng, 12.0, 20.0);
+        still.chest_rad = uniform(rng, 0.015, 0.025);
+        LyingTurnOptions o;
+        o.before_s = uniform(rng, 0.5, 1.2);
+        o.turn_s = uniform(rng, 0.8, 1.4);
+        o.on_side_s = uniform(rng, 1.5, 2.4);
+        o.back_s = uniform(rng, 0.8, 1.4);
+        o.after_s = uniform(rng, 0.5, 1.2);
+        o.angle_rad = (k % 2 == 0 ? 1 : -1) * uniform(rng, 1.2, 1.6);  // onto either side
+        still.seconds = (lying_turn_frames(o, lie_down.fps) - 1) / lie_down.fps;
+        DerivedClip c;
+        try {
+            c.joints = lying_turn(lying_still(lie_down, still), o);
+        } catch (const Error&) {
+            ++report.refused;  // the clip does not end lying
+            return;
+        }
+        c.joints_20fps = at_dataset_rate(c.joints);
+        if (!passes(score_motion(c.joints_20fps))) { ++report.failed_quality; continue; }
+        c.method = "lying_turn";
+        c.activity = "lying";
+        c.parameters = {{"breaths_per_min", still.breaths_per_min}, {"chest_rad", still.chest_rad}, {"before_s", o.before_s},
+                        {"turn_s", o.turn_s}, {"on_side_s", o.on_side_s}, {"back_s", o.back_s}, {"after_s", o.after_s}, {"angle_rad", o.angle_rad}};
+        c.seed = file_seed(file) + static_cast<uint64_t>(kLyingPerRecording + k);
+        c.captions = pick_captions(captions_for(c.method), rng);
+        out.push_back(std::move(c));
+    }
+}
+
 void derive_jump_clip(const JointSequence& jump, const std::string& file, DeriveReport& report, std::vector<DerivedClip>& out) {
     const uint64_t seed = file_seed(file);
     std::mt19937_64 rng(seed);
@@ -225,7 +264,10 @@ std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::
     if (t.size() != 1) return out;
     if (t.count("walking")) derive_stairs_clip(captured, file, report, out);
     if (t.count("standing")) derive_sit_clips(captured, file, report, out);
-    if (t.count("lying")) derive_lying_clips(captured, file, report, out);
+    if (t.count("lying")) {
+        derive_lying_clips(captured, file, report, out);
+        derive_lying_turn_clips(captured, file, report, out);
+    }
     if (t.count("jumping")) derive_jump_clip(captured, file, report, out);
     return out;
 }

@@ -1,8 +1,9 @@
 // Motions derived from captured ones where open motion capture has (almost) none: stairs from captured level
 // walks (motion/stair_gait.hpp), sitting down, sitting and standing up from captured idle standing
 // (motion/sit_to_stand.hpp), and lying still, breathing, from the end of captured lie-down clips
-// (motion/lying_still.hpp), and jumps of another height from captured jumps (motion/jump_rescale.hpp). Each derived clip says what it is: method, source file, parameters and seed; the
-// dataset builder tags it as source_dataset "edited" with the source clip's licence.
+// (motion/lying_still.hpp) and turning onto the side and back (motion/lying_turn.hpp), and jumps of another
+// height from captured jumps (motion/jump_rescale.hpp). Each derived clip says what it is: method, source file,
+// parameters and seed; the dataset builder tags it as source_dataset "edited" with the source clip's licence.
 //
 // Which captured recordings give which clips (only single-activity recordings, so the edit starts from what it
 // assumes):
@@ -24,6 +25,16 @@
 //             protocol, 2.04 / 0.98; the durations above alone (factor 1) gave 2.85 / 2.28 through SisFall's
 //             device model, and 1.3 times them matched SisFall's. Captions do not name the pace (GloVe sentence
 //             vectors put "quickly" next to "slowly": pace-worded captions drew slow clips for "quickly" prompts).
+//   lying     kLyingPerRecording clips of the final pose held, breathing: 6-9.4 s long, 12-20 breaths/min
+//             (quiet breathing at rest), peak rib-cage turn 0.015-0.025 rad. HDM05's lie-down clips reach the
+//             floor seconds before they end; a HAR "lying" recording is mostly lying still. And
+//             kLyingTurnsPerRecording clips of that pose, breathing, turning onto the side and back
+//             (lying_turn.hpp), onto the left side in one and the right in the other: 70-90 deg (1.2-1.6 rad),
+//             turns of 1.2-2.2 s each way, 1.5-2.4 s on the side, 0.5-1.2 s on the back before and after
+//             (at most 9.2 s).
+//   jumping   one clip of the jump rescaled, lower or higher by the seed's parity: time scale k uniform in
+//             [0.88, 0.95] or [1.05, 1.12], so flights 0.77-0.90 or 1.10-1.25 times as high: within the spread of
+//             jump heights between healthy adults, which is wider.
 // Every edit runs at the rate of the recording it is given (the builder gives the capture rate where that is over
 // 20 fps, so a derived clip keeps the texture the capture has: Bandai Namco walks 30 fps, ReActIdle 24, HDM05 60).
 // A clip is kept only when it passes motion_quality's default thresholds at 20 fps (the dataset's rate, what the
@@ -45,9 +56,10 @@ constexpr int kSitsPerRecording = 6;
 constexpr double kSitPaceFactorMin = 0.9;
 constexpr double kSitPaceFactorMax = 1.45;
 constexpr int kLyingPerRecording = 2;
+constexpr int kLyingTurnsPerRecording = 2;
 
 struct DerivedClip {
-    std::string method;                 // "stairs_up", "stairs_down", "sit_down_stand_up", "lying_still", "jump_rescaled"
+    std::string method;                 // "stairs_up", "stairs_down", "sit_down_stand_up", "lying_still", "lying_turn", "jump_rescaled"
     std::string activity;               // its activity tag: stairs_up, stairs_down, sitting, lying, jumping
     JointSequence joints;               // at the source recording's rate, floor at y = 0 under the lowest joint
     JointSequence joints_20fps;         // the same at 20 fps (Catmull-Rom), as quality-scored and as the dataset holds it

@@ -24,13 +24,12 @@ bool on_rib_cage(int j) {
     return j == spine3;
 }
 
-void require_lying(const JointSequence& s, int f) {
-    const Vector3d trunk = s.at(f, neck) - s.at(f, pelvis);
-    if (s.at(f, pelvis).y() > 0.4 || std::abs(trunk.normalized().y()) > std::cos(kPi / 4))
-        throw Error("lying_still", "lie_down", "a clip that ends lying (pelvis below 0.4 m, trunk more than 45 deg from vertical)");
-}
-
 }  // namespace
+
+bool is_lying(const JointSequence& s, int f) {
+    const Vector3d trunk = s.at(f, neck) - s.at(f, pelvis);
+    return s.at(f, pelvis).y() <= 0.4 && std::abs(trunk.normalized().y()) <= std::cos(kPi / 4);
+}
 
 void validate(const LyingOptions& o) {
     check_option_range(o.seconds, 1.0, 120.0, "lying options", "seconds");
@@ -42,7 +41,8 @@ JointSequence lying_still(const JointSequence& lie_down, const LyingOptions& o) 
     validate(o);
     if (lie_down.num_joints != kNumJoints || lie_down.num_frames < 1) throw Error("lying_still", "lie_down", "22 SMPL joints, at least one frame");
     const int last = lie_down.num_frames - 1;
-    require_lying(lie_down, last);
+    if (!is_lying(lie_down, last))
+        throw Error("lying_still", "lie_down", "a clip that ends lying (pelvis below 0.4 m, trunk more than 45 deg from vertical)");
     const int n = frames_of(o.seconds, lie_down.fps) + 1;
     JointSequence m(n, kNumJoints, lie_down.fps);
     const Vector3d pivot = lie_down.at(last, spine2);

@@ -26,6 +26,9 @@ struct LyingOptions {
 // Throws Error naming the field when an option is outside its range.
 void validate(const LyingOptions& o);
 
+// Whether frame f of s is lying: the pelvis below 0.4 m and the pelvis-to-neck line more than 45 deg from vertical.
+bool is_lying(const JointSequence& s, int f);
+
 // The source's last frame held for o.seconds at its fps, breathing. Refuses (Error) a source that is not
 // 22 joints or does not end lying: pelvis above 0.4 m, or the pelvis-to-neck line within 45 deg of vertical.
 JointSequence lying_still(const JointSequence& lie_down, const LyingOptions& o);
