@@ -111,6 +111,7 @@ std::vector<Row> rows() {
         {"HarOutInProc", kHar + "--repeats 1 --out /proc/x/o.json", imu_dataset("imu"), 2, "--out: /proc/x/o.json", {}},
         {"DataBuildNegativeCap", "data build --mocap {D} --out {D}/o --max-seconds-per-file -1", kFile, 2, "--max-seconds-per-file", {"o"}},
         {"DataBuildShortChunks", "data build --mocap {D} --out {D}/o --max-seconds 1", kFile, 2, "--max-seconds: expected at least 2 s", {"o"}},
+        {"DataBuildTurnsWithoutDerived", "data build --mocap {D} --out {D}/o --no-derived --lying-turns", kFile, 2, "--lying-turns: expected the derived clips", {"o"}},
         // Every other command that writes checks its --out before any work too.
         {"TsneOutInProc", "tsne --in {D}/x.csv --out /proc/x/y.csv", {{"x.csv", "a,b\n1,2\n3,4\n"}}, 2, "--out: /proc/x/y.csv", {}},
         {"ReportOutBelowFile", "report --in {D} --out {D}/file/r", kFile, 2, "--out: ", {}},

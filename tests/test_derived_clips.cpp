@@ -106,7 +106,11 @@ TEST(DerivedClips, ALieDownClipGivesLyingStillAndTurningClips) {
     SHARED_OR_SKIP(archive, "mocap/hdm05_amc_native.tar.xz");
     const JointSequence lie = shared_clip("mocap/hdm05_amc_native.tar.xz", kLieDown);
     DeriveReport report;
-    const std::vector<DerivedClip> clips = derive_clips(lie, "lying", kLieDown, report);
+    // By default the still clips only; the turns on request.
+    std::vector<DerivedClip> clips = derive_clips(lie, "lying", kLieDown, report);
+    ASSERT_EQ(static_cast<int>(clips.size()), kLyingPerRecording);
+    for (const DerivedClip& c : clips) EXPECT_EQ(c.method, "lying_still");
+    clips = derive_clips(lie, "lying", kLieDown, report, true);
     ASSERT_EQ(static_cast<int>(clips.size()), kLyingPerRecording + kLyingTurnsPerRecording);
     const Eigen::Vector3d end = lie.at(lie.num_frames - 1, 0);
     int still = 0, turns = 0, left = 0;

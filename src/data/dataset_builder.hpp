@@ -46,6 +46,9 @@ struct BuildOptions {
     // Add the clips derived from captured ones (derived_clips.hpp: stairs from walks, sitting down and standing
     // up from idle standing), tagged source_dataset "edited" with their provenance in clips.csv.
     bool derive = true;
+    // Among them, lying turning onto the side and back (derived_clips.hpp); off: README's measurement found it
+    // brings the lying level to the real one but makes lying windows easier to tell from real ones.
+    bool lying_turns = false;
     // Keep each captured clip at its capture rate too (capture_joints/), and derive clips from the recording at
     // that rate (their copy is the derived clip at it; new_joints hold it at 20 fps, Catmull-Rom). false: every
     // clip, derived ones too, only at 20 fps.

@@ -258,7 +258,7 @@ void derive_jump_clip(const JointSequence& jump, const std::string& file, Derive
 }  // namespace
 
 std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::string& tags, const std::string& file,
-                                      DeriveReport& report) {
+                                      DeriveReport& report, bool lying_turns) {
     std::vector<DerivedClip> out;
     const std::set<std::string> t = tag_set(tags);
     if (t.size() != 1) return out;
@@ -266,7 +266,7 @@ std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::
     if (t.count("standing")) derive_sit_clips(captured, file, report, out);
     if (t.count("lying")) {
         derive_lying_clips(captured, file, report, out);
-        derive_lying_turn_clips(captured, file, report, out);
+        if (lying_turns) derive_lying_turn_clips(captured, file, report, out);
     }
     if (t.count("jumping")) derive_jump_clip(captured, file, report, out);
     return out;

@@ -27,11 +27,13 @@
 //             vectors put "quickly" next to "slowly": pace-worded captions drew slow clips for "quickly" prompts).
 //   lying     kLyingPerRecording clips of the final pose held, breathing: 6-9.4 s long, 12-20 breaths/min
 //             (quiet breathing at rest), peak rib-cage turn 0.015-0.025 rad. HDM05's lie-down clips reach the
-//             floor seconds before they end; a HAR "lying" recording is mostly lying still. And
-//             kLyingTurnsPerRecording clips of that pose, breathing, turning onto the side and back
+//             floor seconds before they end; a HAR "lying" recording is mostly lying still. On request
+//             (lying_turns), kLyingTurnsPerRecording clips of that pose, breathing, turning onto the side and back
 //             (lying_turn.hpp), onto the left side in one and the right in the other: 70-90 deg (1.2-1.6 rad),
-//             turns of 1.2-2.2 s each way, 1.5-2.4 s on the side, 0.5-1.2 s on the back before and after
-//             (at most 9.2 s).
+//             turns of 0.8-1.4 s each way, 1.5-2.4 s on the side, 0.5-1.2 s on the back before and after (at
+//             most 7.6 s). The turns' pace is SisFall's (D14, on the back, onto the side and back in 12 s; waist
+//             |a| sd 0.86 m/s², mag_rise 1.98): on SisFall's lying prompts, turns of 1.2-2.2 s gave 0.42 and
+//             0.73, these 0.74 and 1.37.
 //   jumping   one clip of the jump rescaled, lower or higher by the seed's parity: time scale k uniform in
 //             [0.88, 0.95] or [1.05, 1.12], so flights 0.77-0.90 or 1.10-1.25 times as high: within the spread of
 //             jump heights between healthy adults, which is wider.
@@ -75,7 +77,8 @@ struct DeriveReport {
 
 // The derived clips of one captured recording (at any rate of at least 20 fps) whose activity tags are `tags`
 // (the mocap manifest's, ';' between several). `file` seeds the draw. Counts what was left out in `report`.
+// lying_turns: add the turning clips of a lie-down (off by default: README's measurement, "Lying turns").
 std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::string& tags, const std::string& file,
-                                      DeriveReport& report);
+                                      DeriveReport& report, bool lying_turns = false);
 
 }  // namespace t2imu
