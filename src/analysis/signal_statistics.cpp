@@ -33,7 +33,6 @@ std::vector<double> moving_mean(const std::vector<double>& x, size_t width) {
     return out;
 }
 
-
 double percentile(std::vector<double> x, double p) {
     std::sort(x.begin(), x.end());
     const double pos = p * static_cast<double>(x.size() - 1);

@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/error.hpp"
 #include "motion/motion_edit.hpp"
@@ -88,9 +89,11 @@ JointSequence stand_sit_stand(const JointSequence& standing, const ChairOptions&
         throw Error("stand_sit_stand", "standing", "at least " + std::to_string(n) + " frames", std::to_string(standing.num_frames));
     for (int f = 1; f < n; ++f) {
         const Vector3d drift = standing.at(f, pelvis) - standing.at(0, pelvis);
-        if (std::hypot(drift.x(), drift.z()) > kMaxStandingDriftM)
-            throw Error("stand_sit_stand", "standing", "a pelvis within " + std::to_string(kMaxStandingDriftM) + " m of where it stands at frame 0 (horizontally)",
-                        "moves away at frame " + std::to_string(f));
+        if (std::hypot(drift.x(), drift.z()) > kMaxStandingDriftM) {
+            char expected[96];
+            std::snprintf(expected, sizeof expected, "a pelvis within %.2f m of where it stands at frame 0, horizontally", kMaxStandingDriftM);
+            throw Error("stand_sit_stand", "standing", expected, "moves away at frame " + std::to_string(f));
+        }
     }
     const BoneLengths lengths = bone_lengths(standing, 0);
     const Vector3d forward = body_facing(standing, 0);
