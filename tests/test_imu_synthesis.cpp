@@ -93,3 +93,54 @@ TEST(ImuSynthesis, RefusesShortOrNonFiniteInput) {
     p[2].x() = std::nan("");
     EXPECT_THROW(synthesize_imu(p, q, kFps, 50), Error);
 }
+
+namespace {
+
+// A sensor that keeps its orientation, shaken along `dir` by A sin(2 pi f t), sampled at 200 fps.
+Motion shaken(const Vector3d& dir, double amplitude, double hz, double seconds) {
+    Motion m;
+    for (int f = 0; f <= static_cast<int>(seconds * 200); ++f) {
+        m.p.push_back(Vector3d(0, 1, 0) + dir * amplitude * std::sin(2 * M_PI * hz * f / 200.0));
+        m.q.push_back(Quat::Identity());
+    }
+    return m;
+}
+
+// Amplitude of the f Hz sinusoid in x(t) over samples [from, end) (least squares on sin and cos).
+double amplitude_at(const ImuSignals& s, int axis, double hz, size_t from) {
+    double ss = 0, cc = 0, sc = 0, xs = 0, xc = 0;
+    for (size_t k = from; k < s.t.size(); ++k) {
+        const double si = std::sin(2 * M_PI * hz * s.t[k]), co = std::cos(2 * M_PI * hz * s.t[k]), x = s.acc[k][axis];
+        ss += si * si, cc += co * co, sc += si * co, xs += x * si, xc += x * co;
+    }
+    const double det = ss * cc - sc * sc, a = (xs * cc - xc * sc) / det, b = (xc * ss - xs * sc) / det;
+    return std::hypot(a, b);
+}
+
+}  // namespace
+
+TEST(ImuSynthesis, StrapModeFiltersOnlyItsAxisByTheSpringMassTransferFunction) {
+    // A mass on a spring of natural frequency fn and damping zeta, its base shaken at f = r fn, accelerates by
+    // |H| times the base: |H| = sqrt(1 + (2 zeta r)^2) / sqrt((1 - r^2)^2 + (2 zeta r)^2).
+    const double fn = 6, zeta = 0.25, A = 0.002;
+    AttachmentDynamics strap;
+    strap.strap = {fn, zeta};
+    strap.strap_axis = Vector3d::UnitX();
+    for (const double r : {1.0, 2.0}) {
+        const double f = r * fn, base = A * std::pow(2 * M_PI * f, 2);
+        const Motion m = shaken(Vector3d::UnitX(), A, f, 4.0);
+        const ImuSignals s = synthesize_imu(m.p, m.q, 200, 1000, strap);
+        const double h = std::hypot(1, 2 * zeta * r) / std::hypot(1 - r * r, 2 * zeta * r);
+        EXPECT_NEAR(amplitude_at(s, 0, f, 2000) / base, h, 0.01 * h) << "r = " << r;  // transient gone after 2 s
+        for (size_t k = 0; k < s.t.size(); ++k) {
+            EXPECT_NEAR(s.acc[k].y(), kGravity, 1e-9);  // across the strap: gravity only
+            EXPECT_NEAR(s.acc[k].z(), 0, 1e-9);
+            EXPECT_LT(s.gyr[k].norm(), 1e-9);  // translation only
+        }
+    }
+    // Shaken across the strap, the sensor reads what a bolted one reads.
+    const Motion across = shaken(Vector3d(0, 0.6, 0.8), A, 6, 2.0);
+    const ImuSignals bolted = synthesize_imu(across.p, across.q, 200, 1000), on_strap = synthesize_imu(across.p, across.q, 200, 1000, strap);
+    ASSERT_EQ(bolted.t.size(), on_strap.t.size());
+    for (size_t k = 0; k < bolted.t.size(); ++k) EXPECT_LT((bolted.acc[k] - on_strap.acc[k]).norm(), 1e-9) << k;
+}

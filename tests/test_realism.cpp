@@ -77,6 +77,8 @@ TEST(Realism, OffAndTempoOneAreTheIdealSensorToTheByte) {
 TEST(Realism, StaticBodyOnSoftTissueReadsGravityOnly) {
     RealismModel m = realism_preset("sisfall");
     m.device = "none";
+    m.tissue = {10, 0.5};
+    m.strap = {6, 0.25};
     const BodyImu imu = synthesize_body_imu(standing(), average_man(), parse_sensor_sets("realworld"), with(m));
     for (const ImuSignals& s : imu.signals)
         for (size_t k = 0; k < s.acc.size(); ++k) {
@@ -98,6 +100,22 @@ TEST(Realism, TiltTurnsTheBeltSensorsOutwardAxisDown) {
     m.tilt_sd_deg = 5;  // drawn per recording: seeded, and different between seeds
     EXPECT_EQ(draw_tilt_deg(m, 3), draw_tilt_deg(m, 3));
     EXPECT_NE(draw_tilt_deg(m, 3), draw_tilt_deg(m, 4));
+}
+
+TEST(Realism, TheBeltRunsAcrossTheBellyWhateverTheTilt) {
+    // SisFall's board sits on the belt at the front (x across the body, y down, z forwards): its strap runs
+    // along x; tilting it about that same tangent keeps it there.
+    const ProceduralBody body(average_man());
+    const SensorPlacement board = builtin_placement_set("sisfall").sensors[0];
+    for (const double tilt : {0.0, 15.0}) {
+        const SensorMount mount = mount_sensor(body, board, Eigen::Matrix3d::Identity(), tilt);
+        EXPECT_NEAR(std::fabs(mount.horizontal_tangent_in_sensor().x()), 1, 1e-9) << tilt;
+        EXPECT_NEAR(mount.horizontal_tangent.y(), 0, 1e-12) << tilt;
+    }
+    // On the side of the hip the belt runs forwards and backwards.
+    SensorPlacement side = board;
+    side.around_deg = 90;
+    EXPECT_GT(std::fabs(mount_sensor(body, side).horizontal_tangent.z()), 0.95);
 }
 
 TEST(Realism, TempoPlaysTheSameMotionFasterOrSlower) {
@@ -179,6 +197,7 @@ TEST(Realism, PresetsTurnOnOnlyTiltAndTheirOwnDevice) {
         EXPECT_EQ(m.name, name);
         EXPECT_EQ(m.device, name);
         EXPECT_FALSE(m.tissue.enabled()) << name;
+        EXPECT_FALSE(m.strap.enabled()) << name;
         EXPECT_EQ(m.impact_gain, 0) << name;
         EXPECT_EQ(m.tempo_sd, 0) << name;
         EXPECT_FALSE(m.roll.enabled()) << name;
@@ -219,6 +238,9 @@ TEST(Realism, ValidationNamesTheKeyOutOfRange) {
         {"impact_size_sd", [](RealismModel& m) { m.impact_spread.size_sd = 1.5; }},
         {"impact_horizontal_sd", [](RealismModel& m) { m.impact_spread.horizontal_sd = -0.1; }},
         {"roll_sigma_s", [](RealismModel& m) { m.roll.sigma_s = 0; }},
+        {"strap_hz", [](RealismModel& m) { m.strap.frequency_hz = 0.5; }},
+        {"strap_damping", [](RealismModel& m) { m.strap = {6, 0}; }},
+        {"tissue_damping", [](RealismModel& m) { m.tissue = {6, 3}; }},
     };
     for (const auto& [key, spoil] : cases) {
         RealismModel m;
@@ -235,6 +257,7 @@ TEST(Realism, JsonFormReadsBackAsTheSameModel) {
     RealismModel m = realism_preset("umafall");
     m.tilt_deg = -4.5;
     m.tissue = {9, 0.4};
+    m.strap = {5.5, 0.3};
     m.impact_gain = 0.8;
     m.impact_ms = 30;
     m.tempo_sd = 0.1;

@@ -86,7 +86,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--sensors", a.sensors, "placement sets: realworld, sisfall, umafall, hugadb, FILE.toml (comma-separated)");
     cmd->add_option("--rate", a.options.rate_hz, "output sample rate, Hz");
     cmd->add_option("--noise", a.noise, "sensor error model: none | smartphone | hugadb | sisfall | umafall [,key=value...]");
-    cmd->add_option("--realism", a.realism, "realism model: none | sisfall | umafall | hugadb | smartphone | FILE.toml (tilt, soft tissue, landings, tempo, device)");
+    cmd->add_option("--realism", a.realism, "realism model: none | sisfall | umafall | hugadb | smartphone | FILE.toml (tilt, soft tissue, strap, landings, tempo, device)");
     cmd->add_option("--mount-jitter", a.options.mount_jitter_deg, "random mounting rotation up to DEG degrees (seeded)");
     cmd->add_option("--twist-smoothing", a.options.twist_smoothing_frames, "Gaussian smoothing of the segment twist over time, sigma in frames");
     cmd->add_option("--seed", a.options.seed, "seed of mounting errors, realism draws and noise");

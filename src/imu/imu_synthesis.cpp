@@ -54,6 +54,10 @@ void synthesize_attached(const CubicSpline& ps, const CubicSpline& qs, double ra
         alpha[i] = b > a ? Eigen::Vector3d((omega[b] - omega[a]) / (static_cast<double>(b - a) * dt)) : Eigen::Vector3d::Zero();
     }
     const SpringMassResponse shift = spring_mass_response(acc, dt, dyn.tissue), turn = spring_mass_response(alpha, dt, dyn.tissue);
+    std::vector<Eigen::Vector3d> along_strap(dyn.strap_enabled() ? n : 0);
+    for (size_t i = 0; i < along_strap.size(); ++i)
+        along_strap[i] = dyn.strap_axis * dyn.strap_axis.dot(rot[i].conjugate() * (acc[i] + shift.acceleration[i]));
+    const SpringMassResponse slide = spring_mass_response(along_strap, dt, dyn.strap);  // sensor frame
     const size_t samples = static_cast<size_t>(std::floor(ps.duration() * rate_hz + 1e-9)) + 1;
     const long half = over / 2;
     for (size_t k = 0; k < samples; ++k) {
@@ -62,7 +66,8 @@ void synthesize_attached(const CubicSpline& ps, const CubicSpline& qs, double ra
         int count = 0;
         for (long i = std::max(0L, centre - half); i <= std::min(static_cast<long>(n) - 1, centre + half); ++i, ++count) {
             const size_t s = static_cast<size_t>(i);
-            const Eigen::Vector3d force = specific_force(rot[s], acc[s] + shift.acceleration[s]);
+            Eigen::Vector3d force = specific_force(rot[s], acc[s] + shift.acceleration[s]);
+            if (!along_strap.empty()) force += slide.acceleration[s];
             f += force - turn.displacement[s].cross(force);
             w += omega[s] + turn.velocity[s];
         }

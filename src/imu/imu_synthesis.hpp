@@ -12,7 +12,11 @@
 // at least 1 kHz (a multiple of rate_hz); landing pulses are added to the body point's acceleration, the
 // attachment's spring-mass is run on that acceleration (translation) and on the segment's angular acceleration
 // in the sensor frame (rotation, small angles: the wobble angle d turns the specific force by -d x a and adds d'
-// to the gyroscope); each output sample is the mean of the internal samples within half an output period of
+// to the gyroscope); a strap mode (a device that slides along its belt or strap) is a second spring-mass, run on
+// the component along one sensor axis of the acceleration the first one gives, whose relative acceleration is
+// added along that axis (translation only: the measured belt board's gyroscope shows no such rocking, README
+// "Sensor realism"; the terms of the sensor frame's rotation during a ring of a few tenths of a second are left
+// out); each output sample is the mean of the internal samples within half an output period of
 // it (a box filter: a sensor's and a data set's own low-pass before decimation).
 #pragma once
 #include <Eigen/Core>
@@ -39,8 +43,11 @@ Eigen::Vector3d specific_force(const Quat& world_from_sensor, const Eigen::Vecto
 // What lies between the body point and the sensor: off (the default) = a sensor bolted to the bone.
 struct AttachmentDynamics {
     SoftTissue tissue;
-    ImpactPulses impacts;  // no landings = none
-    bool enabled() const { return tissue.enabled() || !impacts.time_s.empty(); }
+    SoftTissue strap;                                      // along strap_axis only
+    Eigen::Vector3d strap_axis = Eigen::Vector3d::Zero();  // unit, sensor frame; zero = no strap mode
+    ImpactPulses impacts;                                  // no landings = none
+    bool strap_enabled() const { return strap.enabled() && strap_axis.squaredNorm() > 0; }
+    bool enabled() const { return tissue.enabled() || strap_enabled() || !impacts.time_s.empty(); }
 };
 
 // position[f] (metres, world) and orientation[f] (world from sensor) at `fps`; at least 4 frames. Samples at

@@ -203,8 +203,9 @@ SensorMount mount_sensor(const BodyModel& body, const SensorPlacement& placement
     m.rest_from_sensor = r * mounting_error;
     // Tilt: about up x normal, which turns the normal towards -up (rest frame: Y up).
     const Vector3d tangent = Vector3d::UnitY().cross(surface.normal);
-    if (tilt_deg != 0 && tangent.norm() > 0.1)
-        m.rest_from_sensor = Eigen::AngleAxisd(tilt_deg * M_PI / 180, tangent.normalized()).toRotationMatrix() * m.rest_from_sensor;
+    if (tangent.norm() > 0.1) m.horizontal_tangent = tangent.normalized();
+    if (tilt_deg != 0 && m.horizontal_tangent.squaredNorm() > 0)
+        m.rest_from_sensor = Eigen::AngleAxisd(tilt_deg * M_PI / 180, m.horizontal_tangent).toRotationMatrix() * m.rest_from_sensor;
     return m;
 }
 

@@ -62,6 +62,10 @@ struct SensorMount {
     BodyAnchor anchor;
     Eigen::Matrix3d rest_from_sensor;
     Eigen::Vector3d skin_normal = Eigen::Vector3d::UnitZ();  // outward, rest body coordinates
+    // The skin's horizontal tangent (up x normal, unit, rest body coordinates): the direction a belt or a strap
+    // around the segment runs, and the axis of the tilt; zero where the skin faces up or down.
+    Eigen::Vector3d horizontal_tangent = Eigen::Vector3d::Zero();
+    Eigen::Vector3d horizontal_tangent_in_sensor() const { return rest_from_sensor.transpose() * horizontal_tangent; }
 };
 SensorMount mount_sensor(const BodyModel& body, const SensorPlacement& placement,
                          const Eigen::Matrix3d& mounting_error = Eigen::Matrix3d::Identity(), double tilt_deg = 0);

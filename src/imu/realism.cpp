@@ -17,6 +17,8 @@ void read_keys(TomlSection& t, RealismModel& m) {
     t.read("tilt_sd_deg", m.tilt_sd_deg);
     t.read("tissue_hz", m.tissue.frequency_hz);
     t.read("tissue_damping", m.tissue.damping_ratio);
+    t.read("strap_hz", m.strap.frequency_hz);
+    t.read("strap_damping", m.strap.damping_ratio);
     t.read("impact_gain", m.impact_gain);
     t.read("impact_ms", m.impact_ms);
     t.read("impact_size_sd", m.impact_spread.size_sd);
@@ -36,6 +38,7 @@ void RealismModel::validate(const std::string& source) const {
     check("tilt_deg", tilt_deg, -90, 90);
     check("tilt_sd_deg", tilt_sd_deg, 0, 45);
     tissue.validate(source);
+    strap.validate(source, "strap");
     check("impact_gain", impact_gain, 0, 10);
     check("impact_ms", impact_ms, 5, 200);
     check("impact_size_sd", impact_spread.size_sd, 0, 1);
@@ -48,7 +51,8 @@ void RealismModel::validate(const std::string& source) const {
 
 nlohmann::json RealismModel::to_json() const {
     return {{"name", name}, {"tilt_deg", tilt_deg}, {"tilt_sd_deg", tilt_sd_deg}, {"tissue_hz", tissue.frequency_hz},
-            {"tissue_damping", tissue.damping_ratio}, {"impact_gain", impact_gain}, {"impact_ms", impact_ms},
+            {"tissue_damping", tissue.damping_ratio}, {"strap_hz", strap.frequency_hz}, {"strap_damping", strap.damping_ratio},
+            {"impact_gain", impact_gain}, {"impact_ms", impact_ms},
             {"impact_size_sd", impact_spread.size_sd}, {"impact_horizontal_sd", impact_spread.horizontal_sd},
             {"tempo_sd", tempo_sd}, {"roll_gain", roll.gain}, {"roll_sigma_s", roll.sigma_s}, {"device", device}};
 }

@@ -7,6 +7,10 @@
 //                          where the skin faces up or down.
 //   tissue_hz, tissue_damping
 //                          the attachment's spring-mass (soft_tissue.hpp); 0 Hz = bolted to the bone
+//   strap_hz, strap_damping
+//                          the device sliding along its belt or strap (the skin's horizontal tangent at the
+//                          sensor: across the belly for a belt at the front): a spring-mass in that direction
+//                          only, on top of the soft tissue (imu_synthesis.hpp); 0 Hz = none
 //   impact_gain, impact_ms landing transients (heel_strike.hpp): the velocity change of a landing at the shank
 //                          (m/s; transmissibility scales it to the sensor's segment) and the duration of a
 //                          landing (ms); gain 0 = none
@@ -47,6 +51,7 @@ struct RealismModel {
     std::string name = "none";
     double tilt_deg = 0, tilt_sd_deg = 0;
     SoftTissue tissue;
+    SoftTissue strap;
     double impact_gain = 0, impact_ms = 40;
     LandingSpread impact_spread;
     double tempo_sd = 0;

@@ -20,8 +20,9 @@ struct SoftTissue {
     double frequency_hz = 0;   // natural frequency of the attachment (Hz); 0 = rigid (bolted to the bone)
     double damping_ratio = 0;  // zeta, 0 < zeta < 1 for an attachment that rings
     bool enabled() const { return frequency_hz > 0; }
-    // Throws Error naming `source` and the field: frequency 0 or 1-200 Hz, damping in (0, 2].
-    void validate(const std::string& source) const;
+    // Throws Error naming `source` and the field (`key`_hz, `key`_damping): frequency 0 or 1-200 Hz, damping in
+    // (0, 2].
+    void validate(const std::string& source, const std::string& key = "tissue") const;
 };
 
 // The relative motion of the mass for a base acceleration sampled every dt seconds (input linear between

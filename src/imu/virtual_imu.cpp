@@ -102,6 +102,8 @@ BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& spec, c
         apply_device_roll(realism.roll, out.mounts.back(), timed.fps, &q);
         AttachmentDynamics dynamics;
         dynamics.tissue = realism.tissue;
+        dynamics.strap = realism.strap;
+        dynamics.strap_axis = out.mounts.back().horizontal_tangent_in_sensor();
         if (!landings.empty())
             dynamics.impacts = impact_pulses(landings, realism.impact_gain, realism.impact_ms / 1000, placement.segment, timed.fps,
                                              realism.impact_spread, derived_seed(options.seed, out.body.name, placement.position, "landings"));
