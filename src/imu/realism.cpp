@@ -61,8 +61,9 @@ namespace {
 
 // The presets (realism.hpp). Only the levers that raised synthetic-only HAR on the shared SisFall subjects are
 // on (README, "Sensor realism": tilt +3.8 points, device +1.8; landings -0.7, landings with soft tissue -1.6,
-// tempo -4.2, device roll at gain 0 -3.9, landings spread -2.0 against landings alone); the others stay off
-// and a TOML file can turn them on (the calibrated landing gain: 0.8 m/s).
+// tempo -4.2, device roll at gain 0 -3.9, landings spread -2.0 against landings alone, the strap mode -1.5
+// with the sisfall preset); the others stay off and a TOML file can turn them on (the calibrated landing gain:
+// 0.8 m/s; the strap calibrated on SisFall's lateral axis: 6 Hz, damping 0.25).
 struct Preset {
     const char* name;
     double tilt_deg, tilt_sd_deg;
