@@ -25,7 +25,8 @@ mkdir -p "$out/levers"
 # from the wobbling-mass literature (imu/soft_tissue.hpp), the strap mode calibrated on SisFall walking's lateral
 # spectrum (6 Hz, damping 0.25: the real belt board's hump at 4-7 Hz, README "The belt's strap"), tempo 8 %, device roll gain 0 (imu/device_roll.hpp), landings spread
 # in size (log sd 0.3) and direction (horizontal sd 0.8 of the vertical; heel_strike.hpp) when "spread" is on. Variants name levers joined by "+";
-# "none" is no realism model, "all" every lever, "preset" the preset SET by name.
+# "none" is no realism model, "all" every lever, "preset" the preset SET by name. (The strap joined "all" on
+# 2026-12-03: results folders older than that hold "all" without it.)
 declare -A on_off=(
   [tilt]=$'# preset tilt\n|tilt_deg = 0\ntilt_sd_deg = 0'
   [landings]="impact_gain = $([ "$set" = sisfall ] && echo 0.8 || echo 1.0)|impact_gain = 0"
