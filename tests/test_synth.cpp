@@ -209,6 +209,30 @@ TEST(Synth, RecordsTheRealismModelAndEachRecordingsDraws) {
         }
     }
     EXPECT_GT(recordings, 0u);
+    // A folder recorded before a lever existed (its keys absent) resumes while that lever stays off...
+    const std::string settings_path = out + "/synth.json";
+    nlohmann::json settings = nlohmann::json::parse(read_file_text(settings_path));
+    settings["realism"].erase("strap_hz");
+    settings["realism"].erase("strap_damping");
+    std::ofstream(settings_path) << settings.dump(1);
+    EXPECT_NO_THROW(run_synth(o));
+    // ...and is refused when this run turns it on: absent reads as off.
+    const std::string strap = out + "_strap.toml";
+    std::ofstream(strap) << "base = \"sisfall\"\nstrap_hz = 6\nstrap_damping = 0.25\n";
+    const std::string strap_out = test::scratch_dir("synth_realism_strap");
+    o.out = strap_out;
+    o.realism = strap;
+    run_synth(o);
+    settings = nlohmann::json::parse(read_file_text(strap_out + "/synth.json"));
+    settings["realism"].erase("strap_hz");
+    settings["realism"].erase("strap_damping");
+    std::ofstream(strap_out + "/synth.json") << settings.dump(1);
+    try {
+        run_synth(o);
+        FAIL() << "a strap asked for, none recorded: expected an error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("realism"), std::string::npos) << e.what();
+    }
 }
 
 TEST(Synth, RetrievalGivesCapturedMotionThatPassesTheFilter) {

@@ -230,9 +230,18 @@ void check_or_write_settings(const std::string& out, const json& settings) {
     const std::string path = out + "/synth.json";
     if (fs::exists(path)) {
         const json before = json::parse(read_file_text(path));
-        for (const auto& [key, value] : settings.items())
-            if (before.value(key, json()) != value)
-                throw Error(path, key, value.dump() + " as this run asks (a folder holds one synthesis; use another --out)", before.value(key, json()).dump());
+        for (const auto& [key, value] : settings.items()) {
+            json recorded = before.value(key, json());
+            if (key == "realism" && recorded.is_object()) {
+                // A lever added since the folder was made is absent from its record: absent reads as off (the
+                // model's default), so such a folder stays valid for a run that leaves the new lever off.
+                json filled = RealismModel().to_json();
+                filled.update(recorded);
+                recorded = filled;
+            }
+            if (recorded != value)
+                throw Error(path, key, value.dump() + " as this run asks (a folder holds one synthesis; use another --out)", recorded.dump());
+        }
         for (const auto& [key, value] : before.items())  // a switch on then, off now (realism, capture_rate)
             if (!settings.contains(key))
                 throw Error(path, key, "absent (off) as this run asks (a folder holds one synthesis; use another --out)", value.dump());
