@@ -106,7 +106,7 @@ Motion shaken(const Vector3d& dir, double amplitude, double hz, double seconds) 
     return m;
 }
 
-// Amplitude of the f Hz sinusoid in x(t) over samples [from, end) (least squares on sin and cos).
+// Amplitude of the hz sinusoid in the accelerometer's `axis` over samples [from, end) (least squares on sin and cos).
 double amplitude_at(const ImuSignals& s, int axis, double hz, size_t from) {
     double ss = 0, cc = 0, sc = 0, xs = 0, xc = 0;
     for (size_t k = from; k < s.t.size(); ++k) {

@@ -226,19 +226,22 @@ json settings_json(const SynthOptions& o, const std::vector<Prompt>& prompts, co
     return s;
 }
 
+// A setting as a folder's synth.json recorded it. A realism lever added since the folder was made is absent from
+// its record: absent reads as off (the model's default), so the folder stays valid while the new lever stays off.
+json recorded_setting(const json& before, const std::string& key) {
+    json recorded = before.value(key, json());
+    if (key != "realism" || !recorded.is_object()) return recorded;
+    json filled = RealismModel().to_json();
+    filled.update(recorded);
+    return filled;
+}
+
 void check_or_write_settings(const std::string& out, const json& settings) {
     const std::string path = out + "/synth.json";
     if (fs::exists(path)) {
         const json before = json::parse(read_file_text(path));
         for (const auto& [key, value] : settings.items()) {
-            json recorded = before.value(key, json());
-            if (key == "realism" && recorded.is_object()) {
-                // A lever added since the folder was made is absent from its record: absent reads as off (the
-                // model's default), so such a folder stays valid for a run that leaves the new lever off.
-                json filled = RealismModel().to_json();
-                filled.update(recorded);
-                recorded = filled;
-            }
+            const json recorded = recorded_setting(before, key);
             if (recorded != value)
                 throw Error(path, key, value.dump() + " as this run asks (a folder holds one synthesis; use another --out)", recorded.dump());
         }
