@@ -23,15 +23,17 @@ mkdir -p "$out/levers"
 # device take the preset's values (src/imu/realism.cpp); the levers the presets leave off take the values they
 # were measured with: landings calibrated on SisFall walking (share of power above 3 Hz 0.30 -> 0.47), soft tissue
 # from the wobbling-mass literature (imu/soft_tissue.hpp), the strap mode calibrated on SisFall walking's lateral
-# spectrum (6 Hz, damping 0.25: the real belt board's hump at 4-7 Hz, README "The belt's strap"), tempo 8 %, device roll gain 0 (imu/device_roll.hpp), landings spread
+# spectrum (6 Hz, damping 0.25: the real belt board's hump at 4-7 Hz, README "The belt's strap"), tempo 8 %, device roll gain 0 (imu/device_roll.hpp), the trunk's pitch and yaw
+# sway at 0.35 and 0.6 (imu/trunk_sway.hpp: calibrated on SisFall walking's gyroscope), landings spread
 # in size (log sd 0.3) and direction (horizontal sd 0.8 of the vertical; heel_strike.hpp) when "spread" is on. Variants name levers joined by "+";
-# "none" is no realism model, "all" every lever, "preset" the preset SET by name. (The strap joined "all" on
-# 2026-12-03: results folders older than that hold "all" without it.)
+# "none" is no realism model, "all" every lever, "preset" the preset SET by name. (The strap and the trunk sway
+# joined "all" on 2026-12-03: results folders older than that hold "all" without them.)
 declare -A on_off=(
   [tilt]=$'# preset tilt\n|tilt_deg = 0\ntilt_sd_deg = 0'
   [landings]="impact_gain = $([ "$set" = sisfall ] && echo 0.8 || echo 1.0)|impact_gain = 0"
   [tissue]=$'tissue_hz = 10\ntissue_damping = '"$([ "$set" = sisfall ] && echo 0.5 || echo 0.3)"'|tissue_hz = 0'
   [strap]=$'strap_hz = 6\nstrap_damping = 0.25|strap_hz = 0'
+  [trunk]=$'trunk_pitch_gain = 0.35\ntrunk_yaw_gain = 0.6|trunk_pitch_gain = 1\ntrunk_yaw_gain = 1'
   [tempo]='tempo_sd = 0.08|tempo_sd = 0'
   [roll]="roll_gain = ${ROLL_GAIN:-0}|roll_gain = 1"
   [spread]=$'impact_size_sd = 0.3\nimpact_horizontal_sd = 0.8|impact_size_sd = 0\nimpact_horizontal_sd = 0'
@@ -41,7 +43,7 @@ variant_file() {  # VARIANT -> path of its TOML
   local file="$out/levers/$1.toml" lever pair
   {
     echo "base = \"$set\""
-    for lever in tilt landings spread tissue strap tempo roll device; do
+    for lever in tilt landings spread tissue strap trunk tempo roll device; do
       pair=${on_off[$lever]}
       case "+$1+" in *"+$lever+"*|+all+) echo "${pair%%|*}" ;; *) echo "${pair#*|}" ;; esac
     done

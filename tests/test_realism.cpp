@@ -118,6 +118,52 @@ TEST(Realism, TheBeltRunsAcrossTheBellyWhateverTheTilt) {
     EXPECT_GT(std::fabs(mount_sensor(body, side).horizontal_tangent.z()), 0.95);
 }
 
+namespace {
+// The standing skeleton turning about the vertical through its pelvis, 0.2 rad at 1 Hz, 6 s at 20 fps: the
+// pelvis yaws as a whole and the legs and trunk go with it.
+JointSequence yawing() {
+    const ProceduralBody body(average_man());
+    JointSequence s(120, kNumJoints, 20);
+    const Vector3d pivot = body.rest_joints()[pelvis];
+    for (int f = 0; f < s.num_frames; ++f) {
+        const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.2 * std::sin(2 * M_PI * f / 20.0), Vector3d::UnitY()).toRotationMatrix();
+        for (int j = 0; j < kNumJoints; ++j) s.at(f, j) = pivot + turn * (body.rest_joints()[j] - pivot);
+    }
+    return s;
+}
+
+// Amplitude of the 1-Hz sine in one axis of a 50 Hz signal over 3 s from 1.5 s.
+double one_hertz_amplitude(const std::vector<Vector3d>& x, int axis) {
+    double c = 0, s = 0;
+    for (size_t k = 75; k < 225; ++k) {
+        c += x[k][axis] * std::cos(2 * M_PI * static_cast<double>(k) / 50);
+        s += x[k][axis] * std::sin(2 * M_PI * static_cast<double>(k) / 50);
+    }
+    return 2 * std::hypot(c, s) / 150;
+}
+}  // namespace
+
+TEST(Realism, TrunkSwayTurnsAndMovesTheWaistTagLessAndLeavesTheAnkleAlone) {
+    // UMAFall's tags: ankle (not on the trunk), waist (pelvis, x up, z out of the belly), chest, wrist.
+    const std::vector<SensorPlacement> sensors = parse_sensor_sets("umafall");
+    const BodyImu ideal = synthesize_body_imu(yawing(), average_man(), sensors, {});
+    RealismModel m;
+    m.trunk.yaw_gain = 0.5;
+    const BodyImu swayed = synthesize_body_imu(yawing(), average_man(), sensors, with(m));
+    // The waist tag keeps 0.5 + 0.5 x 0.0072 (what the 0.5 s slow part passes at 1 Hz) of the yaw rate about its
+    // x axis (2 pi 0.2 = 1.26 rad/s as bolted), and of its tangential acceleration across the belly (y): the
+    // lever arm turns with it.
+    const double kept = 0.5 + 0.5 * std::exp(-std::pow(2 * M_PI * 0.5, 2) / 2);
+    EXPECT_NEAR(one_hertz_amplitude(ideal.signals[1].gyr, 0), 2 * M_PI * 0.2, 0.02);
+    EXPECT_NEAR(one_hertz_amplitude(swayed.signals[1].gyr, 0) / one_hertz_amplitude(ideal.signals[1].gyr, 0), kept, 0.01);
+    EXPECT_GT(one_hertz_amplitude(ideal.signals[1].acc, 1), 0.3);
+    EXPECT_NEAR(one_hertz_amplitude(swayed.signals[1].acc, 1) / one_hertz_amplitude(ideal.signals[1].acc, 1), kept, 0.02);
+    for (size_t k = 0; k < ideal.signals[0].acc.size(); ++k) {  // the ankle's track is its own
+        EXPECT_EQ(ideal.signals[0].acc[k], swayed.signals[0].acc[k]);
+        EXPECT_EQ(ideal.signals[0].gyr[k], swayed.signals[0].gyr[k]);
+    }
+}
+
 TEST(Realism, TempoPlaysTheSameMotionFasterOrSlower) {
     RealismModel m;
     m.tempo_sd = 0.2;
@@ -201,6 +247,7 @@ TEST(Realism, PresetsTurnOnOnlyTiltAndTheirOwnDevice) {
         EXPECT_EQ(m.impact_gain, 0) << name;
         EXPECT_EQ(m.tempo_sd, 0) << name;
         EXPECT_FALSE(m.roll.enabled()) << name;
+        EXPECT_FALSE(m.trunk.enabled()) << name;
         EXPECT_NO_THROW(parse_noise_model(m.device)) << name;
     }
     EXPECT_GT(realism_preset("sisfall").tilt_sd_deg, 0);
@@ -238,6 +285,9 @@ TEST(Realism, ValidationNamesTheKeyOutOfRange) {
         {"impact_size_sd", [](RealismModel& m) { m.impact_spread.size_sd = 1.5; }},
         {"impact_horizontal_sd", [](RealismModel& m) { m.impact_spread.horizontal_sd = -0.1; }},
         {"roll_sigma_s", [](RealismModel& m) { m.roll.sigma_s = 0; }},
+        {"trunk_pitch_gain", [](RealismModel& m) { m.trunk.pitch_gain = 2.5; }},
+        {"trunk_yaw_gain", [](RealismModel& m) { m.trunk.yaw_gain = -1.5; }},
+        {"trunk_sigma_s", [](RealismModel& m) { m.trunk.sigma_s = 0; }},
         {"strap_hz", [](RealismModel& m) { m.strap.frequency_hz = 0.5; }},
         {"strap_damping", [](RealismModel& m) { m.strap = {6, 0}; }},
         {"tissue_damping", [](RealismModel& m) { m.tissue = {6, 3}; }},
@@ -262,6 +312,7 @@ TEST(Realism, JsonFormReadsBackAsTheSameModel) {
     m.impact_ms = 30;
     m.tempo_sd = 0.1;
     m.roll = {-0.5, 0.8};
+    m.trunk = {0.4, 0.6, 0.7};
     m.impact_spread = {0.3, 0.7};
     const nlohmann::json j = m.to_json();
     // Every key but the name as a TOML file, from the "none" base: the same model.

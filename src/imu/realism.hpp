@@ -24,12 +24,16 @@
 //                          device roll (device_roll.hpp): the share of its segment's frontal-plane sway the device
 //                          rolls with (1 = bolted; 0 = level; negative = against it) and the Gaussian sd (s)
 //                          that separates sway from posture
+//   trunk_pitch_gain, trunk_yaw_gain, trunk_sigma_s
+//                          a device on the trunk (trunk_sway.hpp): the share of its segment's sway about the
+//                          left-right axis and the long axis the device turns with (1 = bolted; 0 = the slow part
+//                          only) and the Gaussian sd (s) that separates sway from heading and posture
 //   device                 the sensor's own errors: a sensor_noise.hpp model ("none", a preset, overrides)
 //
 // Presets (realism.cpp gives the figures each value rests on). The ablation on the shared SisFall subjects
 // (README, "Sensor realism") chose the levers: mounting tilt and the device model raised synthetic-only HAR,
-// landings (and their spread), soft tissue, the strap mode, tempo and device roll lowered it, so those are off in
-// every preset:
+// landings (and their spread), soft tissue, the strap mode, the trunk sway, tempo and device roll lowered it or
+// left it within its spread, so those are off in every preset:
 //   none        everything off: the ideal sensor of the paper's pipeline
 //   sisfall     the SisFall belt board at the waist: tilt calibrated on the shared SisFall subjects, device sisfall
 //   umafall     UMAFall's SensorTags: tilt spread calibrated on the shared UMAFall subjects, device umafall
@@ -45,6 +49,7 @@
 #include "imu/device_roll.hpp"
 #include "imu/heel_strike.hpp"
 #include "imu/soft_tissue.hpp"
+#include "imu/trunk_sway.hpp"
 
 namespace t2imu {
 
@@ -57,6 +62,7 @@ struct RealismModel {
     LandingSpread impact_spread;
     double tempo_sd = 0;
     DeviceRoll roll;
+    TrunkSway trunk;
     std::string device = "none";
 
     // Throws Error naming `source` and the key for a value out of range.
