@@ -118,9 +118,17 @@ TEST(SignalStatistics, GravityRatioSeparatesTheRollFromTheSway) {
         EXPECT_NEAR(s.at("grav_x_re"), c.re, 0.02) << c.phase;
         EXPECT_NEAR(s.at("grav_x_im"), c.im, 0.02) << c.phase;
     }
+    // The roll rate (gyro z) is 0.05 x 2 pi 0.9 = 0.283 rad/s at 0.9 Hz: sd 0.2; the yaw rate (y) 0.3 / sqrt(2).
+    const auto board = recording_signal_statistics(rolling_board(0.9, 0.05, 1.0, 0), 20);
+    EXPECT_NEAR(board.at("gyr_sway_sd_z"), 0.05 * 2 * M_PI * 0.9 / std::sqrt(2), 0.005);
+    EXPECT_NEAR(board.at("gyr_sway_sd_y"), 0.3 / std::sqrt(2), 0.005);
+    EXPECT_EQ(board.at("gyr_sway_sd_x"), 0);
+    const auto quick = recording_signal_statistics(rolling_board(4.0, 0.05, 1.0, 0), 20);  // above the sway band
+    EXPECT_LT(quick.at("gyr_sway_sd_y"), 0.01);
     // Without a gyroscope there is no gravity part to separate.
     const auto still = recording_signal_statistics(recording("walking", 0.9, 2.0, 16), 20);
     EXPECT_EQ(still.at("yaw_hz"), 0);
     EXPECT_EQ(still.at("grav_x_re"), 0);
     EXPECT_EQ(still.at("grav_x_im"), 0);
+    EXPECT_EQ(still.at("gyr_sway_sd_y"), 0);
 }

@@ -19,6 +19,7 @@ namespace {
 constexpr double kMinSeconds = 2;
 constexpr double kMinDominantHz = 0.3;
 constexpr double kHighFrequencyHz = 3;
+constexpr double kSwayLowHz = 0.5, kSwayHighHz = 3;  // gyr_sway_sd's band: stride and step, not turns or posture
 constexpr double kSwingSeconds = 0.2;  // mag_rise / mag_dip average |a| over this long: a movement's swing, not a step's spike
 
 // Means of every run of `width` consecutive values (width <= x.size()).
@@ -108,6 +109,20 @@ double peak_frequency(const std::vector<double>& p, size_t length, double rate_h
     return static_cast<double>(best) * rate_hz / static_cast<double>(length);
 }
 
+// The standard deviation (same units as x) of x's part in [lo_hz, hi_hz): Parseval on the zero-padded
+// periodogram, whose bins sum (DC excluded, the one-sided bins counted twice but Nyquist) to n x the variance.
+double band_sd(const std::vector<double>& x, double rate_hz, double lo_hz, double hi_hz) {
+    if (x.size() < 2) return 0;
+    size_t length = 0;
+    const std::vector<double> p = periodogram(x, &length);
+    double band = 0;
+    for (size_t k = 1; k < p.size(); ++k) {
+        const double f = static_cast<double>(k) * rate_hz / static_cast<double>(length);
+        if (f >= lo_hz && f < hi_hz) band += (k + 1 == p.size() ? 1 : 2) * p[k];
+    }
+    return std::sqrt(band / static_cast<double>(length) / static_cast<double>(x.size()));
+}
+
 }  // namespace
 
 double dominant_frequency_hz(const std::vector<double>& x, double rate_hz, double min_hz) {
@@ -120,7 +135,7 @@ double dominant_frequency_hz(const std::vector<double>& x, double rate_hz, doubl
 const std::vector<std::string>& signal_statistic_names() {
     static const std::vector<std::string> names = {"mean_x", "mean_y", "mean_z", "tilt_deg", "sd_x", "sd_y", "sd_z", "mag_sd",
                                                    "mag_p05", "mag_p50", "mag_p95", "mag_rise", "mag_dip", "dom_x_hz", "dom_y_hz", "dom_z_hz", "jerk_rms", "hf_share",
-                                                   "hf_sd_x", "hf_sd_y", "hf_sd_z", "yaw_hz",
+                                                   "hf_sd_x", "hf_sd_y", "hf_sd_z", "gyr_sway_sd_x", "gyr_sway_sd_y", "gyr_sway_sd_z", "yaw_hz",
                                                    "grav_x_re", "grav_x_im", "grav_y_re", "grav_y_im", "grav_z_re", "grav_z_im"};
     return names;
 }
@@ -174,6 +189,7 @@ std::map<std::string, double> recording_signal_statistics(const ImuRecording& re
     for (size_t i = 1; i < n; ++i) jerk += std::pow((magnitude[i] - magnitude[i - 1]) * rate_hz, 2);
     s["jerk_rms"] = std::sqrt(jerk / static_cast<double>(n - 1));
     s["hf_share"] = total > 0 ? high / total : 0;
+    for (int a = 0; a < 3; ++a) s[std::string("gyr_sway_sd_") + xyz[a]] = band_sd(gyr[a], rate_hz, kSwayLowHz, kSwayHighHz);
     std::vector<double> yaw_rate(n);  // turning about the up direction (rad/s)
     const Eigen::Vector3d up = mean.norm() > 0 ? Eigen::Vector3d(mean.normalized()) : Eigen::Vector3d::Zero();
     for (size_t i = 0; i < n; ++i) yaw_rate[i] = up.x() * gyr[0][i] + up.y() * gyr[1][i] + up.z() * gyr[2][i];

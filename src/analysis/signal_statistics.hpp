@@ -1,4 +1,4 @@
-// Level and texture statistics of accelerometer recordings, per activity, real beside synthetic: what a
+// Level and texture statistics of IMU recordings (the accelerometer; the gyroscope's sway and yaw), per activity, real beside synthetic: what a
 // realism model is calibrated on and judged by (the two-sample test says *that* two sets differ, these say how).
 //
 // Per recording, after resampling to `rate_hz` (har/windowing.hpp's resample_channel, as HAR sees the data),
@@ -15,6 +15,9 @@
 //   jerk_rms          root mean square of d|a|/dt by first differences (m/s^3)
 //   hf_share          share of the mean-removed acceleration power (all axes) above 3 Hz
 //   hf_sd_x/y/z       standard deviation of each axis's part above 3 Hz (m/s^2): sd x sqrt(the axis's share)
+//   gyr_sway_sd_x/y/z standard deviation of each gyroscope axis's part in 0.5-3 Hz (rad/s): the turning of
+//                     walking's stride and step, without turns and posture changes (trunk_sway.hpp's calibration);
+//                     0 without a gyroscope
 //   yaw_hz            frequency of the highest periodogram peak of the turning rate about the up direction (the
 //                     gyroscope projected on the mean's direction): walking's stride frequency; 0 without a gyroscope
 //   grav_x/y/z_re/im  at yaw_hz, each axis's gravity part over the rest (complex ratio G / K): G is what the

@@ -4,13 +4,13 @@
 // Why a lever: a belt at the waistline lies on the abdomen between the pelvis and the ribs, where the lumbar
 // spine counter-rotates against the pelvis in the transverse plane and damps its tilt in the sagittal one
 // (Crosbie, Vachalathiti & Smith 1997, Gait & Posture 5:6-12), while the pelvis segment of a capture carries
-// the full rotation of the hip line. Measured on the shared SisFall walking trials (gyroscope, median per
-// recording of the sd in 0.4-2.2 Hz; README, "The trunk's sway"): the real board turns 0.12 rad/s about its
-// lateral axis and 0.36 about the vertical one, ours on the captured pelvis 0.33 and 0.57 (preset sisfall); pitch
-// 0.35 and yaw 0.6 bring them to 0.11 and 0.34. UMAFall's waist tag turns more (0.18 and 0.49), so the gains
-// are per device.
-// Turning about a vertical axis 0.1-0.15 m behind the board, that yaw is also a lateral acceleration at the
-// stride frequency.
+// the full rotation of the hip line. Measured on the shared SisFall walking trials (`t2imu analysis signal-stats`,
+// gyr_sway_sd: median per recording of each gyroscope axis's sd in 0.5-3 Hz; README, "The trunk's sway"): the
+// real board turns 0.14 rad/s about its lateral axis and 0.38 about the vertical one, ours on the captured
+// pelvis 0.30 and 0.54 (preset sisfall); pitch 0.35 and yaw 0.6 give 0.11 and 0.32. The gain is no constant of
+// the belt: the captured running turns less than the real one (yaw 0.52 against 0.67) and UMAFall's waist tag
+// turns more than SisFall's board (walking 0.19 and 0.41 against ours 0.32 and 0.49). Turning about a vertical
+// axis 0.1-0.15 m behind the board, the yaw is also a lateral acceleration at the stride frequency.
 //
 // The edit: the segment's rotation (world from rest) R is split into its slow part S (a Gaussian low-pass of
 // the sign-continuous quaternion, sd `sigma_s`: heading, posture, lying down) and its sway W = S^T R, a
