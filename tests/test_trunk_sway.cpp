@@ -79,7 +79,9 @@ TEST(TrunkSway, KeepsHeadingAndRollAndScalesPitchAndYawSwayByTheirGains) {
         for (int j = 0; j < smpl22::kNumJoints; ++j) {
             const size_t i = static_cast<size_t>(j);
             EXPECT_EQ(after[f].joints[i], before[f].joints[i]);
-            if (j != smpl22::pelvis) EXPECT_EQ(after[f].rotation[i], before[f].rotation[i]);
+            if (j != smpl22::pelvis) {
+                EXPECT_EQ(after[f].rotation[i], before[f].rotation[i]);
+            }
         }
 }
 
