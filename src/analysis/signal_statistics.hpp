@@ -1,5 +1,6 @@
-// Level and texture statistics of IMU recordings (the accelerometer; the gyroscope's sway and yaw), per activity, real beside synthetic: what a
-// realism model is calibrated on and judged by (the two-sample test says *that* two sets differ, these say how).
+// Level and texture statistics of IMU recordings (the accelerometer; the gyroscope's sway and yaw), per
+// activity, real beside synthetic: what a realism model is calibrated on and judged by (the two-sample test
+// says *that* two sets differ, these say how).
 //
 // Per recording, after resampling to `rate_hz` (har/windowing.hpp's resample_channel, as HAR sees the data),
 // acceleration in the sensor frame (m/s^2, gravity included):

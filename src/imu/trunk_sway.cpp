@@ -17,15 +17,10 @@ bool is_trunk_segment(int segment) {
 namespace {
 
 // Gaussian low-pass of a rotation track: the sign-continuous quaternions filtered component-wise, renormalised.
-std::vector<Quat> slow_rotations(const std::vector<Quat>& q, double sigma_frames) {
+std::vector<Quat> slow_rotations(std::vector<Quat> q, double sigma_frames) {
+    qfix(q);
     TimeSeries series(static_cast<Eigen::Index>(q.size()), 4);
-    Quat previous = q[0];
-    for (size_t f = 0; f < q.size(); ++f) {
-        Quat x = q[f];
-        if (x.dot(previous) < 0) x.coeffs() = -x.coeffs();
-        series.row(static_cast<Eigen::Index>(f)) = x.coeffs().transpose();
-        previous = x;
-    }
+    for (size_t f = 0; f < q.size(); ++f) series.row(static_cast<Eigen::Index>(f)) = q[f].coeffs().transpose();
     series = gaussian_filter1d_nearest(series, sigma_frames);
     std::vector<Quat> out(q.size());
     for (size_t f = 0; f < q.size(); ++f) {

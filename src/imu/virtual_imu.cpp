@@ -98,13 +98,12 @@ BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& spec, c
         const double tilt = draw_tilt_deg(realism, derived_seed(options.seed, out.body.name, placement.position, "tilt"));
         out.mounts.push_back(mount_sensor(*body, placement, jitter, tilt));
         out.tilt_deg.push_back(tilt);
+        FittedMotion swayed;  // a trunk sensor's own copy of the frames when the trunk sway is on
         if (realism.trunk.enabled() && is_trunk_segment(placement.segment)) {
-            FittedMotion swayed = fitted;
+            swayed = fitted;
             apply_trunk_sway(realism.trunk, placement.segment, timed.fps, &swayed.frames);
-            sensor_track(*body, swayed, out.mounts.back(), &p, &q);
-        } else {
-            sensor_track(*body, fitted, out.mounts.back(), &p, &q);
         }
+        sensor_track(*body, swayed.frames.empty() ? fitted : swayed, out.mounts.back(), &p, &q);
         apply_device_roll(realism.roll, out.mounts.back(), timed.fps, &q);
         AttachmentDynamics dynamics;
         dynamics.tissue = realism.tissue;

@@ -35,5 +35,10 @@ template <size_t N> void qfix(std::vector<std::array<Quat, N>>& frames) {
         for (size_t j = 0; j < N; ++j)
             if (frames[f][j].coeffs().dot(frames[f - 1][j].coeffs()) < 0) frames[f][j].coeffs() *= -1.0;
 }
+// The same for one track of rotations.
+inline void qfix(std::vector<Quat>& track) {
+    for (size_t f = 1; f < track.size(); ++f)
+        if (track[f].coeffs().dot(track[f - 1].coeffs()) < 0) track[f].coeffs() *= -1.0;
+}
 
 }  // namespace t2imu
