@@ -113,6 +113,8 @@ std::vector<Row> rows() {
         {"DataBuildShortChunks", "data build --mocap {D} --out {D}/o --max-seconds 1", kFile, 2, "--max-seconds: expected at least 2 s", {"o"}},
         {"DataBuildTurnsWithoutDerived", "data build --mocap {D} --out {D}/o --no-derived --lying-turns", kFile, 2, "--lying-turns: expected the derived clips", {"o"}},
         // Every other command that writes checks its --out before any work too.
+        {"DomainGapOutInProc", "analysis domain-gap --real {D}/f.csv --synthetic {D}/f.csv --out /proc/x/g.json", {{"f.csv", "activity,f1\nwalking,1\n"}}, 2, "--out: /proc/x/g.json", {}},
+
         {"TsneOutInProc", "tsne --in {D}/x.csv --out /proc/x/y.csv", {{"x.csv", "a,b\n1,2\n3,4\n"}}, 2, "--out: /proc/x/y.csv", {}},
         {"ReportOutBelowFile", "report --in {D} --out {D}/file/r", kFile, 2, "--out: ", {}},
         {"FeaturesOutInProc", "features catch22 --dataset {D}/imu --out /proc/x/f.csv", imu_dataset("imu"), 2, "--out: /proc/x/f.csv", {}},
@@ -148,6 +150,15 @@ std::vector<Row> rows() {
         {"ImuSynthTwoDeviceModels", kImuSynth + "--realism sisfall --noise smartphone --out {D}/o", standing_joints("j.npy"), 2, "--noise", {"o"}},
         {"ImuSynthRealismRuns", kImuSynth + "--realism sisfall --sensors sisfall --out {D}/o", standing_joints("j.npy"), 0, "1 bodies x 1 sensors", {}},
         {"SignalStatsRateOutOfRange", "analysis signal-stats --real {D}/imu --rate 2 --out {D}/o.json", imu_dataset("imu"), 2, "--rate", {"o.json"}},
+        // Reframing (imu/reframe.hpp): sets by name, positions each set places, a source convention to start from.
+        {"DataReframeUnknownSet", "data reframe {D}/imu --from realworld --to sisfal --out {D}/o", imu_dataset("imu"), 2, "--to: set: expected realworld, sisfall", {"o"}},
+        {"DataReframeOutInProc", "data reframe {D}/imu --from realworld --to umafall --out /proc/x/o", imu_dataset("imu"), 2, "--out: /proc/x/o", {}},
+        {"DataReframePositionNotPlaced", "data reframe {D}/imu --from realworld --to sisfall --out {D}/o", imu_dataset("imu"), 1,
+         "--to: chest: expected a position the set sisfall places (waist)", {"o"}},
+        {"DataReframeSyntheticNeedsFrom", "data reframe {D}/imu --to umafall --out {D}/o", imu_dataset("imu"), 1, "dataset: expected a placement set's name", {"o"}},
+        {"DataReframeUnknownPosition", "data reframe {D}/imu --from realworld --to umafall --positions tentacle --out {D}/o", imu_dataset("imu"), 1,
+         "--positions: tentacle: expected a position the data set holds", {"o"}},
+        {"DataReframeRuns", "data reframe {D}/imu --from realworld --to umafall --out {D}/o", imu_dataset("imu"), 0, "4 recordings in the axes of umafall", {}},
         // 10: HAR names the position, the window and the damaged cell.
         {"HarUnknownPosition", "har run --train {D}/imu --test {D}/imu --positions tentacle --repeats 1 --out {D}/o.json", imu_dataset("imu"), 1,
          "--positions: tentacle: expected a position the data set holds (chest)", {"o.json"}},

@@ -6,6 +6,7 @@
 #include "analysis/domain_gap.hpp"
 #include "analysis/two_sample.hpp"
 #include "core/error.hpp"
+#include "test_util.hpp"
 
 using namespace t2imu;
 
@@ -64,4 +65,11 @@ TEST(TwoSample, DomainGapOnFeatureTables) {
     EXPECT_NEAR(gap["per_activity"]["running"]["balanced_accuracy"].get<double>(), 0.5, 0.12);
     EXPECT_EQ(gap["per_feature"][0]["feature"], "f1");  // the most different feature first
     EXPECT_GT(gap["per_feature"][0]["ks"].get<double>(), 0.4);
+    // Restricted to the class both tables share alike, the pooled test cannot tell them apart either.
+    const CsvTable a = rows_of_activities(table(0), {"running"}, "--classes"), b = rows_of_activities(table(4), {"running"}, "--classes");
+    EXPECT_EQ(a.rows.size(), 100u);
+    EXPECT_GT(gap["classifier_two_sample_test"]["balanced_accuracy"].get<double>(), 0.65);
+    EXPECT_NEAR(domain_gap(a, b)["classifier_two_sample_test"]["balanced_accuracy"].get<double>(), 0.5, 0.12);
+    EXPECT_EQ(test::error_message([&] { rows_of_activities(table(0), {"running", "lying"}, "--classes"); }),
+              "--classes: lying: expected a class t holds windows of");
 }

@@ -73,4 +73,18 @@ nlohmann::json domain_gap(const CsvTable& real, const CsvTable& synthetic, uint6
     return out;
 }
 
+CsvTable rows_of_activities(const CsvTable& table, const std::vector<std::string>& activities, const std::string& option) {
+    const size_t col = table.column("activity");
+    CsvTable kept{table.source, table.header, {}};
+    std::set<std::string> seen;
+    for (const auto& row : table.rows)
+        if (std::find(activities.begin(), activities.end(), row[col]) != activities.end()) {
+            kept.rows.push_back(row);
+            seen.insert(row[col]);
+        }
+    for (const std::string& a : activities)
+        if (!seen.count(a)) throw Error(option, a, "a class " + table.source + " holds windows of");
+    return kept;
+}
+
 }  // namespace t2imu

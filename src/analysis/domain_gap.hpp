@@ -4,11 +4,17 @@
 #pragma once
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include "core/csv.hpp"
 
 namespace t2imu {
 
 nlohmann::json domain_gap(const CsvTable& real, const CsvTable& synthetic, uint64_t seed = 0);
+
+// The rows of `table` whose activity is one of `activities`: the pooled test over the classes two data sets
+// share. Throws Error naming `option` for a class the table holds no row of.
+CsvTable rows_of_activities(const CsvTable& table, const std::vector<std::string>& activities, const std::string& option);
 
 }  // namespace t2imu

@@ -47,13 +47,21 @@ void run(const LaccArgs& a) {
 static void add_domain_gap(CLI::App& analysis) {
     auto* cmd = analysis.add_subcommand("domain-gap", "two catch22 tables (real, synthetic) -> two-sample test and per-feature distances (JSON)");
     static std::string real, synthetic, out;
+    static std::vector<std::string> classes;
     static uint64_t seed = 0;
     cmd->add_option("--real", real, "features of real windows (t2imu features catch22 --dataset)")->required()->check(CLI::ExistingFile);
-    cmd->add_option("--synthetic", synthetic, "features of synthetic windows")->required()->check(CLI::ExistingFile);
+    cmd->add_option("--synthetic", synthetic, "features of synthetic windows (or of a second real data set)")->required()->check(CLI::ExistingFile);
+    cmd->add_option("--classes", classes, "only windows of these activities, in both tables (comma-separated)")->delimiter(',');
     cmd->add_option("--seed", seed, "fold assignment seed");
     cmd->add_option("--out", out, "RESULT.json")->required();
     cmd->callback([] {
-        const nlohmann::json gap = domain_gap(read_csv(real), read_csv(synthetic), seed);
+        check_usage([] { check_output_path(out, "--out"); });
+        CsvTable r = read_csv(real), s = read_csv(synthetic);
+        if (!classes.empty()) {
+            r = rows_of_activities(r, classes, "--classes");
+            s = rows_of_activities(s, classes, "--classes");
+        }
+        const nlohmann::json gap = domain_gap(r, s, seed);
         write_file_atomic(out, gap.dump(2) + "\n");
         std::printf("%s: two-sample balanced accuracy %.3f (0.5 = indistinguishable) over %d features\n", out.c_str(),
                     gap["classifier_two_sample_test"]["balanced_accuracy"].get<double>(), gap["features"].get<int>());
