@@ -79,3 +79,22 @@ TEST(OutputPath, RemovesOnlyStalePartialsOfThisPath) {
     EXPECT_TRUE(fs::exists(other));  // another output's partial
     EXPECT_TRUE(fs::exists(odd));    // not a process id
 }
+
+TEST(OutputPath, PublishReplacesAFolderWhole) {
+    const std::string dir = test::scratch_dir("output_path_publish");
+    const std::string out = dir + "/result", partial = partial_path_for(out);
+    fs::create_directories(out);
+    std::ofstream(out + "/old.csv") << "old\n";
+    fs::create_directories(partial);
+    std::ofstream(partial + "/new.csv") << "new\n";
+    publish_partial(partial, out);
+    EXPECT_TRUE(fs::exists(out + "/new.csv"));
+    EXPECT_FALSE(fs::exists(out + "/old.csv"));  // replaced whole, not merged
+    EXPECT_FALSE(fs::exists(partial));
+    size_t entries = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++entries;
+    EXPECT_EQ(entries, 1u);  // the old output moved aside was removed
+    // Nothing to publish: an Error names the output, which keeps what it held.
+    EXPECT_TRUE(test::contains(test::error_message([&] { publish_partial(partial, out); }), out + ": rename"));
+    EXPECT_TRUE(fs::exists(out + "/new.csv"));
+}

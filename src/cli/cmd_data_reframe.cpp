@@ -72,10 +72,7 @@ void write_dataset(const ReframeArgs& a, const std::vector<ImuRecording>& record
     const fs::path tmp = partial_path_for(a.out);
     fs::remove_all(tmp);
     write_imu_dataset(tmp.string(), recordings, 6);
-    std::error_code ec;
-    fs::remove_all(a.out, ec);  // the previous output, replaced whole
-    if (!ec) fs::rename(tmp, a.out, ec);
-    if (ec) throw Error(a.out, "rename", "a replaceable output folder (the result is in " + tmp.string() + ")", ec.message());
+    publish_partial(tmp.string(), a.out);
 }
 
 void run(const ReframeArgs& a) {

@@ -34,7 +34,6 @@ std::string without_side(const std::string& position) {
 
 // Everything is computed before anything is written, and the folder appears complete or not at all.
 void write_outputs(const SynthArgs& a, const std::vector<BodyImu>& bodies, const nlohmann::json& meta) {
-    const fs::path out(a.out);
     remove_stale_partials(a.out);
     const fs::path tmp = partial_path_for(a.out);
     fs::remove_all(tmp);
@@ -48,10 +47,7 @@ void write_outputs(const SynthArgs& a, const std::vector<BodyImu>& bodies, const
         }
     }
     write_file_atomic((tmp / "meta.json").string(), meta.dump(2) + "\n");
-    std::error_code ec;
-    fs::remove_all(out, ec);  // the previous output, replaced whole
-    if (!ec) fs::rename(tmp, out, ec);
-    if (ec) throw Error(a.out, "rename", "a replaceable output folder (the result is in " + tmp.string() + ")", ec.message());
+    publish_partial(tmp.string(), a.out);
 }
 
 void run(const SynthArgs& a) {

@@ -64,6 +64,21 @@ std::string partial_path_for(const std::string& path) {
     return normalised(path).string() + ".partial-" + std::to_string(::getpid());
 }
 
+void publish_partial(const std::string& partial, const std::string& path) {
+    const std::string old = normalised(path).string() + ".old-" + std::to_string(::getpid());
+    std::error_code ec;
+    fs::remove_all(old, ec);
+    const bool replacing = fs::exists(path);
+    if (replacing) fs::rename(path, old, ec);
+    if (!ec) fs::rename(partial, path, ec);
+    if (ec) {
+        std::error_code ignored;
+        if (replacing && !fs::exists(path)) fs::rename(old, path, ignored);
+        throw Error(path, "rename", "a replaceable output folder (the result is in " + partial + ")", ec.message());
+    }
+    fs::remove_all(old, ec);
+}
+
 void remove_stale_partials(const std::string& path) {
     const fs::path target = normalised(path);
     const std::string prefix = target.filename().string() + ".partial-";

@@ -19,5 +19,9 @@ void make_directories(const std::string& path, const std::string& field);
 void remove_stale_partials(const std::string& path);
 // The folder a run of this process builds before renaming it onto `path`.
 std::string partial_path_for(const std::string& path);
+// Puts the finished folder `partial` in the place of `path`, replacing a previous output whole: the old one is
+// moved aside first and removed last, so `path` holds either the old result or the new one, never a mix. An
+// Error names `path` and where the result is when a rename fails (the old output is put back).
+void publish_partial(const std::string& partial, const std::string& path);
 
 }  // namespace t2imu

@@ -7,7 +7,6 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
-#include <unistd.h>
 
 #include "core/atomic_file.hpp"
 #include "core/csv.hpp"
@@ -187,10 +186,7 @@ BuildSummary build_dataset(const BuildOptions& o) {
     const std::string tmp = partial_path_for(o.out_dir);
     try {
         BuildSummary s = build_into(o, tmp);
-        const std::string old = o.out_dir + ".old-" + std::to_string(getpid());
-        if (fs::exists(o.out_dir)) fs::rename(o.out_dir, old);
-        fs::rename(tmp, o.out_dir);
-        fs::remove_all(old);
+        publish_partial(tmp, o.out_dir);
         return s;
     } catch (...) {
         std::error_code ignored;
