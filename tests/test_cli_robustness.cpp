@@ -113,6 +113,7 @@ std::vector<Row> rows() {
         {"DataBuildShortChunks", "data build --mocap {D} --out {D}/o --max-seconds 1", kFile, 2, "--max-seconds: expected at least 2 s", {"o"}},
         {"DataBuildTurnsWithoutDerived", "data build --mocap {D} --out {D}/o --no-derived --lying-turns", kFile, 2, "--lying-turns: expected the derived clips", {"o"}},
         // Every other command that writes checks its --out before any work too.
+        {"ImportImuOutInProc", "data import-imu --format sisfall {D} --out /proc/x/o", kFile, 2, "--out: /proc/x/o", {}},
         {"DomainGapOutInProc", "analysis domain-gap --real {D}/f.csv --synthetic {D}/f.csv --out /proc/x/g.json", {{"f.csv", "activity,f1\nwalking,1\n"}}, 2, "--out: /proc/x/g.json", {}},
 
         {"TsneOutInProc", "tsne --in {D}/x.csv --out /proc/x/y.csv", {{"x.csv", "a,b\n1,2\n3,4\n"}}, 2, "--out: /proc/x/y.csv", {}},

@@ -2,6 +2,8 @@
 #include <cstdio>
 
 #include "cli/command.hpp"
+#include "cli/usage.hpp"
+#include "core/output_path.hpp"
 #include "har/datasets/hugadb.hpp"
 #include "imu/imu_dataset.hpp"
 #include "har/datasets/realworld.hpp"
@@ -18,12 +20,16 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("input", in, "folder of the release files")->required()->check(CLI::ExistingDirectory);
     cmd->add_option("--out", out, "output dataset folder")->required();
     cmd->callback([] {
+        check_usage([] { check_output_path(out, "--out"); });
         std::vector<std::string> skipped;
         const std::vector<ImuRecording> recordings = format == "hugadb"    ? import_hugadb(in)
                                                      : format == "sisfall" ? import_sisfall(in, &skipped)
                                                      : format == "realworld" ? import_realworld(in, &skipped)
                                                                            : import_umafall(in, &skipped);
-        write_imu_dataset(out, recordings);
+        remove_stale_partials(out);
+        const std::string partial = partial_path_for(out);
+        write_imu_dataset(partial, recordings);
+        publish_partial(partial, out);  // the folder appears whole or not at all
         std::printf("%s: %zu recordings, %zu files skipped\n", out.c_str(), recordings.size(), skipped.size());
         for (const std::string& s : skipped) std::printf("skipped: %s\n", s.c_str());
     });
