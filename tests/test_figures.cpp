@@ -18,7 +18,6 @@ using namespace t2imu;
 namespace fs = std::filesystem;
 
 namespace {
-bool gnuplot_missing() { return std::system("gnuplot --version > /dev/null 2>&1") != 0; }
 
 // Captures every script sent to gnuplot into `<dir>/script.gp` while it still draws.
 struct Capture {
@@ -39,7 +38,7 @@ CsvTable table(const std::string& text) { return parse_csv(text, "test.csv"); }
 }  // namespace
 
 TEST(Figures, ConfusionRowsAreNormalisedToRecall) {
-    if (gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
+    if (test::gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
     const Capture c("figures_confusion");
     // Rows are true classes: 30 + 10 -> 0.75, 0.25; 14 + 26 -> 0.35, 0.65; an empty row stays 0.
     const nlohmann::json result = {{"classes", {"running", "walking", "sitting"}}, {"confusion", {{30, 10, 0}, {14, 26, 0}, {0, 0, 0}}}};
@@ -51,7 +50,7 @@ TEST(Figures, ConfusionRowsAreNormalisedToRecall) {
 }
 
 TEST(Figures, BalancedAccuracyInPercent) {
-    if (gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
+    if (test::gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
     const Capture c("figures_accuracy");
     const nlohmann::json a = {{"balanced_accuracy", {{"mean", 0.6}, {"sd", 0.05}}}};
     const nlohmann::json b = {{"balanced_accuracy", {{"mean", 0.425}, {"sd", 0.0}}}};
@@ -61,7 +60,7 @@ TEST(Figures, BalancedAccuracyInPercent) {
 }
 
 TEST(Figures, LaccBarsAndARangeThatHoldsZero) {
-    if (gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
+    if (test::gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
     const Capture c("figures_lacc");
     // Changes -20 and -17.06: the range spans [-20, 0] padded by 10 % of 20: [-22:2]; aggregates coloured 2.
     plot_lacc_change(table("group,samples,change_percent\nRunning,10,-20\nall,14,-17.06\n"), c.dir + "/lacc.png");
@@ -74,7 +73,7 @@ TEST(Figures, LaccBarsAndARangeThatHoldsZero) {
 }
 
 TEST(Figures, TsneGroupsByColourAndFilters) {
-    if (gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
+    if (test::gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
     const Capture c("figures_tsne");
     const CsvTable t = table("source,activity,tsne_x,tsne_y\nreal,running,1,2\nsynthetic,walking,3,4\nsynthetic,running,5,6\nreal,walking,7,8\n");
     plot_tsne(t, "source", c.dir + "/tsne.png", "t-SNE", "activity", {"running"});
@@ -90,7 +89,7 @@ TEST(Figures, TsneGroupsByColourAndFilters) {
 }
 
 TEST(Figures, SignalStatsMediansEitherSideOfTheTick) {
-    if (gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
+    if (test::gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
     const Capture c("figures_stats");
     // Walking: synthetic sd 1 and 3 at 2 Hz (median 2, 2), real sd 2 at 1.75 Hz; with real data synthetic sits at
     // x = i - 0.2 and real at i + 0.2. Running: synthetic only.
@@ -110,7 +109,7 @@ TEST(Figures, SignalStatsMediansEitherSideOfTheTick) {
 }
 
 TEST(Figures, ImuTraceColumnsInOrder) {
-    if (gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
+    if (test::gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
     const Capture c("figures_trace");
     // The CSV's columns in another order: the data block is t, acc x y z, gyr x y z.
     plot_imu_trace(table("gyr_z,gyr_y,gyr_x,acc_z,acc_y,acc_x,t\n6,5,4,3,2,1,0\n16,15,14,13,12,11,0.02\n"), c.dir + "/trace.png", "trace");

@@ -15,7 +15,6 @@ using namespace t2imu;
 namespace fs = std::filesystem;
 
 namespace {
-bool gnuplot_missing() { return std::system("gnuplot --version > /dev/null 2>&1") != 0; }
 
 // Width and height from a PNG's IHDR chunk (big-endian at bytes 16..23), after checking the signature.
 std::pair<uint32_t, uint32_t> png_size(const std::string& path) {
@@ -43,7 +42,7 @@ TEST(Gnuplot, LabelsAreQuotedAndEscaped) {
 }
 
 TEST(Gnuplot, RendersAPngOfTheRequestedSizeFromInlineData) {
-    if (gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
+    if (test::gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
     const std::string dir = test::scratch_dir("gnuplot_render");
     const GnuplotProgram capture("tee '" + dir + "/script.gp' | gnuplot");
     render_png(dir + "/points.png", {{"pts", {{"1", "2"}, {"3", "4"}, {"5", "\"a b\""}}}},
@@ -59,7 +58,7 @@ TEST(Gnuplot, RendersAPngOfTheRequestedSizeFromInlineData) {
 }
 
 TEST(Gnuplot, FailuresAreRefusedNamingThePngAndLeaveNothing) {
-    if (gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
+    if (test::gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
     const std::string dir = test::scratch_dir("gnuplot_fail");
     try {
         render_png(dir + "/bad.png", {}, "plot $nothing using 1:2");  // an undefined data block

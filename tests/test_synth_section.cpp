@@ -19,7 +19,6 @@ using namespace t2imu;
 namespace fs = std::filesystem;
 
 namespace {
-bool gnuplot_missing() { return std::system("gnuplot --version > /dev/null 2>&1") != 0; }
 size_t occurrences(const std::string& s, const std::string& part) {
     size_t n = 0;
     for (size_t p = s.find(part); p != std::string::npos; p = s.find(part, p + 1)) ++n;
@@ -58,7 +57,7 @@ TEST(SynthSection, CountsAndKeptMotionsWithoutAManifest) {
 }
 
 TEST(SynthSection, SignalStatisticsBesideTheRealSet) {
-    if (gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
+    if (test::gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
     const std::string dir = test::scratch_dir("synth_section_stats"), synth = dir + "/synth", real = dir + "/real";
     test::write_synth_fixture(synth);
     test::write_real_fixture(real);
@@ -80,7 +79,7 @@ TEST(SynthSection, SignalStatisticsBesideTheRealSet) {
 }
 
 TEST(SynthSection, WithoutRealDataOnlySyntheticColumns) {
-    if (gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
+    if (test::gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
     const std::string dir = test::scratch_dir("synth_section_alone"), synth = dir + "/synth";
     test::write_synth_fixture(synth);
     Page page;

@@ -19,6 +19,8 @@ namespace fs = std::filesystem;
 
 std::string source_dir() { return T2IMU_SOURCE_DIR; }
 
+bool gnuplot_missing() { return std::system("gnuplot --version > /dev/null 2>&1") != 0; }
+
 std::string shared_data_dir() {
     if (const char* env = std::getenv("T2IMU_SHARED_DATA")) return fs::is_directory(env) ? env : "";
     const fs::path p = fs::path(T2IMU_SOURCE_DIR).parent_path() / "shared" / "data";

@@ -37,6 +37,9 @@ CliResult run_cli(const std::string& args);
 
 std::string source_dir();
 
+// Whether gnuplot cannot be run (figure tests skip then; scripts/setup.sh installs gnuplot-nox).
+bool gnuplot_missing();
+
 // Whether `text` holds `part` (messages, pages, tables).
 inline bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
