@@ -29,6 +29,9 @@
 //                          left-right axis and the long axis the device turns with (1 = bolted; 0 = the slow part
 //                          only) and the Gaussian sd (s) that separates sway from heading and posture
 //   device                 the sensor's own errors: a sensor_noise.hpp model ("none", a preset, overrides)
+//   device_rate_hz         the device's own sample rate (device_rate.hpp): the sensor is sampled at it, what lies
+//                          above its Nyquist frequency folding into the band, and the recording is resampled to
+//                          the output rate; 0 = sampled at the output rate
 //
 // Presets (realism.cpp gives the figures each value rests on). The ablation on the shared SisFall subjects
 // (README, "Sensor realism") chose the levers: mounting tilt and the device model raised synthetic-only HAR,
@@ -64,6 +67,7 @@ struct RealismModel {
     DeviceRoll roll;
     TrunkSway trunk;
     std::string device = "none";
+    double device_rate_hz = 0;
 
     // Throws Error naming `source` and the key for a value out of range.
     void validate(const std::string& source) const;

@@ -5,6 +5,7 @@
 
 #include "body/procedural_body.hpp"
 #include "core/error.hpp"
+#include "imu/device_rate.hpp"
 
 namespace t2imu {
 
@@ -65,6 +66,8 @@ void VirtualImuOptions::validate() const {
     if (!(twist_smoothing_frames >= 0 && std::isfinite(twist_smoothing_frames)))
         throw Error("--twist-smoothing", "sigma", "0 or more frames", std::to_string(twist_smoothing_frames));
     realism.validate("--realism " + realism.name);
+    if (realism.device_rate_hz > 0 && rate_hz != std::round(rate_hz))
+        throw Error("--rate", "rate", "a whole number of Hz with a realism model's device_rate_hz", std::to_string(rate_hz));
     if (noise.enabled() && realism.device != "none")
         throw Error("--noise", "model", "--noise none with --realism " + realism.name + " (its device model is " + realism.device + ")", noise.name);
 }
@@ -112,9 +115,10 @@ BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& spec, c
         if (!landings.empty())
             dynamics.impacts = impact_pulses(landings, realism.impact_gain, realism.impact_ms / 1000, placement.segment, timed.fps,
                                              realism.impact_spread, derived_seed(options.seed, out.body.name, placement.position, "landings"));
-        ImuSignals s = synthesize_imu(p, q, timed.fps, options.rate_hz, dynamics);
+        const double sample_rate = realism.device_rate_hz > 0 ? realism.device_rate_hz : options.rate_hz;
+        ImuSignals s = synthesize_imu(p, q, timed.fps, sample_rate, dynamics);
         apply_sensor_noise(device, derived_seed(options.seed, out.body.name, placement.position, "noise"), &s);
-        out.signals.push_back(std::move(s));
+        out.signals.push_back(resample_imu_signals(s, options.rate_hz));
     }
     return out;
 }
