@@ -25,7 +25,9 @@ mkdir -p "$out/levers"
 # from the wobbling-mass literature (imu/soft_tissue.hpp), the strap mode calibrated on SisFall walking's lateral
 # spectrum (6 Hz, damping 0.25: the real belt board's hump at 4-7 Hz, README "The belt's strap"), tempo 8 %, device roll gain 0 (imu/device_roll.hpp), the trunk's pitch and yaw
 # sway at 0.35 and 0.6 (imu/trunk_sway.hpp: calibrated on SisFall walking's gyroscope), landings spread
-# in size (log sd 0.3) and direction (horizontal sd 0.8 of the vertical; heel_strike.hpp) when "spread" is on. Variants name levers joined by "+";
+# in size (log sd 0.3) and direction (horizontal sd 0.8 of the vertical; heel_strike.hpp) when "spread" is on, the
+# device's own sample rate (imu/device_rate.hpp: UMAFall's tags log at 20 Hz, SisFall's board at 200 Hz,
+# a phone at 50 Hz) when "rate" is on. Variants name levers joined by "+";
 # "none" is no realism model, "all" every lever, "preset" the preset SET by name. (The strap and the trunk sway
 # joined "all" on 2026-12-03: results folders older than that hold "all" without them.)
 declare -A on_off=(
@@ -38,12 +40,13 @@ declare -A on_off=(
   [roll]="roll_gain = ${ROLL_GAIN:-0}|roll_gain = 1"
   [spread]=$'impact_size_sd = 0.3\nimpact_horizontal_sd = 0.8|impact_size_sd = 0\nimpact_horizontal_sd = 0'
   [device]=$'# preset device\n|device = "none"'
+  [rate]="device_rate_hz = $(case $set in umafall) echo 20 ;; sisfall) echo 200 ;; *) echo 50 ;; esac)|device_rate_hz = 0"
 )
 variant_file() {  # VARIANT -> path of its TOML
   local file="$out/levers/$1.toml" lever pair
   {
     echo "base = \"$set\""
-    for lever in tilt landings spread tissue strap trunk tempo roll device; do
+    for lever in tilt landings spread tissue strap trunk tempo roll device rate; do
       pair=${on_off[$lever]}
       case "+$1+" in *"+$lever+"*|+all+) echo "${pair%%|*}" ;; *) echo "${pair#*|}" ;; esac
     done
