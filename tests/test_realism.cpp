@@ -79,6 +79,7 @@ TEST(Realism, StaticBodyOnSoftTissueReadsGravityOnly) {
     m.device = "none";
     m.tissue = {10, 0.5};
     m.strap = {6, 0.25};
+    m.vibration.gain = 0.5;  // scaled by the motion's level: none here
     const BodyImu imu = synthesize_body_imu(standing(), average_man(), parse_sensor_sets("realworld"), with(m));
     for (const ImuSignals& s : imu.signals)
         for (size_t k = 0; k < s.acc.size(); ++k) {

@@ -29,6 +29,9 @@ void read_keys(TomlSection& t, RealismModel& m) {
     t.read("trunk_pitch_gain", m.trunk.pitch_gain);
     t.read("trunk_yaw_gain", m.trunk.yaw_gain);
     t.read("trunk_sigma_s", m.trunk.sigma_s);
+    t.read("vibration_gain", m.vibration.gain);
+    t.read("vibration_low_hz", m.vibration.low_hz);
+    t.read("vibration_high_hz", m.vibration.high_hz);
     t.read("device", m.device);
     t.read("device_rate_hz", m.device_rate_hz);
 }
@@ -53,6 +56,7 @@ void RealismModel::validate(const std::string& source) const {
     check("trunk_pitch_gain", trunk.pitch_gain, -1, 2);
     check("trunk_yaw_gain", trunk.yaw_gain, -1, 2);
     check("trunk_sigma_s", trunk.sigma_s, 0.1, 5);
+    vibration.validate(source);
     if (device_rate_hz != 0) check("device_rate_hz", device_rate_hz, 5, 2000);
     if (device_rate_hz != std::round(device_rate_hz)) throw Error(source, "device_rate_hz", "0 or a whole number of Hz", std::to_string(device_rate_hz));
     parse_noise_model(device);
@@ -65,6 +69,7 @@ nlohmann::json RealismModel::to_json() const {
             {"impact_size_sd", impact_spread.size_sd}, {"impact_horizontal_sd", impact_spread.horizontal_sd},
             {"tempo_sd", tempo_sd}, {"roll_gain", roll.gain}, {"roll_sigma_s", roll.sigma_s},
             {"trunk_pitch_gain", trunk.pitch_gain}, {"trunk_yaw_gain", trunk.yaw_gain}, {"trunk_sigma_s", trunk.sigma_s},
+            {"vibration_gain", vibration.gain}, {"vibration_low_hz", vibration.low_hz}, {"vibration_high_hz", vibration.high_hz},
             {"device", device}, {"device_rate_hz", device_rate_hz}};
 }
 

@@ -28,6 +28,9 @@
 //                          a device on the trunk (trunk_sway.hpp): the share of its segment's sway about the
 //                          left-right axis and the long axis the device turns with (1 = bolted; 0 = the slow part
 //                          only) and the Gaussian sd (s) that separates sway from heading and posture
+//   vibration_gain, vibration_low_hz, vibration_high_hz
+//                          body vibration (body_vibration.hpp): band-limited noise whose sd is gain x the
+//                          motion's local rms level, in [low_hz, high_hz]; gain 0 = none
 //   device                 the sensor's own errors: a sensor_noise.hpp model ("none", a preset, overrides)
 //   device_rate_hz         the device's own sample rate (device_rate.hpp): the sensor is sampled at it, what lies
 //                          above its Nyquist frequency folding into the band, and the recording is resampled to
@@ -49,6 +52,7 @@
 #include <string>
 #include <vector>
 
+#include "imu/body_vibration.hpp"
 #include "imu/device_roll.hpp"
 #include "imu/heel_strike.hpp"
 #include "imu/soft_tissue.hpp"
@@ -66,6 +70,7 @@ struct RealismModel {
     double tempo_sd = 0;
     DeviceRoll roll;
     TrunkSway trunk;
+    BodyVibration vibration;
     std::string device = "none";
     double device_rate_hz = 0;
 

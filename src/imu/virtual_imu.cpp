@@ -117,6 +117,7 @@ BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& spec, c
                                              realism.impact_spread, derived_seed(options.seed, out.body.name, placement.position, "landings"));
         const double sample_rate = realism.device_rate_hz > 0 ? realism.device_rate_hz : options.rate_hz;
         ImuSignals s = synthesize_imu(p, q, timed.fps, sample_rate, dynamics);
+        add_body_vibration(realism.vibration, derived_seed(options.seed, out.body.name, placement.position, "vibration"), &s);
         apply_sensor_noise(device, derived_seed(options.seed, out.body.name, placement.position, "noise"), &s);
         out.signals.push_back(resample_imu_signals(s, options.rate_hz));
     }
