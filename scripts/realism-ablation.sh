@@ -27,9 +27,10 @@ mkdir -p "$out/levers"
 # sway at 0.35 and 0.6 (imu/trunk_sway.hpp: calibrated on SisFall walking's gyroscope), landings spread
 # in size (log sd 0.3) and direction (horizontal sd 0.8 of the vertical; heel_strike.hpp) when "spread" is on, the
 # device's own sample rate (imu/device_rate.hpp: UMAFall's tags log at 20 Hz, SisFall's board at 200 Hz,
-# a phone at 50 Hz) when "rate" is on. Variants name levers joined by "+";
+# a phone at 50 Hz) when "rate" is on, body vibration at 0.15 of the motion's rms level in 5-12 Hz
+# (imu/body_vibration.hpp: calibrated on SisFall's 5-10 Hz band) when "vibration" is on. Variants name levers joined by "+";
 # "none" is no realism model, "all" every lever, "preset" the preset SET by name. (The strap and the trunk sway
-# joined "all" on 2026-12-03: results folders older than that hold "all" without them.)
+# joined "all" on 2026-12-03, body vibration on 2026-12-04: results folders older than that hold "all" without them.)
 declare -A on_off=(
   [tilt]=$'# preset tilt\n|tilt_deg = 0\ntilt_sd_deg = 0'
   [landings]="impact_gain = $([ "$set" = sisfall ] && echo 0.8 || echo 1.0)|impact_gain = 0"
@@ -40,13 +41,14 @@ declare -A on_off=(
   [roll]="roll_gain = ${ROLL_GAIN:-0}|roll_gain = 1"
   [spread]=$'impact_size_sd = 0.3\nimpact_horizontal_sd = 0.8|impact_size_sd = 0\nimpact_horizontal_sd = 0'
   [device]=$'# preset device\n|device = "none"'
+  [vibration]='vibration_gain = 0.15|vibration_gain = 0'
   [rate]="device_rate_hz = $(case $set in umafall) echo 20 ;; sisfall) echo 200 ;; *) echo 50 ;; esac)|device_rate_hz = 0"
 )
 variant_file() {  # VARIANT -> path of its TOML
   local file="$out/levers/$1.toml" lever pair
   {
     echo "base = \"$set\""
-    for lever in tilt landings spread tissue strap trunk tempo roll device rate; do
+    for lever in tilt landings spread tissue strap trunk tempo roll vibration device rate; do
       pair=${on_off[$lever]}
       case "+$1+" in *"+$lever+"*|+all+) echo "${pair%%|*}" ;; *) echo "${pair#*|}" ;; esac
     done

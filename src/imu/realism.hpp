@@ -38,8 +38,8 @@
 //
 // Presets (realism.cpp gives the figures each value rests on). The ablation on the shared SisFall subjects
 // (README, "Sensor realism") chose the levers: mounting tilt and the device model raised synthetic-only HAR,
-// landings (and their spread), soft tissue, the strap mode, the trunk sway, tempo and device roll lowered it or
-// left it within its spread, so those are off in every preset:
+// landings (and their spread), soft tissue, the strap mode, the trunk sway, body vibration, tempo and device roll
+// lowered it or left it within its spread, so those are off in every preset:
 //   none        everything off: the ideal sensor of the paper's pipeline
 //   sisfall     the SisFall belt board at the waist: tilt calibrated on the shared SisFall subjects, device sisfall
 //   umafall     UMAFall's SensorTags: tilt spread calibrated on the shared UMAFall subjects, device umafall
