@@ -3,9 +3,13 @@
 // For each body: fit the body to the joints (fitting.hpp), mount every placement on its skin
 // (placement.hpp), follow each sensor's position and orientation through the motion, and turn those into
 // accelerometer and gyroscope signals at the output rate (imu_synthesis.hpp), optionally corrupted by the
-// sensor error model (sensor_noise.hpp) and the realism model (realism.hpp: tempo, tilt, soft tissue, landing
-// transients, device). Random parts (mounting errors, tilt, tempo, noise) are seeded per body (and sensor)
-// from one seed, so the output does not depend on which other bodies or sensors were asked for.
+// sensor error model (sensor_noise.hpp) and the realism model (realism.hpp). The realism chain, in order: tempo
+// (a time warp of the joints, before fitting); per sensor, the mounting tilt; the trunk sway (trunk_sway.hpp, on a
+// copy of the fitted frames) and the device roll (device_roll.hpp) on the sensor's track; the attachment's
+// dynamics and landing transients while the signals are computed (imu_synthesis.hpp) at the device's rate;
+// body vibration (body_vibration.hpp); the device's errors (sensor_noise.hpp); resampling to the output rate
+// (device_rate.hpp). Random parts (mounting errors, tilt, tempo, landings, vibration, noise) are seeded per body
+// (and sensor) from one seed, so the output does not depend on which other bodies or sensors were asked for.
 #pragma once
 #include <nlohmann/json.hpp>
 #include <string>
