@@ -110,7 +110,7 @@ TEST(MotionQuality, OnRaisedGroundHeightsCountFromTheGroundUnderEachJoint) {
     JointSequence m = standing(40);
     for (int f = 0; f < m.num_frames; ++f)
         for (int j = 0; j < m.num_joints; ++j) m.at(f, j) += Eigen::Vector3d(2.0 * f / m.fps, 0.5, 0.0);
-    const GroundHeight platform = [](const Eigen::Vector3d&) { return 0.5; };
+    const GroundHeight platform = [](const Eigen::Vector3d&, int) { return 0.5; };
     EXPECT_NEAR(score_motion(m).hover_m, 0.5, 1e-12);
     const MotionQuality q = score_motion_on_ground(m, platform);
     EXPECT_NEAR(q.foot_skate_m_s, 2.0, 1e-9);

@@ -5,16 +5,19 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "motion/skeleton.hpp"
+#include "motion/stair_gait.hpp"
 #include "report/html_page.hpp"
 #include "report/html_report.hpp"
 #include "report/pose_strip.hpp"
 #include "report/signal_stats.hpp"
 #include "report_fixture.hpp"
 #include "test_util.hpp"
+#include "walk_fixture.hpp"
 
 using namespace t2imu;
 namespace fs = std::filesystem;
@@ -62,6 +65,24 @@ TEST(Report, PoseStripDrawsTheKinematicTreeSideOn) {
     // neck (12) -> head (15), third pose, 0.3 m up: centre grey
     EXPECT_NE(svg.find("<line x1=\"524.0\" y1=\"130.0\" x2=\"530.0\" y2=\"115.0\" stroke=\"#555\"/>"), std::string::npos);
     for (const char* label : {">0.0 s<", ">0.5 s<", ">1.0 s<"}) EXPECT_NE(svg.find(label), std::string::npos) << label;
+}
+
+TEST(Report, PoseStripStandsAClimbOnItsTreads) {
+    // A 0.17 m-riser ascent: every pose's lowest joint is drawn just above its panel's ground line (y = 220 cm)
+    // rather than a riser higher per step, and the raised panels say how high their ground is.
+    StairOptions o = default_stair_options(true);
+    o.rise_m = 0.17;
+    const StairMotion s = derive_stairs(test::procedural_walk(6.0), o);
+    const std::string svg = pose_strip_svg(s.motion, 6);
+    EXPECT_GE(count(svg, ", ground +"), 3u);
+    const std::regex bone("<line x1=\"([-0-9.]+)\" y1=\"([-0-9.]+)\" x2=\"([-0-9.]+)\" y2=\"([-0-9.]+)\" stroke=\"#(3b75af|e08a2c|555)\"/>");
+    std::vector<double> lowest(6, -1e9);  // the largest y (cm, down) drawn in each panel
+    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), bone); it != std::sregex_iterator(); ++it) {
+        const size_t panel = static_cast<size_t>(std::stod((*it)[1]) / kPanelWidthCm);
+        ASSERT_LT(panel, lowest.size());
+        lowest[panel] = std::max({lowest[panel], std::stod((*it)[2]), std::stod((*it)[4])});
+    }
+    for (size_t k = 0; k < lowest.size(); ++k) EXPECT_NEAR(lowest[k], kHeadroomCm - 100 * test::kToeHeight, 6.0) << "panel " << k;
 }
 
 TEST(Report, SignalStatsKnownAnswers) {

@@ -14,6 +14,7 @@
 #include "motion/stair_gait.hpp"
 #include "motion/two_bone_ik.hpp"
 #include "test_util.hpp"
+#include "walk_fixture.hpp"
 
 namespace t2imu {
 namespace {
@@ -21,39 +22,10 @@ namespace {
 using Eigen::Vector3d;
 using namespace smpl22;
 
-constexpr double kWalkPelvisHeight = 0.82, kAnkleHeight = 0.08, kToeHeight = 0.02;
-
-// A level walk on HumanML3D's target skeleton along +Z at 1 m/s, one stride (two steps) a second: each foot
-// stands still for 60% of its cycle and swings 1 m forward in the other 40% (minimum-jerk, 6 cm arc); the left
-// foot lands at cycle phase 0, the right at 0.5. Upper body in the rest pose; knees by IK, bending forward.
-JointSequence procedural_walk(double seconds, double fps = kFps) {
-    const int n = static_cast<int>(seconds * fps) + 1;
-    JointSequence m(n, kNumJoints, fps);
-    for (int f = 0; f < n; ++f) {
-        const double t = f / fps;
-        m.at(f, pelvis) = Vector3d(0, kWalkPelvisHeight, t);
-        for (int j = 1; j < kNumJoints; ++j)
-            if (!is_leg_joint(j)) m.at(f, j) = m.at(f, kParents[static_cast<size_t>(j)]) + kTargetOffsets[static_cast<size_t>(j)];
-        for (int side = 0; side < 2; ++side) {
-            const LegJoints& leg = kLegs[static_cast<size_t>(side)];
-            const double cycle = t + 0.5 * side, phase = cycle - std::floor(cycle);
-            // Stance of cycle c: the pelvis passes over the foot at its middle, 0.3 s after landing.
-            double z = std::floor(cycle) - 0.5 * side + 0.3, lift = 0;
-            if (phase >= 0.6) {
-                const double s = (phase - 0.6) / 0.4;
-                z += min_jerk(s);
-                lift = 0.06 * std::sin(test::kPi * s);
-            }
-            m.at(f, leg.ankle) = Vector3d(m.at(f, leg.hip).x(), kAnkleHeight + lift, z);
-            const double foot = kTargetOffsets[static_cast<size_t>(leg.toe)].norm(), drop = kAnkleHeight - kToeHeight;
-            m.at(f, leg.toe) = m.at(f, leg.ankle) + Vector3d(0, -drop, std::sqrt(foot * foot - drop * drop));
-            m.at(f, leg.knee) = solve_two_bone_ik(m.at(f, leg.hip), m.at(f, leg.ankle), kTargetOffsets[static_cast<size_t>(leg.knee)].norm(),
-                                                  kTargetOffsets[static_cast<size_t>(leg.ankle)].norm(), m.at(f, leg.hip) + Vector3d(0, -0.4, 1))
-                                    .middle;
-        }
-    }
-    return m;
-}
+using test::procedural_walk;
+using test::kWalkPelvisHeight;
+using test::kAnkleHeight;
+using test::kToeHeight;
 
 StairOptions stairs(bool ascend, double rise = 0.17) {
     StairOptions o = default_stair_options(ascend);
@@ -194,7 +166,7 @@ TEST(StairGait, TheEditIsTheSameAtAnyFrameRate) {
 TEST(StairGait, PassesTheQualityCheckAgainstTheTreads) {
     for (bool ascend : {true, false}) {
         const StairMotion s = derive_stairs(procedural_walk(6.0), stairs(ascend));
-        const MotionQuality q = score_motion_on_ground(s.motion, [&](const Vector3d& p) { return s.stairs.height_at(p); });
+        const MotionQuality q = score_motion_on_ground(s.motion, [&](const Vector3d& p, int) { return s.stairs.height_at(p); });
         EXPECT_TRUE(quality_failures(q, default_quality_thresholds()).empty())
             << "skate " << q.foot_skate_m_s << " acc " << q.max_acc_m_s2 << " pelvis acc " << q.pelvis_acc_m_s2 << " hover " << q.hover_m;
         EXPECT_LT(q.pelvis_acc_m_s2, 30.0);
@@ -237,7 +209,7 @@ TEST(StairGait, ACapturedWalkClimbsAndDescends) {
     for (bool ascend : {true, false}) {
         const StairMotion s = derive_stairs(walk, stairs(ascend));
         EXPECT_LT(max_bone_length_error(s.motion, bone_lengths(walk, 0)), 1e-6);
-        const MotionQuality q = score_motion_on_ground(s.motion, [&](const Vector3d& p) { return s.stairs.height_at(p); });
+        const MotionQuality q = score_motion_on_ground(s.motion, [&](const Vector3d& p, int) { return s.stairs.height_at(p); });
         double peak_knee = 0;
         for (int f = 0; f < s.motion.num_frames; ++f) peak_knee = std::max({peak_knee, knee_flexion_rad(s.motion, f, 0), knee_flexion_rad(s.motion, f, 1)});
         std::printf("[captured %s] frames %d, steps %d, footholds %zu, knee peak %.1f deg, skate %.2f m/s, "

@@ -74,7 +74,12 @@ const std::vector<std::string>& captions_for(const std::string& method) {
 
 double uniform(std::mt19937_64& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
 
-bool passes(const MotionQuality& q) { return quality_failures(q, default_quality_thresholds()).empty(); }
+// Scored as the dataset will hold it and as synth scores a draw: on the floor (HumanML3D's processing puts the
+// floor at the lowest joint; place_on_floor does the same).
+bool passes(JointSequence m) {
+    place_on_floor(m);
+    return quality_failures(score_motion(m), default_quality_thresholds()).empty();
+}
 
 // What the quality thresholds were set on and the dataset holds: the motion at 20 fps.
 JointSequence at_dataset_rate(const JointSequence& m) { return m.fps == smpl22::kFps ? m : resample_joints(m, smpl22::kFps); }
@@ -95,9 +100,9 @@ void derive_stairs_clip(const JointSequence& walk, const std::string& file, Deri
         ++report.refused;  // a short, turning, backward or sideways walk: no staircase fits it
         return;
     }
-    const Staircase stairs = m.stairs;
+    const int steps = m.stairs.steps;
     JointSequence at_20 = at_dataset_rate(m.motion);
-    if (!passes(score_motion_on_ground(at_20, [&](const Eigen::Vector3d& p) { return stairs.height_at(p); }))) {
+    if (!passes(at_20)) {
         ++report.failed_quality;
         return;
     }
@@ -107,7 +112,7 @@ void derive_stairs_clip(const JointSequence& walk, const std::string& file, Deri
     c.joints = std::move(m.motion);
     c.joints_20fps = std::move(at_20);
     c.parameters = {{"rise_m", o.rise_m}, {"going_m", o.going_m}, {"ascend", o.ascend}, {"trunk_lean_rad", o.trunk_lean_rad},
-                    {"cadence_factor", o.cadence_factor}, {"swing_clearance_m", o.swing_clearance_m}, {"steps", stairs.steps}};
+                    {"cadence_factor", o.cadence_factor}, {"swing_clearance_m", o.swing_clearance_m}, {"steps", steps}};
     c.seed = seed;
     c.captions = pick_captions(captions_for(c.method), rng);
     out.push_back(std::move(c));
@@ -161,7 +166,7 @@ void derive_sit_clips(const JointSequence& standing, const std::string& file, De
             continue;
         }
         c.joints_20fps = at_dataset_rate(c.joints);
-        if (!passes(score_motion(c.joints_20fps))) { ++report.failed_quality; continue; }
+        if (!passes(c.joints_20fps)) { ++report.failed_quality; continue; }
         c.method = "sit_down_stand_up";
         c.activity = "sitting";
         c.parameters = {{"source_start_frame", begin}, {"seat_height_m", o.seat_height_m}, {"pelvis_above_seat_m", o.pelvis_above_seat_m},
@@ -190,7 +195,7 @@ void derive_lying_clips(const JointSequence& lie_down, const std::string& file, 
             return;
         }
         c.joints_20fps = at_dataset_rate(c.joints);
-        if (!passes(score_motion(c.joints_20fps))) { ++report.failed_quality; continue; }
+        if (!passes(c.joints_20fps)) { ++report.failed_quality; continue; }
         c.method = "lying_still";
         c.activity = "lying";
         c.parameters = {{"seconds", o.seconds}, {"breaths_per_min", o.breaths_per_min}, {"chest_rad", o.chest_rad}};
@@ -222,7 +227,7 @@ void derive_lying_turn_clips(const JointSequence& lie_down, const std::string& f
             return;
         }
         c.joints_20fps = at_dataset_rate(c.joints);
-        if (!passes(score_motion(c.joints_20fps))) { ++report.failed_quality; continue; }
+        if (!passes(c.joints_20fps)) { ++report.failed_quality; continue; }
         c.method = "lying_turn";
         c.activity = "lying";
         c.parameters = {{"breaths_per_min", still.breaths_per_min}, {"chest_rad", still.chest_rad}, {"before_s", o.before_s},
@@ -246,7 +251,7 @@ void derive_jump_clip(const JointSequence& jump, const std::string& file, Derive
         return;
     }
     c.joints_20fps = at_dataset_rate(c.joints);
-    if (!passes(score_motion(c.joints_20fps))) { ++report.failed_quality; return; }
+    if (!passes(c.joints_20fps)) { ++report.failed_quality; return; }
     c.method = "jump_rescaled";
     c.activity = "jumping";
     c.parameters = {{"time_scale", o.time_scale}, {"height_scale", o.time_scale * o.time_scale}};

@@ -40,7 +40,8 @@
 // Every edit runs at the rate of the recording it is given (the builder gives the capture rate where that is over
 // 20 fps, so a derived clip keeps the texture the capture has: Bandai Namco walks 30 fps, ReActIdle 24, HDM05 60).
 // A clip is kept only when it passes motion_quality's default thresholds at 20 fps (the dataset's rate, what the
-// models see), measured above the staircase for stairs (score_motion_on_ground) and above the floor otherwise.
+// models see), measured by score_motion above the ground the clip's own footholds show (support_ground.hpp), as for
+// generated motion.
 // Each recording's seed is a hash of its file name, so a build gives the same clips every time.
 #pragma once
 #include <cstdint>

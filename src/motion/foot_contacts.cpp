@@ -17,6 +17,15 @@ double horizontal_speed(const JointSequence& m, int f, int j) {
     return std::hypot(d.x(), d.z()) * m.fps / (b - a);
 }
 
+double vertical_speed(const JointSequence& m, int f, int j) {
+    const int a = std::max(0, f - 1), b = std::min(m.num_frames - 1, f + 1);
+    return std::abs(m.at(b, j).y() - m.at(a, j).y()) * m.fps / (b - a);
+}
+
+bool still(const JointSequence& m, int f, int j) {
+    return horizontal_speed(m, f, j) < kStanceSpeed && vertical_speed(m, f, j) < kPlantVerticalSpeed;
+}
+
 bool low_and_slow(const JointSequence& m, int f, int j, double lowest) {
     return m.at(f, j).y() <= lowest + kStanceHeight && horizontal_speed(m, f, j) < kStanceSpeed;
 }
@@ -57,22 +66,47 @@ std::vector<bool> stance_frames(const JointSequence& m, Foot foot) {
     return stance;
 }
 
-std::vector<StancePhase> detect_stance_phases(const JointSequence& m) {
+std::vector<bool> planted_frames(const JointSequence& m, Foot foot) {
+    require_walk(m);
+    const std::array<int, 2>& joints = foot == Foot::left ? smpl22::kFootLeft : smpl22::kFootRight;
+    std::vector<bool> planted(static_cast<size_t>(m.num_frames));
+    for (int f = 0; f < m.num_frames; ++f) planted[static_cast<size_t>(f)] = still(m, f, joints[0]) || still(m, f, joints[1]);
+    close_short_gaps(planted, std::max(1, frames_of(kMaxStanceGapSeconds, m.fps)));
+    return planted;
+}
+
+namespace {
+
+// Runs of true flags at least min_frames long, as phases of `foot`.
+std::vector<StancePhase> runs_of(const std::vector<bool>& flags, Foot foot, int min_frames) {
+    std::vector<StancePhase> phases;
+    const int n = static_cast<int>(flags.size());
+    for (int f = 0; f < n;) {
+        if (!flags[static_cast<size_t>(f)]) { ++f; continue; }
+        int last = f;
+        while (last + 1 < n && flags[static_cast<size_t>(last + 1)]) ++last;
+        if (last - f + 1 >= min_frames) phases.push_back({foot, f, last});
+        f = last + 1;
+    }
+    return phases;
+}
+
+std::vector<StancePhase> phases_of_both_feet(const JointSequence& m, std::vector<bool> (*flags)(const JointSequence&, Foot)) {
     std::vector<StancePhase> phases;
     const int min_frames = frames_of(kMinStanceSeconds, m.fps);
     for (Foot foot : {Foot::left, Foot::right}) {
-        const std::vector<bool> stance = stance_frames(m, foot);
-        for (int f = 0; f < m.num_frames;) {
-            if (!stance[static_cast<size_t>(f)]) { ++f; continue; }
-            int last = f;
-            while (last + 1 < m.num_frames && stance[static_cast<size_t>(last + 1)]) ++last;
-            if (last - f + 1 >= min_frames) phases.push_back({foot, f, last});
-            f = last + 1;
-        }
+        const std::vector<StancePhase> runs = runs_of(flags(m, foot), foot, min_frames);
+        phases.insert(phases.end(), runs.begin(), runs.end());
     }
     std::stable_sort(phases.begin(), phases.end(),
                      [](const StancePhase& a, const StancePhase& b) { return a.first_frame < b.first_frame; });
     return phases;
 }
+
+}  // namespace
+
+std::vector<StancePhase> detect_stance_phases(const JointSequence& m) { return phases_of_both_feet(m, stance_frames); }
+
+std::vector<StancePhase> detect_planted_phases(const JointSequence& m) { return phases_of_both_feet(m, planted_frames); }
 
 }  // namespace t2imu

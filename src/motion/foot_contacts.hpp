@@ -33,8 +33,19 @@ struct StancePhase {
 // Per foot, a flag per frame: in stance or not.
 std::vector<bool> stance_frames(const JointSequence& walk, Foot foot);
 
+// Per foot, a flag per frame: planted, at whatever height. A foot is planted when its ankle or its toe moves
+// slower than kStanceSpeed horizontally and kPlantVerticalSpeed vertically (central differences): the stance
+// test without "low", so that a foot on a stair tread, a kerb or a step counts as well as one on the floor. A
+// foot that floats up or sinks while it stands still horizontally is not planted. Gaps are closed as in
+// stance_frames.
+constexpr double kPlantVerticalSpeed = 0.25;  // m/s; a stance foot on a tread moves < 0.1 m/s vertically at 20 fps
+std::vector<bool> planted_frames(const JointSequence& motion, Foot foot);
+
 // Every stance phase of both feet, ordered by first frame (then left before right). SMPL-22 joints, at least
 // 3 frames; throws Error otherwise.
 std::vector<StancePhase> detect_stance_phases(const JointSequence& walk);
+
+// Every planted phase of both feet (planted_frames, runs of at least kMinStanceSeconds), ordered as above.
+std::vector<StancePhase> detect_planted_phases(const JointSequence& motion);
 
 }  // namespace t2imu

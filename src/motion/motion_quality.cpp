@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "motion/skeleton.hpp"
+#include "motion/support_ground.hpp"
 
 namespace t2imu {
 
@@ -32,7 +33,7 @@ double foot_skate(const JointSequence& m, const GroundHeight& ground) {
         for (int f = 0; f + 1 < m.num_frames; ++f) {
             const Eigen::Vector3d& a = m.at(f, j);
             const Eigen::Vector3d& b = m.at(f + 1, j);
-            if (std::max(a.y() - ground(a), b.y() - ground(b)) > kContactHeight) continue;
+            if (std::max(a.y() - ground(a, f), b.y() - ground(b, f + 1)) > kContactHeight) continue;
             sum += std::hypot(b.x() - a.x(), b.z() - a.z()) * m.fps;
             ++n;
         }
@@ -42,7 +43,9 @@ double foot_skate(const JointSequence& m, const GroundHeight& ground) {
 }  // namespace
 
 MotionQuality score_motion(const JointSequence& m) {
-    return score_motion_on_ground(m, [](const Eigen::Vector3d&) { return 0.0; });
+    if (m.num_joints != smpl22::kNumJoints || m.num_frames < 3) throw Error("motion quality", "joints", "22 joints and at least 3 frames");
+    const SupportGround ground(m);
+    return score_motion_on_ground(m, [&](const Eigen::Vector3d& p, int frame) { return ground.height_at(p, frame); });
 }
 
 MotionQuality score_motion_on_ground(const JointSequence& m, const GroundHeight& ground) {
@@ -51,9 +54,9 @@ MotionQuality score_motion_on_ground(const JointSequence& m, const GroundHeight&
     q.foot_skate_m_s = foot_skate(m, ground);
     std::vector<double> lowest(static_cast<size_t>(m.num_frames));
     for (int f = 0; f < m.num_frames; ++f) {
-        double low = m.at(f, 0).y() - ground(m.at(f, 0));
+        double low = m.at(f, 0).y() - ground(m.at(f, 0), f);
         for (int j = 0; j < m.num_joints; ++j) {
-            low = std::min(low, m.at(f, j).y() - ground(m.at(f, j)));
+            low = std::min(low, m.at(f, j).y() - ground(m.at(f, j), f));
             if (f + 1 < m.num_frames) q.max_speed_m_s = std::max(q.max_speed_m_s, (m.at(f + 1, j) - m.at(f, j)).norm() * m.fps);
             if (f < 1 || f + 1 >= m.num_frames) continue;
             const double acc = (m.at(f + 1, j) - 2 * m.at(f, j) + m.at(f - 1, j)).norm() * m.fps * m.fps;

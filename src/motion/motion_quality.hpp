@@ -1,10 +1,13 @@
 // Physical plausibility of a motion (joint positions, metres, Y up, floor at y = 0 as HumanML3D's
 // representation puts it): the scores a quality filter uses to drop or regenerate a generated motion.
+// Heights are taken above the ground the motion stands on (support_ground.hpp: the floor, and the treads,
+// steps or kerbs its grounded footholds show), so a climb is not read as hovering:
 //
 //   foot_skate_m_s      mean horizontal speed (m/s) of the feet (ankle and toe joints) over the frames where
-//                       that joint is within kContactHeight of the floor: a planted foot should not slide
-//   penetration_m       deepest any joint goes below the floor (m)
-//   hover_m             median over frames of the lowest joint's height (m): a body floating above the floor
+//                       that joint is within kContactHeight of the ground: a planted foot should not slide
+//   penetration_m       deepest any joint goes below the ground (m)
+//   hover_m             median over frames of the lowest joint's height above the ground under it (m): a body
+//                       floating above the floor or the treads
 //   max_speed_m_s       fastest joint, first difference (m/s)
 //   max_acc_m_s2        largest joint acceleration, second difference (m/s^2): jitter and teleports
 //   pelvis_acc_m_s2     largest pelvis (root joint) acceleration, second difference (m/s^2): a body that
@@ -51,11 +54,12 @@ std::array<double, kNumQualityScores> quality_limits(const MotionQualityThreshol
 
 MotionQualityThresholds default_quality_thresholds();
 
-// SMPL-22 joints, at least 3 frames.
+// SMPL-22 joints, at least 3 frames; the ground is the motion's SupportGround (support_ground.hpp). The one
+// scoring path of generated motion (synth), derived clips (the data builder) and `t2imu motion quality`.
 MotionQuality score_motion(const JointSequence& joints);
 
-// The ground's height (m) under a point (its y ignored), for motion over uneven ground: a staircase.
-using GroundHeight = std::function<double(const Eigen::Vector3d&)>;
+// The ground's height (m) under a point (its y ignored) at a frame, for motion over uneven ground: a staircase.
+using GroundHeight = std::function<double(const Eigen::Vector3d&, int frame)>;
 // As score_motion, with every height (foot contact, penetration, hover) taken above the ground under the joint
 // instead of above y = 0; the speed and acceleration scores do not depend on the ground.
 MotionQuality score_motion_on_ground(const JointSequence& joints, const GroundHeight& ground);

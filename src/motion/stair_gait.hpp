@@ -39,9 +39,9 @@
 //     Residential Code, 2018); UK Approved Document K allows rise 150-220 mm, going 220-300 mm for private
 //     stairs. The options accept rise 0-0.22 m (0: the level case, for checks) and going 0.22-0.35 m.
 //
-// Quality: score_motion measures foot skating and hover against the floor y = 0, so on a flight the treads read
-// as hover and stance feet above 5 cm are not checked for skating; score_motion_on_ground (motion_quality.hpp)
-// with the staircase's height_at as the ground measures both, and penetration, against the treads instead.
+// Quality: score_motion (motion_quality.hpp) measures foot skating, hover and penetration against the ground
+// the motion's own footholds show (support_ground.hpp), as for any generated climb; the staircase's height_at
+// is the ground that inference should find (tests/test_support_ground.cpp compares the two).
 #pragma once
 #include <Eigen/Core>
 #include <vector>

@@ -4,9 +4,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 
 #include "core/error.hpp"
 #include "motion/skeleton.hpp"
+#include "motion/support_ground.hpp"
 
 namespace t2imu {
 
@@ -20,6 +22,12 @@ std::string fixed1(double v) {
     return buf;
 }
 
+std::string fixed2(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.2f", v);
+    return buf;
+}
+
 const char* side_colour(int joint) {
     const char* name = smpl22::kJointNames[static_cast<size_t>(joint)];
     if (std::strncmp(name, "left_", 5) == 0) return "#3b75af";
@@ -27,19 +35,30 @@ const char* side_colour(int joint) {
     return "#555";
 }
 
-// One pose in panel `panel`: the floor, the 21 bones, the time label.
-std::string pose_panel(const JointSequence& joints, int frame, int panel) {
+// The ground (m) under the lowest foot joint at `frame`: the floor, or the tread or step the motion stands on.
+double ground_under_feet(const JointSequence& joints, const SupportGround* ground, int frame) {
+    if (ground == nullptr) return 0.0;
+    int lowest = smpl22::kFootLeft[0];
+    for (int j : {smpl22::kFootLeft[0], smpl22::kFootLeft[1], smpl22::kFootRight[0], smpl22::kFootRight[1]})
+        if (joints.at(frame, j).y() < joints.at(frame, lowest).y()) lowest = j;
+    return ground->height_at(joints.at(frame, lowest), frame);
+}
+
+// One pose in panel `panel`, drawn on the ground `ground_m` under its feet: the ground line, the 21 bones, the
+// time label, and the ground's height above the floor where it is raised.
+std::string pose_panel(const JointSequence& joints, int frame, int panel, double ground_m) {
     const double left = panel * kPanelWidthCm, centre_z = joints.at(frame, smpl22::pelvis).z();
     const auto x = [&](int j) { return fixed1(left + kPanelWidthCm / 2 + kCmPerM * (joints.at(frame, j).z() - centre_z)); };
-    const auto y = [&](int j) { return fixed1(kHeadroomCm - kCmPerM * joints.at(frame, j).y()); };
+    const auto y = [&](int j) { return fixed1(kHeadroomCm - kCmPerM * (joints.at(frame, j).y() - ground_m)); };
     std::string out = "<line x1=\"" + fixed1(left + 10) + "\" y1=\"" + fixed1(kHeadroomCm) + "\" x2=\"" + fixed1(left + kPanelWidthCm - 10) +
                       "\" y2=\"" + fixed1(kHeadroomCm) + "\" stroke=\"#ccc\"/>\n";
     for (int j = 1; j < smpl22::kNumJoints; ++j) {
         const int p = smpl22::kParents[static_cast<size_t>(j)];
         out += "<line x1=\"" + x(p) + "\" y1=\"" + y(p) + "\" x2=\"" + x(j) + "\" y2=\"" + y(j) + "\" stroke=\"" + side_colour(j) + "\"/>\n";
     }
-    out += "<text x=\"" + fixed1(left + kPanelWidthCm / 2) + "\" y=\"" + fixed1(kHeadroomCm + kBelowFloorCm - 6) + "\">" +
-           fixed1(frame / joints.fps) + " s</text>\n";
+    std::string label = fixed1(frame / joints.fps) + " s";
+    if (ground_m != 0.0) label += std::string(", ground ") + (ground_m > 0 ? "+" : "") + fixed2(ground_m) + " m";
+    out += "<text x=\"" + fixed1(left + kPanelWidthCm / 2) + "\" y=\"" + fixed1(kHeadroomCm + kBelowFloorCm - 6) + "\">" + label + "</text>\n";
     return out;
 }
 
@@ -61,7 +80,10 @@ std::string pose_strip_svg(const JointSequence& joints, int poses) {
     std::string out = "<svg class=\"pose-strip\" xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " + fixed1(width) + " " + fixed1(height) +
                       "\" width=\"" + fixed1(width * kPoseStripPixelsPerCm) + "\" height=\"" + fixed1(height * kPoseStripPixelsPerCm) +
                       "\" stroke-width=\"4\" stroke-linecap=\"round\" font-size=\"18\" text-anchor=\"middle\" fill=\"#555\">\n";
-    for (size_t k = 0; k < frames.size(); ++k) out += pose_panel(joints, frames[k], static_cast<int>(k));
+    std::optional<SupportGround> ground;  // needs three frames to see a foot stand still
+    if (joints.num_frames >= 3) ground.emplace(joints);
+    for (size_t k = 0; k < frames.size(); ++k)
+        out += pose_panel(joints, frames[k], static_cast<int>(k), ground_under_feet(joints, ground ? &*ground : nullptr, frames[k]));
     return out + "</svg>";
 }
 

@@ -102,7 +102,8 @@ void kept_motions(const std::string& dir, const std::vector<json>& markers, Page
     }
     if (activities.empty()) return;
     page.body += "<h3>Kept motions</h3>\n<p>Poses evenly over each clip, seen from the right (the start facing, +Z, to the right; "
-                 "left limbs blue, right orange); each pose centred on its pelvis, the floor at the grey line.</p>\n";
+                 "left limbs blue, right orange); each pose centred on its pelvis and drawn on the ground under its feet, the grey line "
+                 "(on stairs or a step the label gives that ground's height above the starting floor).</p>\n";
     for (const std::string& activity : activities) {
         page.body += "<h4>" + html_escape(activity) + "</h4>\n";
         for (const json& m : markers) {
