@@ -37,13 +37,13 @@ TEST(Losses, MatchOfficialMaskedL2AndVelocity) {
 
 TEST(Losses, AccelerationLossByHand) {
     // One sample, 5 frames of which 4 are valid, 2 channels. Target: a parabola in channel 0 (second difference
-    // 2 everywhere); prediction: zeros. Valid second differences: i = 1, 2 (frames 0..3) -> 2 terms of 2^2 = 4,
-    // divided by N - 1 = 3.
+    // 2 everywhere); prediction: zeros. Valid second differences: i = 1, 2 (frames 0..3) -> 2 terms of 2^2 = 4
+    // in channel 0 and 0 in channel 1, the mean over N - 2 = 2 differences and 2 channels: 8 / 4.
     torch::Tensor target = torch::zeros({1, 5, 2});
     for (int f = 0; f < 5; ++f) target[0][f][0] = static_cast<float>(f * f);
     const torch::Tensor mask = frame_mask(torch::tensor({int64_t{4}}), 5);
     const torch::Tensor l = acceleration_loss(target, torch::zeros_like(target), mask);
-    EXPECT_NEAR(l[0].item<float>(), 8.0f / 3.0f, 1e-6);
+    EXPECT_NEAR(l[0].item<float>(), 2.0f, 1e-6);
     // A prediction with the same second differences (any added line) costs nothing.
     torch::Tensor shifted = target.clone();
     for (int f = 0; f < 5; ++f) shifted[0][f][1] = 0.5f * static_cast<float>(f) + 1.0f;

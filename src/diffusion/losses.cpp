@@ -31,7 +31,8 @@ torch::Tensor acceleration_loss(const torch::Tensor& target, const torch::Tensor
     const torch::Tensor m = mask.to(target.dtype());
     const torch::Tensor valid = m.index({Slice(), Slice(2, torch::indexing::None)});  // frame i+1 valid
     const torch::Tensor se = (acc(target) - acc(prediction)).pow(2).sum(-1);          // [B, F-2]
-    return (se * valid).sum(1) / (m.sum(1) - 1).clamp_min(1);
+    const double channels = static_cast<double>(target.size(-1));
+    return (se * valid).sum(1) / ((m.sum(1) - 2).clamp_min(1) * channels);
 }
 
 }  // namespace t2imu
