@@ -41,6 +41,12 @@ TEST(Trainer, ConfigIsStrict) {
     EXPECT_DOUBLE_EQ(c.lambda_acc, 1.0);
     EXPECT_EQ(c.acc_space, "joints");
     EXPECT_EQ(c.batch, 4);
+    EXPECT_FALSE(c.augment.enabled());
+    std::ofstream(dir + "/augment.toml") << read_file_text(good) << "[augment]\nswap = 0.2\ndropout = 0.1\nneighbours = 4\n";
+    const TrainConfig a = read_train_config(dir + "/augment.toml");
+    EXPECT_DOUBLE_EQ(a.augment.swap, 0.2);
+    EXPECT_DOUBLE_EQ(a.augment.dropout, 0.1);
+    EXPECT_EQ(a.augment.neighbours, 4);
     std::ofstream(dir + "/bad.toml") << read_file_text(good) << "learnig_rate = 3\n";  // typo inside [loss]
     EXPECT_THROW(read_train_config(dir + "/bad.toml"), Error);
     std::ofstream(dir + "/bad2.toml") << read_file_text(good) << "[loss2]\n";

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <random>
 #include <set>
 #include <sstream>
@@ -70,6 +71,7 @@ void TrainConfig::validate(const std::string& path) const {
     check_range(path, "loss.lambda_foot", lambda_foot, 0, big);
     check_range(path, "loss.lambda_acc", lambda_acc, 0, big);
     if (acc_space != "features" && acc_space != "joints") throw Error(path, "loss.acc_space", "features or joints", acc_space);
+    augment.validate(path);
 }
 
 TrainConfig read_train_config(const std::string& path) {
@@ -78,7 +80,7 @@ TrainConfig read_train_config(const std::string& path) {
     TrainConfig c;
     top.read("out", c.out);
     TomlSection data = top.table("data"), model = top.table("model"), text = top.table("text"), diffusion = top.table("diffusion"),
-                train = top.table("train"), loss = top.table("loss");
+                train = top.table("train"), loss = top.table("loss"), augment = top.table("augment");
     top.refuse_unknown_keys();
     data.read("dataset", c.dataset);
     data.read("vocab", c.vocab);
@@ -111,7 +113,12 @@ TrainConfig read_train_config(const std::string& path) {
     loss.read("lambda_foot", c.lambda_foot);
     loss.read("lambda_acc", c.lambda_acc);
     loss.read("acc_space", c.acc_space);
-    for (const TomlSection* s : {&data, &model, &text, &diffusion, &train, &loss}) s->refuse_unknown_keys();
+    augment.read("swap", c.augment.swap);
+    augment.read("dropout", c.augment.dropout);
+    augment.read("neighbours", c.augment.neighbours);
+    augment.read("min_similarity", c.augment.min_similarity);
+    augment.read("search_words", c.augment.search_words);
+    for (const TomlSection* s : {&data, &model, &text, &diffusion, &train, &loss, &augment}) s->refuse_unknown_keys();
     c.validate(path);
     return c;
 }
@@ -257,7 +264,9 @@ void write_model(const Training& tr, const TrainConfig& c, const Hml3dDataset& d
         {"diffusion", {{"schedule", "cosine"}, {"steps", c.diffusion_steps}, {"predict", "x0"}}},
         {"normalisation", {{"mean", "Mean.npy"}, {"std", "Std.npy"}}},
         {"training", {{"dataset", c.dataset}, {"step", tr.step}, {"ema", c.ema_decay > 0}, {"lambda_pos", c.lambda_pos},
-                      {"lambda_vel", c.lambda_vel}, {"lambda_foot", c.lambda_foot}, {"lambda_acc", c.lambda_acc}, {"acc_space", c.acc_space}}}};
+                      {"lambda_vel", c.lambda_vel}, {"lambda_foot", c.lambda_foot}, {"lambda_acc", c.lambda_acc}, {"acc_space", c.acc_space},
+                      {"augment", {{"swap", c.augment.swap}, {"dropout", c.augment.dropout}, {"neighbours", c.augment.neighbours},
+                                   {"min_similarity", c.augment.min_similarity}, {"search_words", c.augment.search_words}}}}}};
     write_file_atomic(c.out + "/model.json", model.dump(2) + "\n");
 }
 
@@ -295,6 +304,13 @@ void seed_rank_dropout(const torch::Device& device, uint64_t seed, int rank, int
 torch::Device training_device(const std::string& name, const ProcessGroupEnv& processes) {
     if (name == "cuda" && processes.world_size > 1) return torch::Device(torch::kCUDA, static_cast<c10::DeviceIndex>(processes.local_rank));
     return torch::Device(name);
+}
+
+std::vector<std::string> all_captions(const Hml3dDataset& data) {
+    std::vector<std::string> out;
+    for (const MotionClip& clip : data.clips())
+        for (const CaptionLine& line : clip.captions) out.push_back(line.caption);
+    return out;
 }
 
 // Slots of the values that ride along with the gradients' all-reduce.
@@ -350,6 +366,8 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
     const auto start = std::chrono::steady_clock::now();
     const int64_t first = tr.step, last = stop_after > 0 ? std::min(c.steps, tr.step + stop_after) : c.steps;
     std::bernoulli_distribution drop(c.cond_dropout);
+    std::optional<CaptionAugmenter> reword;
+    if (c.augment.enabled()) reword.emplace(vocab, c.augment, all_captions(data));
     g_stop_requested = false;
     bool stop = false;
     while (tr.step < last && !stop) {
@@ -358,6 +376,7 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
         std::vector<std::string> captions = b.captions;
         for (std::string& caption : captions)
             if (drop(tr.dropout_rng)) caption.clear();
+            else if (reword) caption = reword->augment(caption, tr.dropout_rng);  // same stream: saved with the checkpoint
         const torch::Tensor t_all = torch::randint(c.diffusion_steps, {b.size}, tr.generator, draws_on.dtype(torch::kInt64));
         const torch::Tensor noise_all = torch::randn({b.size, b.channels, 1, b.frames}, tr.generator, draws_on);
         const int64_t lo = share.begin, n = share.size;

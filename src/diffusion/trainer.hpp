@@ -2,8 +2,8 @@
 // loss: L = L_simple + lambda_pos L_pos + lambda_vel L_vel + lambda_foot L_foot + lambda_acc L_acc.
 //
 // Every step: a batch (MDM's crop and caption rules, hml3d_dataset.hpp), t uniform in [0, T), x_t = q_sample,
-// the captions encoded (each replaced by the empty caption with probability cond_dropout, which encodes to
-// MDM's zero text feature: classifier-free guidance), x0_hat = MDM(x_t, t, text), then, each masked to valid
+// the captions reworded when [augment] asks (caption_augment.hpp) and encoded (each replaced by the empty
+// caption with probability cond_dropout, which encodes to MDM's zero text feature: classifier-free guidance), x0_hat = MDM(x_t, t, text), then, each masked to valid
 // frames: L_simple = MSE(x0_hat, x0) on normalised features; L_pos = MSE of joint positions (metres) from a
 // differentiable recover_from_ric of the de-normalised features; L_vel = MDM's velocity term on the features;
 // L_foot = squared predicted velocity of the four foot joints where the ground truth's contact flag is 1;
@@ -26,6 +26,7 @@
 
 #include "diffusion/mdm.hpp"
 #include "nn/distributed.hpp"
+#include "text/caption_augment.hpp"
 #include "text/nn/glove_text_encoder.hpp"
 
 namespace t2imu {
@@ -40,6 +41,7 @@ struct TrainConfig {
     double learning_rate = 1e-4, weight_decay = 0.0, cond_dropout = 0.1, ema_decay = 0.0;
     double lambda_pos = 0, lambda_vel = 0, lambda_foot = 0, lambda_acc = 0;
     std::string acc_space = "features";  // or "joints"
+    CaptionAugmentOptions augment;       // [augment]: the training captions reworded (text/caption_augment.hpp)
     int64_t save_every = 1000, log_every = 50;
     uint64_t seed = 0;
     int threads = 0;
@@ -54,7 +56,7 @@ struct TrainConfig {
 // TOML: [data] dataset, vocab, split; [model] latent_dim, ff_size, num_layers, num_heads, dropout;
 // [text] model_dim, layers, heads, ff_size, dropout; [diffusion] steps; [train] batch, steps, learning_rate,
 // weight_decay, cond_dropout, ema_decay, seed, save_every, log_every; [loss] lambda_pos, lambda_vel,
-// lambda_foot, lambda_acc, acc_space; `out` at the top level (the model folder). Read strictly
+// lambda_foot, lambda_acc, acc_space; [augment] swap, dropout, neighbours, min_similarity, search_words; `out` at the top level (the model folder). Read strictly
 // (core/toml_section.hpp): unknown keys and wrong types are refused by name; then validate().
 TrainConfig read_train_config(const std::string& path);
 
