@@ -6,6 +6,7 @@
 #include "cli/command.hpp"
 #include "cli/usage.hpp"
 #include "core/error.hpp"
+#include "core/host_memory.hpp"
 #include "core/progress.hpp"
 #include "nn/threads.hpp"
 
@@ -39,6 +40,7 @@ int worker_threads() {
 
 int main(int argc, char** argv) {
     using namespace t2imu::cli;
+    t2imu::keep_freed_memory_for_reuse();
     CLI::App app{"t2imu: text to realistic synthetic IMU data, and how realistic it is"};
     app.set_version_flag("--version", "t2imu 0.1.0");
     app.require_subcommand(1);
