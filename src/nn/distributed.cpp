@@ -6,6 +6,7 @@
 #endif
 #include <torch/csrc/distributed/c10d/ProcessGroupGloo.hpp>
 #include <torch/csrc/distributed/c10d/TCPStore.hpp>
+#include <torch/version.h>
 #ifdef USE_C10D_NCCL
 #include <torch/csrc/distributed/c10d/ProcessGroupNCCL.hpp>
 #endif
@@ -58,7 +59,13 @@ BatchShare batch_share(int global_batch, int rank, int world_size) {
 
 struct DataParallel::Group {
     c10::intrusive_ptr<c10d::Store> store;
+    // libtorch 2.x split the backends (Gloo, NCCL) off ProcessGroup into c10d::Backend; 1.13 (Debian's) derives
+    // them from ProcessGroup. The collectives used here (allreduce, broadcast, barrier) exist on both.
+#if TORCH_VERSION_MAJOR >= 2
+    c10::intrusive_ptr<c10d::Backend> pg;
+#else
     c10::intrusive_ptr<c10d::ProcessGroup> pg;
+#endif
     bool tensors_on_host = true;  // Gloo is handed host tensors: a device buffer is staged through the CPU
     std::string backend;
 
