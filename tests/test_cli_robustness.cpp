@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 
 #include "body/procedural_body.hpp"
@@ -134,8 +135,11 @@ std::vector<Row> rows() {
         {"SensorTomlWrongType", kImuSynth + "--sensors {D}/s.toml --out {D}/o", standing_joints("j.npy") + Files{{"s.toml", "[[sensor]]\nposition = \"wrist\"\nsegment = \"right_elbow\"\nalong = \"far\"\nx = \"distal\"\nz = \"out\"\n"}},
          1, "s.toml: sensor[0].along: expected", {"o"}},
         // 6, 7: option values are checked before any work or output.
-        {"SynthGuidanceNan", kSynth + "--guidance nan --out {D}/o", kPrompts, 2, "--guidance: expected a finite scale", {"o"}},
-        {"SampleGuidanceInf", kSample + "--guidance inf --out {D}/o", {}, 2, "--guidance: expected a finite scale", {"o"}},
+        {"SynthGuidanceNan", kSynth + "--guidance nan --out {D}/o", kPrompts, 2, "--guidance: expected a scale from 0 to 100", {"o"}},
+        {"SampleGuidanceInf", kSample + "--guidance inf --out {D}/o", {}, 2, "--guidance: expected a scale from 0 to 100", {"o"}},
+        // Round two (2026-12-04): a scale whose features overflow float32 (1e20) is refused, not sampled into NaN.
+        {"SampleGuidanceHuge", kSample + "--guidance 1e20 --out {D}/o", {}, 2, "--guidance: expected a scale from 0 to 100 (got 100000000000000000000", {"o"}},
+        {"SynthGuidanceHuge", kSynth + "--guidance 1e300 --out {D}/o", kPrompts, 2, "--guidance: expected a scale from 0 to 100", {"o"}},
         {"SynthRateZero", kSynth + "--rate 0 --out {D}/o", kPrompts, 2, "--rate", {"o"}},
         {"SynthRateNegative", kSynth + "--rate -5 --out {D}/o", kPrompts, 2, "--rate", {"o"}},
         {"SynthStepsZero", kSynth + "--steps 0 --out {D}/o", kPrompts, 2, "--steps", {"o"}},
@@ -160,6 +164,26 @@ std::vector<Row> rows() {
         {"DataReframeUnknownPosition", "data reframe {D}/imu --from realworld --to umafall --positions tentacle --out {D}/o", imu_dataset("imu"), 1,
          "--positions: tentacle: expected a position the data set holds", {"o"}},
         {"DataReframeRuns", "data reframe {D}/imu --from realworld --to umafall --out {D}/o", imu_dataset("imu"), 0, "4 recordings in the axes of umafall", {}},
+        // Round two: no path read from a manifest leads outside its folder; no --out replaces a user's file or folder.
+        {"DataReframeManifestLeavesTheFolder", "data reframe {D}/imu --from realworld --to umafall --out {D}/o",
+         Files{{"imu/manifest.csv", "path,dataset,subject,activity,position,rate_hz,n_samples,units\n../x.csv,t2imu,s1,walking,chest,20,2,-\n"},
+               {"x.csv", "t,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n0,0,9.81,0,0,0,0\n0.05,0,9.81,0,0,0,0\n"}},
+         1, "manifest.csv row 2 column 'path': ../x.csv: expected a relative path inside", {"o"}},
+        {"DataReframeOutIsAFile", "data reframe {D}/imu --from realworld --to umafall --out {D}/file", imu_dataset("imu") + kFile, 2,
+         "an existing file", {}},
+        {"ImuSynthOutIsAFile", kImuSynth + "--out {D}/file", standing_joints("j.npy") + kFile, 2, "an existing file", {}},
+        {"ImportImuOutIsAFile", "data import-imu --format sisfall {D}/imu --out {D}/file", imu_dataset("imu") + kFile, 2, "an existing file", {}},
+        {"ImuSynthOutIsAUserFolder", kImuSynth + "--out {D}/mine", standing_joints("j.npy") + Files{{"mine/notes.txt", "mine\n"}}, 2,
+         "a folder t2imu did not make", {}},
+        {"HarManifestNegativeCount", kHar + "--repeats 1 --out {D}/o.json",
+         Files{{"imu/manifest.csv", "path,dataset,subject,activity,position,rate_hz,n_samples,units\na.csv,t2imu,s1,walking,chest,20,-1,-\n"}}, 1,
+         "manifest.csv: row 2 column 'n_samples': expected a whole number of samples from 0 (got '-1')", {"o.json"}},
+        {"HarManifestNanCount", kHar + "--repeats 1 --out {D}/o.json",
+         Files{{"imu/manifest.csv", "path,dataset,subject,activity,position,rate_hz,n_samples,units\na.csv,t2imu,s1,walking,chest,20,nan,-\n"}}, 1,
+         "column 'n_samples'", {"o.json"}},
+        {"HarManifestNotUtf8", kHar + "--repeats 1 --out {D}/o.json",
+         Files{{"imu/manifest.csv", "path,dataset,subject,activity,position,rate_hz,n_samples,units\na.csv,t2imu,s\xff,walking,chest,20,2,-\n"}}, 1,
+         "row 2 column 'subject': expected UTF-8 text", {"o.json"}},
         // 10: HAR names the position, the window and the damaged cell.
         {"HarUnknownPosition", "har run --train {D}/imu --test {D}/imu --positions tentacle --repeats 1 --out {D}/o.json", imu_dataset("imu"), 1,
          "--positions: tentacle: expected a position the data set holds (chest)", {"o.json"}},
@@ -198,6 +222,13 @@ TEST_P(CliRobustnessTable, Row) {
         EXPECT_EQ(r.output.rfind("t2imu: ", 0), 0u) << r.output;
     }
     for (const std::string& path : row.absent) EXPECT_FALSE(fs::exists(dir + "/" + path)) << path;
+    // A run never changes or removes the files it was given (an --out naming one among them included).
+    for (const auto& [path, content] : row.files) {
+        const bool expected_gone = std::any_of(row.absent.begin(), row.absent.end(), [&](const std::string& a) { return path.rfind(a, 0) == 0; });
+        if (expected_gone) continue;
+        std::ifstream in(dir + "/" + path, std::ios::binary);
+        EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), content) << path << " changed";
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(CliRobustness, CliRobustnessTable, testing::ValuesIn(rows()),

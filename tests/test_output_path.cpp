@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "core/error.hpp"
 #include "core/output_path.hpp"
@@ -85,10 +86,12 @@ TEST(OutputPath, PublishReplacesAFolderWhole) {
     const std::string out = dir + "/result", partial = partial_path_for(out);
     fs::create_directories(out);
     std::ofstream(out + "/old.csv") << "old\n";
+    std::ofstream(out + "/" + kOutputMarker) << "\n";  // an output t2imu published before
     fs::create_directories(partial);
     std::ofstream(partial + "/new.csv") << "new\n";
     publish_partial(partial, out);
     EXPECT_TRUE(fs::exists(out + "/new.csv"));
+    EXPECT_TRUE(fs::exists(out + "/" + kOutputMarker));
     EXPECT_FALSE(fs::exists(out + "/old.csv"));  // replaced whole, not merged
     EXPECT_FALSE(fs::exists(partial));
     size_t entries = 0;
@@ -97,4 +100,38 @@ TEST(OutputPath, PublishReplacesAFolderWhole) {
     // Nothing to publish: an Error names the output, which keeps what it held.
     EXPECT_TRUE(test::contains(test::error_message([&] { publish_partial(partial, out); }), out + ": rename"));
     EXPECT_TRUE(fs::exists(out + "/new.csv"));
+}
+
+TEST(OutputPath, NeverReplacesAUsersFileOrFolder) {
+    const std::string dir = test::scratch_dir("output_path_users");
+    const std::string file = dir + "/notes.txt", folder = dir + "/mine";
+    std::ofstream(file) << "mine\n";
+    fs::create_directories(folder);
+    std::ofstream(folder + "/a.txt") << "mine\n";
+    EXPECT_TRUE(test::contains(test::error_message([&] { check_output_folder(file, "--out"); }), "--out: " + file));
+    EXPECT_TRUE(test::contains(test::error_message([&] { check_replaceable_folder(folder, "--out"); }), "did not make"));
+    EXPECT_NO_THROW(check_output_folder(folder, "--out"));  // resumable jobs write into a folder
+    for (const std::string& target : {file, folder}) {
+        const std::string partial = partial_path_for(target);
+        fs::create_directories(partial);
+        EXPECT_TRUE(test::contains(test::error_message([&] { publish_partial(partial, target); }), target));
+        fs::remove_all(partial);
+    }
+    std::ifstream in(file);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), "mine\n");
+    EXPECT_TRUE(fs::exists(folder + "/a.txt"));
+    // An empty folder may be filled.
+    fs::create_directories(dir + "/empty");
+    EXPECT_NO_THROW(check_replaceable_folder(dir + "/empty", "--out"));
+}
+
+TEST(OutputPath, PathsFromInputsStayInsideTheirFolder) {
+    const std::string dir = test::scratch_dir("output_path_confined");
+    EXPECT_EQ(confined_path(dir, "a/b.csv", "path"), dir + "/a/b.csv");
+    EXPECT_EQ(confined_path(dir, "a/../b.csv", "path"), dir + "/b.csv");
+    for (const char* bad : {"../x.csv", "a/../../x.csv", "/etc/passwd", "", "."})
+        EXPECT_TRUE(test::contains(test::error_message([&] { confined_path(dir, bad, "manifest.csv row 2"); }), "manifest.csv row 2")) << bad;
+    fs::create_directories(dir + "/real");
+    fs::create_symlink("/tmp", dir + "/link");
+    EXPECT_TRUE(test::contains(test::error_message([&] { confined_path(dir, "link/x.csv", "path"); }), "symbolic link"));
 }

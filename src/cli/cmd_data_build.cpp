@@ -35,7 +35,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
             if (!item.empty()) o.licences.insert(item);
         check_usage([] {
             o.validate();
-            check_output_path(o.out_dir, "--out");
+            check_replaceable_folder(o.out_dir, "--out");
         });
         const BuildSummary s = build_dataset(o);
         std::printf("%s: %d clips, %.1f minutes, %d captions, %d files skipped\n", o.out_dir.c_str(), s.clips, s.minutes,

@@ -19,7 +19,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--repeats", repeats, "HAR trainings per row (default: the config's har.repeats)");
     cmd->callback([] {
         ExperimentConfig c = read_experiment_config(config);
-        check_usage([] { check_output_path(out, "--out"); });
+        check_usage([] { check_output_folder(out, "--out"); });
         if (repeats > 0) c.har.repeats = repeats;
         c.synth.device = global_options().device;
         c.synth.threads = worker_threads();

@@ -57,7 +57,7 @@ void run(const SynthArgs& a) {
         options.noise = parse_noise_model(a.noise);
         options.realism = parse_realism(a.realism);
         options.validate();
-        check_output_path(a.out, "--out");
+        check_replaceable_folder(a.out, "--out");
     });
     const std::vector<BodySpec> bodies = parse_body_specs(a.body);
     const std::vector<SensorPlacement> sensors = parse_sensor_sets(a.sensors);

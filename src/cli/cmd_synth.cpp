@@ -13,7 +13,7 @@ namespace t2imu::cli {
 
 namespace {
 
-// Relative to the working directory, like models/default-v5: the quick start runs from the repository root.
+// Relative to the working directory, like models/default: the quick start runs from the repository root.
 const char* const kDefaultActivityReference = "models/motion-activity.csv";
 
 struct SynthArgs {
@@ -37,7 +37,7 @@ void run(SynthArgs a) {
     check_usage([&] {
         parse_shard(a.shard, o);
         o.validate();
-        check_output_path(o.out, "--out");
+        check_output_folder(o.out, "--out");
     });
     o.filter = !a.no_filter;
     if (o.activity_reference == kDefaultActivityReference && !std::filesystem::exists(o.activity_reference)) {

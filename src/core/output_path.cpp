@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <vector>
 
 #include "core/error.hpp"
@@ -25,6 +26,12 @@ fs::path normalised(const std::string& path) {
 bool exists_no_throw(const fs::path& p) {
     std::error_code ec;
     return fs::exists(fs::symlink_status(p, ec));
+}
+
+// Best effort: a folder that cannot take the marker cannot be renamed into place either, and that error says so.
+void write_marker(const std::string& folder) {
+    std::error_code ec;
+    if (fs::is_directory(folder, ec)) std::ofstream(folder + "/" + kOutputMarker) << "a folder t2imu published; t2imu may replace it whole\n";
 }
 
 }  // namespace
@@ -54,6 +61,49 @@ void check_output_path(const std::string& path, const std::string& option) {
     if (ec) throw Error(option, path, "folders that can be created", ec.message());
 }
 
+void check_output_folder(const std::string& path, const std::string& option) {
+    check_output_path(path, option);
+    std::error_code ec;
+    const fs::path target = normalised(path);
+    if (exists_no_throw(target) && !fs::is_directory(target, ec))
+        throw Error(option, path, "a folder to write (t2imu never replaces a file with a folder)", "an existing file");
+}
+
+namespace {
+
+// Empty "" when `folder` may be replaced, else why not.
+std::string why_not_replaceable(const fs::path& folder) {
+    std::error_code ec;
+    if (!exists_no_throw(folder)) return "";
+    if (fs::is_symlink(folder, ec) || !fs::is_directory(folder, ec)) return "an existing file";
+    if (fs::exists(folder / kOutputMarker, ec) || fs::is_empty(folder, ec)) return "";
+    return std::string("a folder t2imu did not make (no ") + kOutputMarker + "): remove it or choose another";
+}
+
+}  // namespace
+
+void check_replaceable_folder(const std::string& path, const std::string& option) {
+    check_output_folder(path, option);
+    const std::string why = why_not_replaceable(normalised(path));
+    if (!why.empty()) throw Error(option, path, "an output folder t2imu may replace", why);
+}
+
+std::string confined_path(const std::string& folder, const std::string& relative, const std::string& field) {
+    const fs::path r(relative);
+    if (relative.empty() || r.is_absolute() || r.has_root_name())
+        throw Error(field, relative.empty() ? "''" : relative, "a relative path inside " + folder);
+    const fs::path inside = r.lexically_normal();
+    if (inside.empty() || *inside.begin() == ".." || inside == ".")
+        throw Error(field, relative, "a relative path inside " + folder, "it leaves the folder");
+    fs::path walk = fs::path(folder);
+    std::error_code ec;
+    for (const fs::path& part : inside) {
+        walk /= part;
+        if (fs::is_symlink(fs::symlink_status(walk, ec))) throw Error(field, relative, "a path without symbolic links", walk.string() + " is one");
+    }
+    return (fs::path(folder) / inside).string();
+}
+
 void make_directories(const std::string& path, const std::string& field) {
     std::error_code ec;
     fs::create_directories(path, ec);
@@ -65,6 +115,9 @@ std::string partial_path_for(const std::string& path) {
 }
 
 void publish_partial(const std::string& partial, const std::string& path) {
+    const std::string why = why_not_replaceable(normalised(path));
+    if (!why.empty()) throw Error(path, "output folder", "a folder t2imu may replace (the result is in " + partial + ")", why);
+    write_marker(partial);
     const std::string old = normalised(path).string() + ".old-" + std::to_string(::getpid());
     std::error_code ec;
     fs::remove_all(old, ec);

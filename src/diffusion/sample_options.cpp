@@ -27,8 +27,10 @@ void SampleOptions::validate() const {
     // ddpm takes every step of the model's schedule and ignores `steps`.
     if (sampler != Sampler::ddpm && (steps < 1 || steps > 10000))
         throw Error("sampling", "--steps", "1 to 10000 denoiser evaluations", std::to_string(steps));
-    // A non-finite scale turns every feature into NaN, found only much later (inverse kinematics, the IMU stage).
-    if (!std::isfinite(guidance)) throw Error("sampling", "--guidance", "a finite scale", std::to_string(guidance));
+    // A huge scale turns every feature into inf or NaN (1e20 does in float32), found only much later (inverse
+    // kinematics, the IMU stage). MDM samples at 2.5; past ~10 a scale extrapolates far beyond the data.
+    if (!(guidance >= 0 && guidance <= kMaxGuidance))
+        throw Error("sampling", "--guidance", "a scale from 0 to " + std::to_string(static_cast<int>(kMaxGuidance)), std::to_string(guidance));
     if (!(eta >= 0 && eta <= 1)) throw Error("sampling", "--eta", "0 to 1", std::to_string(eta));
     if (batch < 1) throw Error("sampling", "--batch", "at least 1", std::to_string(batch));
     if (!(strength > 0 && strength <= 1)) throw Error("sampling", "--strength", "above 0 and at most 1", std::to_string(strength));

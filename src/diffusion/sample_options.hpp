@@ -19,6 +19,8 @@ Sampler parse_sampler(const std::string& name, const std::string& option = "--sa
 // Denoiser evaluations per motion: DDPM takes every step of the model's schedule, the others `steps`.
 int denoiser_calls(Sampler sampler, int steps, int schedule_steps);
 
+constexpr double kMaxGuidance = 100;  // classifier-free guidance scales accepted: [0, kMaxGuidance]
+
 struct SampleOptions {
     int frames = 120;              // 20 fps; at most 196 (HumanML3D's longest)
     Sampler sampler = Sampler::ddpm;  // MDM's own: every step of the schedule (t2imu sample's default)

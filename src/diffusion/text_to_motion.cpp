@@ -186,6 +186,9 @@ std::vector<FeatureMatrix> sample_motions(MotionModel& model, const std::vector<
             case Sampler::ddim: x0 = sample_ddim(model.schedule, denoiser, x_T, steps, o.eta, noise, t_start); break;
             case Sampler::dpmpp: x0 = sample_dpmpp_2m(model.schedule, denoiser, x_T, steps, t_start); break;
         }
+        // Never a non-finite motion out of here: refused at the point it appears, naming what set it off.
+        if (!torch::isfinite(x0).all().item<bool>())
+            throw Error("sampling", "--guidance", "a scale whose motions stay finite", std::to_string(o.guidance) + " gave inf or NaN features");
         const torch::Tensor frames = x0.squeeze(2).permute({0, 2, 1}).to(torch::kCPU, torch::kFloat64).contiguous();  // [n, F, 263], normalised
         for (size_t i = 0; i < n; ++i) {
             FeatureMatrix f(o.frames, 263);

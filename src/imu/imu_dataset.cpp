@@ -9,6 +9,8 @@
 #include "core/atomic_file.hpp"
 #include "core/csv.hpp"
 #include "core/error.hpp"
+#include "core/output_path.hpp"
+#include "text/utf8.hpp"
 
 namespace t2imu {
 
@@ -73,8 +75,12 @@ std::vector<ImuRecording> read_imu_dataset(const std::string& dir, bool load) {
     for (const std::string& c : kColumns) m.column(c);
     std::vector<ImuRecording> out;
     for (size_t r = 0; r < m.rows.size(); ++r) {
+        for (size_t c = 0; c < m.header.size() && c < m.rows[r].size(); ++c)  // names go into JSON and reports
+            if (first_invalid_utf8(m.rows[r][c]) != std::string::npos)
+                throw Error(m.source, "row " + std::to_string(r + 2) + " column '" + m.header[c] + "'", "UTF-8 text", "bytes that are not UTF-8");
         ImuRecording rec;
         rec.path = m.rows[r][m.column("path")];
+        confined_path(dir, rec.path, m.source + " row " + std::to_string(r + 2) + " column 'path'");
         rec.dataset = m.rows[r][m.column("dataset")];
         rec.subject = m.rows[r][m.column("subject")];
         rec.activity = m.rows[r][m.column("activity")];
@@ -84,7 +90,10 @@ std::vector<ImuRecording> read_imu_dataset(const std::string& dir, bool load) {
             throw Error(m.source, "row " + std::to_string(r + 2) + " column 'rate_hz'", "a positive rate", "'" + m.rows[r][m.column("rate_hz")] + "'");
         for (size_t c = 0; c < m.header.size(); ++c)
             if (std::find(kColumns.begin(), kColumns.end(), m.header[c]) == kColumns.end()) rec.extra[m.header[c]] = m.rows[r][c];
-        rec.n_samples = static_cast<size_t>(m.number(r, m.column("n_samples")));
+        const double n = m.number(r, m.column("n_samples"));
+        if (!(n >= 0 && n <= 1e12 && n == std::floor(n)))
+            throw Error(m.source, "row " + std::to_string(r + 2) + " column 'n_samples'", "a whole number of samples from 0", "'" + m.rows[r][m.column("n_samples")] + "'");
+        rec.n_samples = static_cast<size_t>(n);
         if (load) load_samples(dir, rec, rec.n_samples);
         out.push_back(std::move(rec));
     }
@@ -98,7 +107,7 @@ void write_imu_dataset(const std::string& dir, const std::vector<ImuRecording>& 
         std::string text = sample_header() + "\n";
         text.reserve(text.size() + r.t.size() * 64);
         for (size_t i = 0; i < r.t.size(); ++i) append_sample_row(text, r.t[i], r.samples[i].data(), decimals);
-        write_file_atomic(dir + "/" + r.path, text);
+        write_file_atomic(confined_path(dir, r.path, dir + "/manifest.csv path"), text);
         ImuRecording row = r;
         row.n_samples = r.samples.size();
         row.t.clear();
