@@ -138,6 +138,15 @@ TEST(Trainer, LossFallsResumeContinuesExactlyAndFinetuneStartsFromTheWeights) {
 
     // The same run stopped after 20 steps and resumed: the same weights as the uninterrupted one.
     const std::string interrupted = test::write_tiny_train_config(dir, data, dir + "/resumed", "[loss]\nlambda_vel = 1.0\n");
+    // A time budget stops after the step that reaches it (here the first), saved like a finished run.
+    TrainConfig budget = read_train_config(interrupted);
+    budget.out = dir + "/budget";
+    budget.max_minutes = 1e-9;
+    const TrainProgress budgeted = train_mdm(budget, false);
+    EXPECT_EQ(budgeted.step, 1);
+    EXPECT_TRUE(budgeted.stopped_early);
+    EXPECT_TRUE(fs::exists(dir + "/budget/checkpoint.pt"));
+    EXPECT_TRUE(fs::exists(dir + "/budget/weights.safetensors"));
     train_mdm(read_train_config(interrupted), false, "", 20);
     const TrainProgress resumed = train_mdm(read_train_config(interrupted), true);
     EXPECT_EQ(resumed.step, 40);

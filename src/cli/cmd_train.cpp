@@ -13,9 +13,13 @@ namespace {
 
 void on_stop_signal(int) { request_training_stop(); }
 
-void run(const std::string& config_path, bool resume, const std::string& from, int64_t steps_override) {
+void run(const std::string& config_path, bool resume, const std::string& from, int64_t steps_override, double max_minutes) {
     TrainConfig c = read_train_config(config_path);
-    check_usage([&] { check_output_path(c.out, config_path + ": out"); });
+    check_usage([&] {
+        check_output_path(c.out, config_path + ": out");
+        if (!(max_minutes >= 0 && max_minutes < 1e7)) throw Error("--max-minutes", "minutes", "0 (no budget) or more", std::to_string(max_minutes));
+    });
+    c.max_minutes = max_minutes;
     c.threads = worker_threads();
     c.device = global_options().device;
     c.processes = read_process_group_env();  // torchrun's RANK, WORLD_SIZE, MASTER_ADDR, MASTER_PORT, LOCAL_RANK
@@ -24,7 +28,9 @@ void run(const std::string& config_path, bool resume, const std::string& from, i
     std::signal(SIGTERM, on_stop_signal);
     if (steps_override > 0) c.steps = steps_override;
     const TrainProgress p = train_mdm(c, resume, from);
-    if (c.processes.rank == 0) std::printf("%s: step %lld, last loss %.5f\n", c.out.c_str(), static_cast<long long>(p.step), p.loss);
+    if (c.processes.rank == 0)
+        std::printf("%s: step %lld, last loss %.5f%s\n", c.out.c_str(), static_cast<long long>(p.step), p.loss,
+                    p.stopped_early ? " (stopped early and saved: continue with --resume)" : "");
 }
 
 // Shown under both subcommands' --help.
@@ -45,19 +51,22 @@ static CommandRegistrar registrar([](CLI::App& root) {
     static std::string config, from;
     static bool resume = false;
     static int64_t steps = 0;
+    static double max_minutes = 0;
     train->add_option("--config", config, "training configuration (TOML)")->required()->check(CLI::ExistingFile);
     train->add_flag("--resume", resume, "continue from the model folder's checkpoint.pt");
     train->add_option("--steps", steps, "override train.steps");
+    train->add_option("--max-minutes", max_minutes, "stop after the step that reaches this wall time, saving model and checkpoint (0: no budget)");
     train->footer(kProcessesHelp);
-    train->callback([] { run(config, resume, "", steps); });
+    train->callback([] { run(config, resume, "", steps, max_minutes); });
 
     auto* finetune = root.add_subcommand("finetune", "start from a trained model folder (e.g. adding lambda_acc) with a fresh optimiser");
     finetune->add_option("--from", from, "the model folder to start from")->required()->check(CLI::ExistingDirectory);
     finetune->add_option("--config", config, "fine-tuning configuration (TOML; its out is the new folder)")->required()->check(CLI::ExistingFile);
     finetune->add_flag("--resume", resume, "continue an interrupted fine-tuning from its checkpoint");
     finetune->add_option("--steps", steps, "override train.steps");
+    finetune->add_option("--max-minutes", max_minutes, "stop after the step that reaches this wall time, saving model and checkpoint (0: no budget)");
     finetune->footer(kProcessesHelp);
-    finetune->callback([] { run(config, resume, resume ? "" : from, steps); });
+    finetune->callback([] { run(config, resume, resume ? "" : from, steps, max_minutes); });
 });
 
 }  // namespace t2imu::cli

@@ -393,7 +393,8 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
         const LossTerms terms = mdm_loss_terms(x0, x0_hat, lengths, mean, std, c);
         tr.optimiser->zero_grad();
         terms.total.backward();
-        const torch::Tensor stop_flag = torch::full({1}, g_stop_requested ? 1.0f : 0.0f, x0.options());
+        const bool out_of_time = c.max_minutes > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >= 60 * c.max_minutes;
+        const torch::Tensor stop_flag = torch::full({1}, g_stop_requested || out_of_time ? 1.0f : 0.0f, x0.options());
         const torch::Tensor riders =
             group.average_gradients(tr.parameters(), torch::cat({torch::stack({terms.simple, terms.pos, terms.vel, terms.foot, terms.acc, terms.total})
                                                                     .detach().to(torch::kFloat32), stop_flag}))
@@ -431,6 +432,7 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
     }
     group.barrier();  // the other ranks return once rank 0's files are written
     progress.step = tr.step;
+    progress.stopped_early = tr.step < last;
     return progress;
 }
 

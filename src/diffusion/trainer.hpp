@@ -47,6 +47,7 @@ struct TrainConfig {
     int threads = 0;
     std::string device = "cpu";  // a torch device: cpu, cuda, cuda:1 (not in the TOML: where to train is not what to train)
     ProcessGroupEnv processes;   // data-parallel ranks (torchrun's variables; not in the TOML either)
+    double max_minutes = 0;      // > 0: stop after the step that reaches this wall time, saved (a leased GPU's budget)
 
     // Throws Error naming `path` and the dotted field ("train.learning_rate") for a missing or out-of-range
     // value: sizes from 1, heads dividing their width, rates and dropouts in [0, 1), lambdas from 0.
@@ -68,6 +69,7 @@ double ema_decay_at(double max_decay, int64_t step);
 struct TrainProgress {
     int64_t step = 0;
     double loss = 0;  // the last logged total
+    bool stopped_early = false;  // by a signal or max_minutes, before its last step
 };
 
 // Trains into config.out (model.json, weights.safetensors, Mean.npy, Std.npy, checkpoint.pt, metrics.jsonl).

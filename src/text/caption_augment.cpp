@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "motion/activity_names.hpp"
 #include "text/word_tokenizer.hpp"
 
 namespace t2imu {
@@ -16,6 +17,13 @@ void unit_row(const float* v, float* out) {
     for (int d = 0; d < WordVectors::kDims; ++d) norm += static_cast<double>(v[d]) * v[d];
     const float scale = norm > 0 ? static_cast<float>(1.0 / std::sqrt(norm)) : 0.0f;
     for (int d = 0; d < WordVectors::kDims; ++d) out[d] = v[d] * scale;
+}
+
+bool is_direction(const std::string& w) {
+    static const char* const kDirections[] = {"up", "down", "upstairs", "downstairs", "upward", "upwards", "downward", "downwards",
+                                              "left", "right", "forward", "forwards", "backward", "backwards", "back", "front",
+                                              "clockwise", "counterclockwise", "anticlockwise", "counter-clockwise", "sideways"};
+    return std::find(std::begin(kDirections), std::end(kDirections), w) != std::end(kDirections);
 }
 
 bool is_word(const std::string& token) { return std::any_of(token.begin(), token.end(), [](unsigned char c) { return std::isalpha(c); }); }
@@ -83,7 +91,7 @@ std::string CaptionAugmenter::augment(const std::string& caption, std::mt19937_6
         if (!is_word(token)) { kept.push_back(token); continue; }
         if (drop < options_.dropout) continue;
         const int w = vectors_.index_of(token);
-        if (swap < options_.swap && w >= 0) {
+        if (swap < options_.swap && w >= 0 && !is_direction(token)) {
             const std::vector<int>& near = neighbours_of(w);
             if (!near.empty()) {
                 kept.push_back(vectors_.word(near[std::uniform_int_distribution<size_t>(0, near.size() - 1)(rng)]));
@@ -95,7 +103,7 @@ std::string CaptionAugmenter::augment(const std::string& caption, std::mt19937_6
     if (std::none_of(kept.begin(), kept.end(), is_word)) return caption;  // everything dropped: keep the caption
     std::string out;
     for (const std::string& t : kept) out += (out.empty() ? "" : " ") + t;
-    return out;
+    return activity_named_in(out) == activity_named_in(caption) ? out : caption;
 }
 
 }  // namespace t2imu

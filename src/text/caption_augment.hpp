@@ -10,6 +10,10 @@
 //     "strolls", "walked"; "slowly" -> "quickly" also happens, as word vectors put antonyms close: the rate
 //     keeps most words, and the motion still anchors the meaning;
 //   - dropped, with probability `dropout` (never the last word left).
+// Two things are never reworded, as word vectors put opposites side by side ("up" next to "down"): a direction
+// word (up, down, left, right, forward, backward, ...) is never swapped, and a rewording that names another
+// activity than the caption (motion/activity_names.hpp: "walks" -> "runs", "sits" -> "stands") is dropped for
+// the caption as it was.
 // Punctuation and words outside the vocabulary pass unchanged. The caption is rebuilt from its lower-case tokens
 // (word_tokenizer.hpp), which is what the GloVe encoder reads anyway.
 #pragma once
