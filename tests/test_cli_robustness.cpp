@@ -188,6 +188,12 @@ std::vector<Row> rows() {
         {"HarUnknownPosition", "har run --train {D}/imu --test {D}/imu --positions tentacle --repeats 1 --out {D}/o.json", imu_dataset("imu"), 1,
          "--positions: tentacle: expected a position the data set holds (chest)", {"o.json"}},
         {"HarWindowLongerThanTrials", kHar + "--window 100 --repeats 1 --out {D}/o.json", imu_dataset("imu"), 1, "--window: expected at most the longest trial", {"o.json"}},
+        {"HarWindowTooShort", kHar + "--window 0.5 --repeats 1 --out {D}/o.json", imu_dataset("imu"), 2,
+         "--window: 0.500000 s: expected at least 17 samples at --rate", {"o.json"}},
+        {"HarUnknownTestPosition", kHar + "--test-positions tentacle --repeats 1 --out {D}/o.json", imu_dataset("imu"), 1,
+         "--test-positions: tentacle: expected a position the data set holds", {"o.json"}},
+        {"HarUnknownClass", kHar + "--classes walking,tentacle --repeats 1 --out {D}/o.json", imu_dataset("imu"), 2,
+         "--classes: tentacle: expected a class of the training set", {"o.json"}},
         {"HarNanCell", kHar + "--repeats 1 --out {D}/o.json", imu_dataset("imu", "nan"), 1, "s1_walking_chest.csv: row 2 column 'acc_x': expected a finite number", {"o.json"}},
         // Usage errors are one line with exit code 2.
         {"MissingRequiredOption", "synth", {}, 2, "--prompts is required", {}},

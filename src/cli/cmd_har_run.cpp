@@ -1,4 +1,6 @@
 // t2imu har run: DeepConvLSTM trained on one IMU dataset, tested on another (or leave-one-subject-out).
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <sstream>
@@ -8,6 +10,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/output_path.hpp"
+#include "har/nn/deepconvlstm.hpp"
 #include "har/nn/har_training.hpp"
 
 namespace t2imu::cli {
@@ -35,7 +38,7 @@ void run(HarArgs a) {
     w.gyro = a.channels == "acc,gyr";
     w.positions = split_list(a.positions);
     WindowOptions wt = w;
-    if (!a.test_positions.empty()) wt.positions = split_list(a.test_positions);
+    if (!a.test_positions.empty()) wt.positions = split_list(a.test_positions), wt.positions_option = "--test-positions";
     a.options.verbose = global_options().verbose;
     check_usage([&] {
         if (a.loso == !a.test.empty()) throw Error("har run", "--test", "either --test DATASET or --loso");
@@ -44,13 +47,20 @@ void run(HarArgs a) {
             throw Error("--test-positions", "positions", std::to_string(w.positions.size()) + " positions, one per training position");
         if (a.folds < 0) throw Error("har run", "--folds", "0 (one per subject) or more", std::to_string(a.folds));
         w.validate();
+        if (std::lround(w.window_s * w.rate_hz) < kDeepConvLstmMinWindow)
+            throw Error("--window", std::to_string(w.window_s) + " s", "at least " + std::to_string(kDeepConvLstmMinWindow) +
+                        " samples at --rate (DeepConvLSTM's four convolutions of kernel 5)");
         a.options.validate();
         check_output_path(a.out, "--out");
     });
     WindowSet train = make_windows(read_imu_dataset(a.train), w);
     if (!a.classes.empty()) {
         std::map<std::string, std::string> keep;
-        for (const std::string& c : split_list(a.classes)) keep[c] = c;
+        for (const std::string& c : split_list(a.classes)) {
+            if (std::find(train.labels.begin(), train.labels.end(), c) == train.labels.end())
+                throw UsageError("--classes: " + c + ": expected a class of the training set");
+            keep[c] = c;
+        }
         train = relabel(train, keep);
     }
     HarResult result;

@@ -31,14 +31,14 @@ bool position_matches(const std::string& wanted, const std::string& position) {
 }
 
 // A wanted position no recording matches is a typo or the wrong data set, not an empty result.
-void check_positions_held(const std::vector<ImuRecording>& recordings, const std::vector<std::string>& positions) {
+void check_positions_held(const std::vector<ImuRecording>& recordings, const std::vector<std::string>& positions, const std::string& option) {
     std::set<std::string> held;
     for (const ImuRecording& r : recordings) held.insert(r.position);
     for (const std::string& p : positions) {
         if (std::any_of(held.begin(), held.end(), [&](const std::string& h) { return position_matches(p, h); })) continue;
         std::string list;
         for (const std::string& h : held) list += (list.empty() ? "" : ", ") + h;
-        throw Error("--positions", p, "a position the data set holds (" + list + ")");
+        throw Error(option, p, "a position the data set holds (" + list + ")");
     }
 }
 
@@ -83,10 +83,10 @@ WindowSet make_windows(const std::vector<ImuRecording>& recordings, const Window
     if (positions.empty()) {
         std::set<std::string> all;
         for (const ImuRecording& r : recordings) all.insert(r.position);
-        if (all.size() != 1) throw Error("--positions", "positions", "a choice: the data set holds " + std::to_string(all.size()) + " positions");
+        if (all.size() != 1) throw Error(o.positions_option, "positions", "a choice: the data set holds " + std::to_string(all.size()) + " positions");
         positions = {*all.begin()};
     }
-    check_positions_held(recordings, positions);
+    check_positions_held(recordings, positions, o.positions_option);
     std::map<std::string, std::vector<const ImuRecording*>> trials;
     for (const ImuRecording& r : recordings) trials[r.dataset + "|" + trial_key(r)].push_back(&r);
     WindowSet w;

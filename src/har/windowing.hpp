@@ -21,6 +21,7 @@ struct WindowOptions {
     double rate_hz = 20, window_s = 2, overlap = 0.5;
     bool gyro = false;                   // acc only, or acc and gyr
     std::vector<std::string> positions;  // empty: the data set must hold a single position
+    std::string positions_option = "--positions";  // the option errors about `positions` name
 
     // Throws Error naming the option (--rate, --window, --overlap) for a value out of range or not finite.
     void validate() const;

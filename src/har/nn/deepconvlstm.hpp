@@ -6,6 +6,9 @@
 
 namespace t2imu {
 
+// The shortest window (samples) the network takes: four unpadded convolutions of kernel 5 take 4 samples each.
+constexpr int kDeepConvLstmMinWindow = 4 * (5 - 1) + 1;
+
 struct DeepConvLstmImpl : torch::nn::Module {
     DeepConvLstmImpl(int channels, int classes, int filters = 64, int kernel = 5, int hidden = 128, double dropout = 0.5);
     // x: [batch, time, channels] -> logits [batch, classes] (softmax is in the loss / argmax).
