@@ -22,7 +22,12 @@ static void add_import_command(CLI::App& motion) {
     cmd->add_option("--source-fps", options.source_fps, "frame rate of an AMC clip (AMC does not record it)")
         ->capture_default_str();
     cmd->callback([] {
-        check_usage([] { check_output_path(out, "--out"); });
+        check_usage([] {
+            if (!(options.fps >= 0 && options.fps <= 1000)) throw Error("--fps", "rate", "0 (the capture rate) to 1000 fps", std::to_string(options.fps));
+            if (!(options.source_fps > 0 && options.source_fps <= 1000))
+                throw Error("--source-fps", "rate", "above 0 and at most 1000 fps", std::to_string(options.source_fps));
+            check_output_path(out, "--out");
+        });
         write_npy(out, joint_sequence_to_array(import_motion(in, options)));
     });
 }

