@@ -1,23 +1,23 @@
 #!/usr/bin/env bash
 # Reproduces the shipped text-to-motion models from the open motion capture:
-#   models/default          MDM (4 layers x 256) + the GloVe text encoder (experiments/train-default.toml)
-#   models/default-lacc     the default model fine-tuned with the paper's L_acc added, λ_acc = 0.01 (finetune-lacc.toml)
-#   models/default-lacc-1   the same with λ_acc = 1 (finetune-lacc-1.toml), for the comparison in its model card
-#   models/default-control  the default model trained on for as many steps without L_acc (finetune-control.toml)
-#   models/default-v5       the default model trained on over the shared mocap v5 and the derived clips
-#                           (finetune-v5.toml; the main job's model; its model card says how many steps shipped)
+#   models/default          MDM (4 layers x 256) + the GloVe text encoder (experiments/train-default.toml; the
+#                           shipped one ran 11,262 steps on an H200: its model card)
+#   models/lacc-sweep/*     the L_acc sweep from it: lambda_acc 0.01, 0.1, 1 and a control without L_acc
+#                           (experiments/lacc-sweep/*.toml); models/default-lacc is the sweep's best, copied
 # and their per-sample L_acc on the test split (cache/lacc/*.csv; `t2imu analysis lacc` aggregates them).
 # Usage: bash scripts/train-default.sh [--device cuda] [--base-steps N] [--finetune-steps N] [--mocap DIR]
-# The shipped models came from a GPU run of the same steps (their model cards say which hardware and steps).
+#        [--max-minutes N]  (each training stops at that wall-time budget, saved; rerun with the same options
+#        to continue: a finished or stopped run resumes from its checkpoint)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-device=cpu base_steps="" finetune_steps="" mocap="../shared/data/mocap"
+device=cpu base_steps=12000 finetune_steps="" mocap="../shared/data/mocap" budget=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --device) device=$2; shift 2 ;;
     --base-steps) base_steps=$2; shift 2 ;;
     --finetune-steps) finetune_steps=$2; shift 2 ;;
     --mocap) mocap=$2; shift 2 ;;
+    --max-minutes) budget=$2; shift 2 ;;
     *) echo "unknown option $1" >&2; exit 2 ;;
   esac
 done
@@ -27,11 +27,13 @@ if [ ! -f cache/dataset/summary.json ]; then
   bash scripts/unpack-mocap.sh "$mocap" cache/mocap
   build/t2imu data build --mocap cache/mocap --mirror --out cache/dataset
 fi
-$t2imu train --config experiments/train-default.toml ${base_steps:+--steps $base_steps}
-for run in lacc lacc-1 control v5; do
-  $t2imu finetune --from models/default --config experiments/finetune-$run.toml ${finetune_steps:+--steps $finetune_steps}
+resume() { [ -f "$1/checkpoint.pt" ] && echo --resume || true; }
+$t2imu train --config experiments/train-default.toml --steps "$base_steps" --max-minutes "$budget" $(resume models/default)
+for run in control lambda-0.01 lambda-0.1 lambda-1; do
+  $t2imu finetune --from models/default --config experiments/lacc-sweep/$run.toml ${finetune_steps:+--steps $finetune_steps} \
+    --max-minutes "$budget" $(resume models/lacc-sweep/$run)
 done
 mkdir -p cache/lacc
-for model in default default-lacc default-lacc-1 default-control; do
-  $t2imu eval-lacc --model models/$model --dataset cache/dataset --split test --seed 0 --out cache/lacc/$model.csv
+for model in default lacc-sweep/control lacc-sweep/lambda-0.01 lacc-sweep/lambda-0.1 lacc-sweep/lambda-1; do
+  $t2imu eval-lacc --model models/$model --dataset cache/dataset --split test --seed 0 --out cache/lacc/${model//\//_}.csv
 done

@@ -43,7 +43,7 @@ SampleOptions synth_sampling_defaults();
 struct SynthOptions {
     std::string prompts;                 // prompt set file (text/prompt_set.hpp)
     int samples_per_prompt = 1;
-    std::string model = "models/default-v5";  // a model folder, retrieval:DATASET or hybrid:...
+    std::string model = "models/default";  // a model folder, retrieval:DATASET or hybrid:...
     std::string vocab;                   // GloVe vocabulary for retrieval ("" = default)
     SampleOptions sampling = synth_sampling_defaults();  // sampler, steps, guidance, seed (of job 0), batch
     double seconds = 6;                  // motion length (20 fps; at most 9.8 s)
