@@ -1,8 +1,8 @@
 // t2imu har run: DeepConvLSTM trained on one IMU dataset, tested on another (or leave-one-subject-out).
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "cli/command.hpp"
@@ -10,6 +10,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/output_path.hpp"
+#include "har/class_map.hpp"
 #include "har/nn/deepconvlstm.hpp"
 #include "har/nn/har_training.hpp"
 
@@ -53,14 +54,16 @@ void run(HarArgs a) {
         a.options.validate();
         check_output_path(a.out, "--out");
     });
+    if (!a.classes.empty()) {  // checked on the manifest, before any samples are read
+        std::set<std::string> held;
+        for (const ImuRecording& r : read_imu_dataset(a.train, false)) held.insert(map_activity(r.dataset, r.activity));
+        for (const std::string& c : split_list(a.classes))
+            if (!held.count(c)) throw UsageError("--classes: " + c + ": expected a class of the training set");
+    }
     WindowSet train = make_windows(read_imu_dataset(a.train), w);
     if (!a.classes.empty()) {
         std::map<std::string, std::string> keep;
-        for (const std::string& c : split_list(a.classes)) {
-            if (std::find(train.labels.begin(), train.labels.end(), c) == train.labels.end())
-                throw UsageError("--classes: " + c + ": expected a class of the training set");
-            keep[c] = c;
-        }
+        for (const std::string& c : split_list(a.classes)) keep[c] = c;
         train = relabel(train, keep);
     }
     HarResult result;

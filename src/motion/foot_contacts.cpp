@@ -10,20 +10,20 @@ namespace t2imu {
 
 namespace {
 
-// Horizontal speed of joint j at frame f (m/s): central difference, one-sided at the ends.
-double horizontal_speed(const JointSequence& m, int f, int j) {
+// Velocity of joint j at frame f (m/s): central difference, one-sided at the ends.
+Eigen::Vector3d velocity(const JointSequence& m, int f, int j) {
     const int a = std::max(0, f - 1), b = std::min(m.num_frames - 1, f + 1);
-    const Eigen::Vector3d d = m.at(b, j) - m.at(a, j);
-    return std::hypot(d.x(), d.z()) * m.fps / (b - a);
+    return (m.at(b, j) - m.at(a, j)) * m.fps / (b - a);
 }
 
-double vertical_speed(const JointSequence& m, int f, int j) {
-    const int a = std::max(0, f - 1), b = std::min(m.num_frames - 1, f + 1);
-    return std::abs(m.at(b, j).y() - m.at(a, j).y()) * m.fps / (b - a);
+double horizontal_speed(const JointSequence& m, int f, int j) {
+    const Eigen::Vector3d v = velocity(m, f, j);
+    return std::hypot(v.x(), v.z());
 }
 
 bool still(const JointSequence& m, int f, int j) {
-    return horizontal_speed(m, f, j) < kStanceSpeed && vertical_speed(m, f, j) < kPlantVerticalSpeed;
+    const Eigen::Vector3d v = velocity(m, f, j);
+    return std::hypot(v.x(), v.z()) < kStanceSpeed && std::abs(v.y()) < kPlantVerticalSpeed;
 }
 
 bool low_and_slow(const JointSequence& m, int f, int j, double lowest) {

@@ -12,6 +12,18 @@ JointSequence::JointSequence(int frames, int joints, double fps_)
     : num_frames(frames), num_joints(joints), fps(fps_),
       positions(static_cast<size_t>(frames) * static_cast<size_t>(joints), Eigen::Vector3d::Zero()) {}
 
+double lowest_joint_height_at(const JointSequence& s, int frame) {
+    double low = s.at(frame, 0).y();
+    for (int j = 1; j < s.num_joints; ++j) low = std::min(low, s.at(frame, j).y());
+    return low;
+}
+
+double lowest_joint_height(const JointSequence& s) {
+    double low = lowest_joint_height_at(s, 0);
+    for (int f = 1; f < s.num_frames; ++f) low = std::min(low, lowest_joint_height_at(s, f));
+    return low;
+}
+
 JointSequence slice_frames(const JointSequence& s, int begin, int end) {
     JointSequence out(end - begin, s.num_joints, s.fps);
     std::copy(s.positions.begin() + static_cast<std::ptrdiff_t>(begin) * s.num_joints,

@@ -28,6 +28,10 @@ struct JointSequence {
 // (seconds) into frame counts at any rate.
 inline int frames_of(double seconds, double fps) { return static_cast<int>(std::lround(seconds * fps)); }
 
+// The lowest joint's height (y, m) at `frame`, and over the whole motion (at least one frame and joint).
+double lowest_joint_height_at(const JointSequence& s, int frame);
+double lowest_joint_height(const JointSequence& s);
+
 // Frames [begin, end) of `s`, same joints and rate.
 JointSequence slice_frames(const JointSequence& s, int begin, int end);
 

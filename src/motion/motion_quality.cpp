@@ -73,9 +73,7 @@ MotionQuality score_motion_on_ground(const JointSequence& m, const GroundHeight&
 
 double place_on_floor(JointSequence& m) {
     if (m.num_frames == 0 || m.num_joints == 0) return 0;
-    double low = m.at(0, 0).y();
-    for (int f = 0; f < m.num_frames; ++f)
-        for (int j = 0; j < m.num_joints; ++j) low = std::min(low, m.at(f, j).y());
+    const double low = lowest_joint_height(m);
     for (int f = 0; f < m.num_frames; ++f)
         for (int j = 0; j < m.num_joints; ++j) m.at(f, j).y() -= low;
     return -low;

@@ -31,11 +31,8 @@ bool on_floor(const Foothold& h) { return std::abs(h.height) <= kFloorBand; }
 // Whether the body stands on h: at some frame of it the foot is the body's lowest part (within kFloorBand).
 bool carries_body(const JointSequence& m, const Foothold& h) {
     const std::array<int, 2>& foot = h.phase.foot == Foot::left ? smpl22::kFootLeft : smpl22::kFootRight;
-    for (int f = h.phase.first_frame; f <= h.phase.last_frame; ++f) {
-        double lowest = m.at(f, 0).y();
-        for (int j = 1; j < m.num_joints; ++j) lowest = std::min(lowest, m.at(f, j).y());
-        if (std::min(m.at(f, foot[0]).y(), m.at(f, foot[1]).y()) <= lowest + kFloorBand) return true;
-    }
+    for (int f = h.phase.first_frame; f <= h.phase.last_frame; ++f)
+        if (std::min(m.at(f, foot[0]).y(), m.at(f, foot[1]).y()) <= lowest_joint_height_at(m, f) + kFloorBand) return true;
     return false;
 }
 
@@ -65,10 +62,7 @@ void link_lowest_to_floor(const JointSequence& m, std::vector<Foothold>& holds) 
         return (a.raised ? a.height : INFINITY) < (b.raised ? b.height : INFINITY);
     });
     if (low == holds.end() || !low->raised || low->height > kMaxFootholdRise) return;
-    double lowest_joint = std::numeric_limits<double>::infinity();
-    for (int f = 0; f < m.num_frames; ++f)
-        for (int j = 0; j < m.num_joints; ++j) lowest_joint = std::min(lowest_joint, m.at(f, j).y());
-    low->grounded = std::abs(lowest_joint) <= kFloorBand;
+    low->grounded = std::abs(lowest_joint_height(m)) <= kFloorBand;
 }
 
 // Horizontal distance (m) from p to the footprint's ankle-toe segment.
