@@ -12,7 +12,7 @@ using namespace t2imu;
 
 namespace {
 
-torch::Tensor load(const std::string& relative) {
+torch::Tensor load_mdm_reference(const std::string& relative) {
     const NdArray a = read_npy(test::shared_path(relative));
     if (a.dtype == DType::i64) {
         std::vector<int64_t> v = a.to<int64_t>();
@@ -36,11 +36,11 @@ TEST(Mdm, MatchesTheOfficialForwardCondUncondAndGuided) {
     SHARED_OR_SKIP(weights, "reference/mdm/mdm_tiny.safetensors");
     Mdm model = tiny_model();
     torch::NoGradGuard no_grad;
-    const torch::Tensor x = load("reference/mdm/forward/x.npy"), t = load("reference/mdm/forward/timesteps.npy");
-    const torch::Tensor text = load("reference/mdm/forward/text_embed.npy");
-    const double cond = (model->forward(x, t, text) - load("reference/mdm/forward/out_cond.npy")).abs().max().item<double>();
-    const double uncond = (model->forward(x, t, text, true) - load("reference/mdm/forward/out_uncond.npy")).abs().max().item<double>();
-    const double cfg = (model->forward_guided(x, t, text, 2.5) - load("reference/mdm/forward/out_cfg_scale2.5.npy")).abs().max().item<double>();
+    const torch::Tensor x = load_mdm_reference("reference/mdm/forward/x.npy"), t = load_mdm_reference("reference/mdm/forward/timesteps.npy");
+    const torch::Tensor text = load_mdm_reference("reference/mdm/forward/text_embed.npy");
+    const double cond = (model->forward(x, t, text) - load_mdm_reference("reference/mdm/forward/out_cond.npy")).abs().max().item<double>();
+    const double uncond = (model->forward(x, t, text, true) - load_mdm_reference("reference/mdm/forward/out_uncond.npy")).abs().max().item<double>();
+    const double cfg = (model->forward_guided(x, t, text, 2.5) - load_mdm_reference("reference/mdm/forward/out_cfg_scale2.5.npy")).abs().max().item<double>();
     EXPECT_LT(cond, 1e-5);
     EXPECT_LT(uncond, 1e-5);
     EXPECT_LT(cfg, 1e-5);
@@ -105,7 +105,7 @@ TEST(Mdm, CliForwardMatchesTheReference) {
                                    "/forward/x.npy --timesteps " + r + "/forward/timesteps.npy --text-embed " + r +
                                    "/forward/text_embed.npy --guidance 2.5 --out " + out);
     ASSERT_EQ(run.exit_code, 0) << run.output;
-    EXPECT_LT((load("reference/mdm/forward/out_cfg_scale2.5.npy") - [&] {
+    EXPECT_LT((load_mdm_reference("reference/mdm/forward/out_cfg_scale2.5.npy") - [&] {
                   const NdArray a = read_npy(out);
                   std::vector<float> v = a.to<float>();
                   return torch::from_blob(v.data(), a.shape, torch::kFloat).clone();

@@ -6,6 +6,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "nn/dropout.hpp"
 #include "nn/state_dict.hpp"
 
 namespace t2imu {
@@ -61,14 +62,16 @@ MdmImpl::MdmImpl(const MdmConfig& c) : config_(c) {
     time_embed_ = embed_timestep->register_module(
         "time_embed", nn::Sequential(nn::Linear(c.latent_dim, c.latent_dim), nn::SiLU(), nn::Linear(c.latent_dim, c.latent_dim)));
     embed_text_ = register_module("embed_text", nn::Linear(c.text_dim, c.latent_dim));
-    auto layer = nn::TransformerEncoderLayer(nn::TransformerEncoderLayerOptions(c.latent_dim, c.num_heads)
-                                                 .dim_feedforward(c.ff_size)
-                                                 .dropout(c.dropout)
-                                                 .activation(torch::kGELU));
-    encoder_ = register_module("seqTransEncoder", nn::TransformerEncoder(nn::TransformerEncoderOptions(layer, c.num_layers)));
+    EncoderOptions encoder;
+    encoder.d_model = c.latent_dim;
+    encoder.nhead = c.num_heads;
+    encoder.dim_feedforward = c.ff_size;
+    encoder.num_layers = c.num_layers;
+    encoder.dropout = c.dropout;
+    encoder.gelu = true;
+    encoder_ = register_module("seqTransEncoder", TransformerEncoder(encoder));
     auto output_process = register_module("output_process", std::make_shared<Named>());
     pose_final_ = output_process->register_module("poseFinal", nn::Linear(c.latent_dim, c.njoints));
-    pos_dropout_ = register_module("pos_dropout", nn::Dropout(c.dropout));
     pe_ = register_buffer("pe", sinusoidal_table(c.max_len, c.latent_dim));
 }
 
@@ -82,14 +85,14 @@ torch::Tensor MdmImpl::forward(const torch::Tensor& x, const torch::Tensor& time
     // Frames [F, B, d]; then [F + 1, B, d] with positions added.
     const torch::Tensor h = pose_embedding_->forward(x.squeeze(2).permute({2, 0, 1}));
     torch::Tensor seq = torch::cat({emb, h}, 0);
-    seq = pos_dropout_->forward(seq + pe_.index({torch::indexing::Slice(0, frames + 1)}));
+    seq = hashed_dropout(seq + pe_.index({torch::indexing::Slice(0, frames + 1)}), config_.dropout, is_training());
     torch::Tensor padding;  // [B, F + 1], true where attention must not look; the condition token is always seen
     if (config_.mask_frames && lengths.defined()) {
         const torch::Tensor f = torch::arange(frames, torch::TensorOptions().dtype(torch::kLong).device(x.device()));
         const torch::Tensor pad = f.unsqueeze(0) >= lengths.to(torch::kLong).unsqueeze(1);
         padding = torch::cat({torch::zeros({x.size(0), 1}, pad.options()), pad}, 1);
     }
-    const torch::Tensor out = encoder_->forward(seq, {}, padding).index({torch::indexing::Slice(1, torch::indexing::None)});
+    const torch::Tensor out = encoder_->forward(seq, padding).index({torch::indexing::Slice(1, torch::indexing::None)});
     return pose_final_->forward(out).permute({1, 2, 0}).unsqueeze(2);  // [B, 263, 1, F]
 }
 

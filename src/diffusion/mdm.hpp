@@ -5,7 +5,7 @@
 //   embed_timestep.time_embed     pe[t] -> Linear -> SiLU -> Linear
 //   embed_text                    Linear text_dim -> d (the unconditional pass zeroes the text before it)
 //   sequence_pos_encoder          sinusoidal positions (the same table serves the timesteps)
-//   seqTransEncoder               post-norm TransformerEncoder, GELU
+//   seqTransEncoder               post-norm Transformer encoder, GELU (nn/transformer_encoder.hpp)
 //   output_process.poseFinal      Linear d -> 263, on every frame but the condition token
 // The condition token (time + text) is prepended at position 0. Motions use the official layout
 // [batch, 263, 1, frames]; text embeddings are [batch, text_dim].
@@ -13,6 +13,8 @@
 #include <torch/torch.h>
 
 #include <string>
+
+#include "nn/transformer_encoder.hpp"
 
 namespace t2imu {
 
@@ -51,8 +53,7 @@ private:
     torch::Tensor pe_;  // [max_len, 1, d], a fixed buffer (not saved, as official checkpoints omit it)
     torch::nn::Linear pose_embedding_{nullptr}, embed_text_{nullptr}, pose_final_{nullptr};
     torch::nn::Sequential time_embed_{nullptr};
-    torch::nn::TransformerEncoder encoder_{nullptr};
-    torch::nn::Dropout pos_dropout_{nullptr};
+    TransformerEncoder encoder_{nullptr};
 };
 TORCH_MODULE(Mdm);
 
