@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.hpp"
@@ -83,6 +84,7 @@ TEST(Trainer, ConfigIsStrict) {
     EXPECT_NE(replaced("seed = 3\n", "seed = -3\n").find("train.seed"), std::string::npos);
     EXPECT_NE(replaced("acc_space = \"joints\"", "acc_space = \"pose\"").find("loss.acc_space"), std::string::npos);
     EXPECT_NE(replaced("num_heads = 2\n", "num_heads = 3\n").find("model.num_heads"), std::string::npos);
+    EXPECT_NE(replaced("[train]\n", "[train]\nprecision = \"fp16\"\n").find("train.precision"), std::string::npos);
 }
 
 TEST(Trainer, EmaDecayWarmsUpSoTheInitialisationIsForgotten) {
@@ -172,6 +174,35 @@ TEST(Trainer, LossFallsResumeContinuesExactlyAndFinetuneStartsFromTheWeights) {
     std::string first;
     std::getline(tuned, first);
     EXPECT_LT(nlohmann::json::parse(first)["l_simple"].get<double>(), losses[0]);
+}
+
+// bf16 autocast trains the tiny model on the same trajectory as fp32 within bf16's rounding: the logged losses
+// fall alike, and the per-part profile accounts for every profiled step.
+TEST(Trainer, Bf16FollowsFp32AndTheProfileCoversEveryPart) {
+    torch::set_num_threads(1);
+    const std::string dir = test::scratch_dir("trainer_bf16");
+    const std::string data = test::make_tiny_motion_dataset(dir + "/data");
+    std::map<std::string, std::vector<double>> losses;
+    for (const std::string precision : {"fp32", "bf16"}) {
+        const std::string config = test::write_tiny_train_config(dir, data, dir + "/" + precision, "");
+        std::string text = read_file_text(config);
+        text.replace(text.find("[train]\n"), 8, "[train]\nprecision = \"" + precision + "\"\n");
+        std::ofstream(config) << text;
+        const TrainProgress p = train_mdm(read_train_config(config), false);
+        EXPECT_EQ(p.profile.steps, 39) << precision;  // all but the first
+        for (const double part : {p.profile.data, p.profile.text, p.profile.forward, p.profile.backward, p.profile.optimiser, p.profile.log})
+            EXPECT_GT(part, 0.0) << precision;
+        EXPECT_EQ(nlohmann::json::parse(read_file_text(dir + "/" + precision + "/model.json"))["training"]["precision"], precision);
+        std::ifstream metrics(dir + "/" + precision + "/metrics.jsonl");
+        for (std::string line; std::getline(metrics, line);) losses[precision].push_back(nlohmann::json::parse(line)["loss"].get<double>());
+    }
+    const std::vector<double>&a = losses["fp32"], &b = losses["bf16"];
+    ASSERT_EQ(a.size(), 8u);
+    ASSERT_EQ(b.size(), 8u);
+    EXPECT_NEAR(b[0], a[0], 0.02 * a[0]);  // the same first batch through the same initial weights
+    const double end_a = (a[5] + a[6] + a[7]) / 3, end_b = (b[5] + b[6] + b[7]) / 3;
+    EXPECT_LT(end_b, 0.7 * b[0]);
+    EXPECT_NEAR(end_b, end_a, 0.15 * end_a);
 }
 
 TEST(Trainer, SampleFromATrainedModelIsSeededAndBatchIndependent) {

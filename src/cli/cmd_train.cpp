@@ -6,6 +6,7 @@
 #include "cli/usage.hpp"
 #include "core/output_path.hpp"
 #include "diffusion/trainer.hpp"
+#include "nn/autocast.hpp"
 
 namespace t2imu::cli {
 
@@ -13,24 +14,45 @@ namespace {
 
 void on_stop_signal(int) { request_training_stop(); }
 
-void run(const std::string& config_path, bool resume, const std::string& from, int64_t steps_override, double max_minutes) {
-    TrainConfig c = read_train_config(config_path);
+// One line per part: seconds per step and share of the step (trainer.hpp StepProfile).
+void print_profile(const StepProfile& p, int batch) {
+    if (p.steps == 0) return;
+    const double total = p.total(), n = static_cast<double>(p.steps);
+    std::printf("profile over %lld steps: %.3f s per step, %.1f samples/s\n", static_cast<long long>(p.steps), total / n, batch * n / total);
+    const std::pair<const char*, double> parts[] = {{"data", p.data}, {"text", p.text}, {"forward", p.forward}, {"backward", p.backward},
+                                                    {"optimiser", p.optimiser}, {"ema", p.ema}, {"log", p.log}};
+    for (const auto& [name, seconds] : parts) std::printf("  %-9s %8.4f s %5.1f %%\n", name, seconds / n, 100 * seconds / total);
+}
+
+struct RunOptions {
+    std::string config, from, precision;
+    bool resume = false, profile = false;
+    int64_t steps = 0;
+    double max_minutes = 0;
+};
+
+void run(const RunOptions& o) {
+    TrainConfig c = read_train_config(o.config);
     check_usage([&] {
-        check_output_path(c.out, config_path + ": out");
-        if (!(max_minutes >= 0 && max_minutes < 1e7)) throw Error("--max-minutes", "minutes", "0 (no budget) or more", std::to_string(max_minutes));
+        check_output_path(c.out, o.config + ": out");
+        if (!(o.max_minutes >= 0 && o.max_minutes < 1e7)) throw Error("--max-minutes", "minutes", "0 (no budget) or more", std::to_string(o.max_minutes));
+        if (!o.precision.empty()) parse_precision(o.precision, "--precision", "value");
     });
-    c.max_minutes = max_minutes;
+    if (!o.precision.empty()) c.precision = o.precision;
+    c.max_minutes = o.max_minutes;
     c.threads = worker_threads();
     c.device = global_options().device;
     c.processes = read_process_group_env();  // torchrun's RANK, WORLD_SIZE, MASTER_ADDR, MASTER_PORT, LOCAL_RANK
     // Ctrl-C or a scheduler's SIGTERM: finish the step, save, exit normally (resume with --resume).
     std::signal(SIGINT, on_stop_signal);
     std::signal(SIGTERM, on_stop_signal);
-    if (steps_override > 0) c.steps = steps_override;
-    const TrainProgress p = train_mdm(c, resume, from);
-    if (c.processes.rank == 0)
-        std::printf("%s: step %lld, last loss %.5f%s\n", c.out.c_str(), static_cast<long long>(p.step), p.loss,
-                    p.stopped_early ? " (stopped early and saved: continue with --resume)" : "");
+    if (o.steps > 0) c.steps = o.steps;
+    c.profile = o.profile;
+    const TrainProgress p = train_mdm(c, o.resume, o.resume ? "" : o.from);
+    if (c.processes.rank != 0) return;
+    std::printf("%s: step %lld, last loss %.5f%s\n", c.out.c_str(), static_cast<long long>(p.step), p.loss,
+                p.stopped_early ? " (stopped early and saved: continue with --resume)" : "");
+    if (o.profile) print_profile(p.profile, c.batch);
 }
 
 // Shown under both subcommands' --help.
@@ -48,25 +70,24 @@ const char* const kProcessesHelp =
 
 static CommandRegistrar registrar([](CLI::App& root) {
     auto* train = root.add_subcommand("train", "train MDM + the GloVe text encoder (TOML config) into a model folder");
-    static std::string config, from;
-    static bool resume = false;
-    static int64_t steps = 0;
-    static double max_minutes = 0;
-    train->add_option("--config", config, "training configuration (TOML)")->required()->check(CLI::ExistingFile);
-    train->add_flag("--resume", resume, "continue from the model folder's checkpoint.pt");
-    train->add_option("--steps", steps, "override train.steps");
-    train->add_option("--max-minutes", max_minutes, "stop after the step that reaches this wall time, saving model and checkpoint (0: no budget)");
-    train->footer(kProcessesHelp);
-    train->callback([] { run(config, resume, "", steps, max_minutes); });
+    static RunOptions o;
+    const auto common = [](CLI::App* cmd) {
+        cmd->add_option("--steps", o.steps, "override train.steps");
+        cmd->add_option("--max-minutes", o.max_minutes, "stop after the step that reaches this wall time, saving model and checkpoint (0: no budget)");
+        cmd->add_option("--precision", o.precision, "override train.precision: fp32, or bf16 (the forward's products in bfloat16)");
+        cmd->add_flag("--profile", o.profile, "print seconds per step of each part (data, text, forward, backward, optimiser, ema, log)");
+        cmd->footer(kProcessesHelp);
+        cmd->callback([] { run(o); });
+    };
+    train->add_option("--config", o.config, "training configuration (TOML)")->required()->check(CLI::ExistingFile);
+    train->add_flag("--resume", o.resume, "continue from the model folder's checkpoint.pt");
+    common(train);
 
     auto* finetune = root.add_subcommand("finetune", "start from a trained model folder (e.g. adding lambda_acc) with a fresh optimiser");
-    finetune->add_option("--from", from, "the model folder to start from")->required()->check(CLI::ExistingDirectory);
-    finetune->add_option("--config", config, "fine-tuning configuration (TOML; its out is the new folder)")->required()->check(CLI::ExistingFile);
-    finetune->add_flag("--resume", resume, "continue an interrupted fine-tuning from its checkpoint");
-    finetune->add_option("--steps", steps, "override train.steps");
-    finetune->add_option("--max-minutes", max_minutes, "stop after the step that reaches this wall time, saving model and checkpoint (0: no budget)");
-    finetune->footer(kProcessesHelp);
-    finetune->callback([] { run(config, resume, resume ? "" : from, steps, max_minutes); });
+    finetune->add_option("--from", o.from, "the model folder to start from")->required()->check(CLI::ExistingDirectory);
+    finetune->add_option("--config", o.config, "fine-tuning configuration (TOML; its out is the new folder)")->required()->check(CLI::ExistingFile);
+    finetune->add_flag("--resume", o.resume, "continue an interrupted fine-tuning from its checkpoint");
+    common(finetune);
 });
 
 }  // namespace t2imu::cli

@@ -18,6 +18,7 @@
 #include "diffusion/gaussian_diffusion.hpp"
 #include "diffusion/losses.hpp"
 #include "diffusion/recover_from_ric_torch.hpp"
+#include "nn/autocast.hpp"
 #include "nn/state_dict.hpp"
 #include "nn/threads.hpp"
 
@@ -71,6 +72,7 @@ void TrainConfig::validate(const std::string& path) const {
     check_range(path, "loss.lambda_foot", lambda_foot, 0, big);
     check_range(path, "loss.lambda_acc", lambda_acc, 0, big);
     if (acc_space != "features" && acc_space != "joints") throw Error(path, "loss.acc_space", "features or joints", acc_space);
+    parse_precision(precision, path, "train.precision");
     augment.validate(path);
 }
 
@@ -106,6 +108,7 @@ TrainConfig read_train_config(const std::string& path) {
     train.read("seed", seed);
     train.read("save_every", c.save_every);
     train.read("log_every", c.log_every);
+    train.read("precision", c.precision);
     if (seed < 0) throw Error(path, "train.seed", "a whole number from 0", std::to_string(seed));
     c.seed = static_cast<uint64_t>(seed);
     loss.read("lambda_pos", c.lambda_pos);
@@ -263,7 +266,7 @@ void write_model(const Training& tr, const TrainConfig& c, const Hml3dDataset& d
                           {"layers", c.text.layers}, {"heads", c.text.heads}, {"ff_size", c.text.ff_size}, {"out_dim", c.text.out_dim}}},
         {"diffusion", {{"schedule", "cosine"}, {"steps", c.diffusion_steps}, {"predict", "x0"}}},
         {"normalisation", {{"mean", "Mean.npy"}, {"std", "Std.npy"}}},
-        {"training", {{"dataset", c.dataset}, {"step", tr.step}, {"ema", c.ema_decay > 0}, {"lambda_pos", c.lambda_pos},
+        {"training", {{"dataset", c.dataset}, {"step", tr.step}, {"ema", c.ema_decay > 0}, {"precision", c.precision}, {"lambda_pos", c.lambda_pos},
                       {"lambda_vel", c.lambda_vel}, {"lambda_foot", c.lambda_foot}, {"lambda_acc", c.lambda_acc}, {"acc_space", c.acc_space},
                       {"augment", {{"swap", c.augment.swap}, {"dropout", c.augment.dropout}, {"neighbours", c.augment.neighbours},
                                    {"min_similarity", c.augment.min_similarity}, {"search_words", c.augment.search_words}}}}}};
@@ -313,6 +316,38 @@ std::vector<std::string> all_captions(const Hml3dDataset& data) {
     return out;
 }
 
+// Wall time per part of a step. With `synchronise` on a GPU each part first waits for the kernels it queued,
+// so their time lands on it (at the price of the overlap); on the CPU every part already ends when it returns.
+class PartClock {
+public:
+    StepProfile parts;
+    PartClock(const torch::Device& device, bool synchronise) : synchronise_(device.is_cuda() && synchronise) {}
+    void start_step(bool counted) {
+        counted_ = counted;
+        parts.steps += counted ? 1 : 0;
+        last_ = std::chrono::steady_clock::now();
+    }
+    void lap(double& part) {
+        if (synchronise_) torch::cuda::synchronize();
+        const auto now = std::chrono::steady_clock::now();
+        if (counted_) part += std::chrono::duration<double>(now - last_).count();
+        last_ = now;
+    }
+
+private:
+    bool synchronise_, counted_ = false;
+    std::chrono::steady_clock::time_point last_;
+};
+
+// ema <- decay ema + (1 - decay) p over all parameters at once (one kernel per list, not two per tensor).
+void update_ema(Training& tr, double decay) {
+    torch::NoGradGuard no_grad;
+    std::vector<torch::Tensor> params;
+    for (const torch::Tensor& p : tr.parameters()) params.push_back(p.detach());
+    torch::_foreach_mul_(tr.ema, decay);
+    torch::_foreach_add_(tr.ema, params, 1 - decay);
+}
+
 // Slots of the values that ride along with the gradients' all-reduce.
 enum Rider : int64_t { kSimple, kPos, kVel, kFoot, kAcc, kTotal, kStop };
 
@@ -360,6 +395,7 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
     const GaussianDiffusion diffusion(cosine_schedule(c.diffusion_steps));
     const torch::Tensor mean = torch::from_blob(const_cast<double*>(data.stats().mean.data()), {263}, torch::kFloat64).to(device, torch::kFloat32);
     const torch::Tensor std = torch::from_blob(const_cast<double*>(data.stats().std.data()), {263}, torch::kFloat64).to(device, torch::kFloat32);
+    const Precision precision = parse_precision(c.precision, "train config", "train.precision");
     const torch::TensorOptions draws_on = torch::TensorOptions().device(several ? torch::Device(torch::kCPU) : device);
     std::string metrics;
     TrainProgress progress;
@@ -370,7 +406,9 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
     if (c.augment.enabled()) reword.emplace(vocab, c.augment, all_captions(data));
     g_stop_requested = false;
     bool stop = false;
+    PartClock clock(device, c.profile);
     while (tr.step < last && !stop) {
+        clock.start_step(tr.step > first);  // the call's first step builds kernels and caches: not profiled
         // The global batch and all its draws, on every rank; this rank keeps samples [share.begin, + share.size).
         const Batch b = data.next_batch(c.batch);
         std::vector<std::string> captions = b.captions;
@@ -387,10 +425,20 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
         const torch::Tensor t = t_all.slice(0, lo, lo + n).to(device);
         const torch::Tensor x0_mdm = x0.permute({0, 2, 1}).unsqueeze(2);  // [n, 263, 1, F]
         const torch::Tensor x_t = diffusion.q_sample(x0_mdm, t, noise_all.slice(0, lo, lo + n).to(device));
-        const torch::Tensor x0_hat = tr.mdm->forward(x_t, t, tr.text->encode(my_captions), false, lengths).squeeze(2).permute({0, 2, 1});
+        clock.lap(clock.parts.data);
+        // The text encoder (libtorch's own layers, a few tokens) stays in fp32; MDM's products run in bf16 when
+        // asked, its output and the losses below in fp32.
+        const torch::Tensor text = tr.text->encode(my_captions);
+        clock.lap(clock.parts.text);
+        torch::Tensor x0_hat;
+        {
+            const AutocastScope mixed(device, precision);
+            x0_hat = tr.mdm->forward(x_t, t, text, false, lengths).squeeze(2).permute({0, 2, 1}).to(torch::kFloat32);
+        }
         // Every term is a mean over the share of per-sample means (each normalised by its own valid frames,
         // losses.hpp), so the ranks' mean of equal shares is the global batch's mean: no normaliser to share.
         const LossTerms terms = mdm_loss_terms(x0, x0_hat, lengths, mean, std, c);
+        clock.lap(clock.parts.forward);
         tr.optimiser->zero_grad();
         terms.total.backward();
         const bool out_of_time = c.max_minutes > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >= 60 * c.max_minutes;
@@ -401,13 +449,11 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
                 .to(torch::kCPU, torch::kFloat64);
         const auto r = riders.accessor<double, 1>();
         stop = r[kStop] > 0;  // any rank's request stops all of them after the same step
+        clock.lap(clock.parts.backward);
         tr.optimiser->step();
-        if (!tr.ema.empty()) {
-            torch::NoGradGuard no_grad;
-            const std::vector<torch::Tensor> params = tr.parameters();
-            const double decay = ema_decay_at(c.ema_decay, tr.step);
-            for (size_t i = 0; i < params.size(); ++i) tr.ema[i].mul_(decay).add_(params[i].detach(), 1 - decay);
-        }
+        clock.lap(clock.parts.optimiser);
+        if (!tr.ema.empty()) update_ema(tr, ema_decay_at(c.ema_decay, tr.step));
+        clock.lap(clock.parts.ema);
         ++tr.step;
         progress.loss = r[kTotal];
         if (!group.is_main()) continue;
@@ -429,7 +475,9 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
             save_checkpoint(tr, data, checkpoint);
             write_model(tr, c, data);
         }
+        clock.lap(clock.parts.log);
     }
+    progress.profile = clock.parts;
     group.barrier();  // the other ranks return once rank 0's files are written
     progress.step = tr.step;
     progress.stopped_early = tr.step < last;

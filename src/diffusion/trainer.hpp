@@ -43,11 +43,13 @@ struct TrainConfig {
     std::string acc_space = "features";  // or "joints"
     CaptionAugmentOptions augment;       // [augment]: the training captions reworded (text/caption_augment.hpp)
     int64_t save_every = 1000, log_every = 50;
+    std::string precision = "fp32";  // or "bf16": the forward's products in bfloat16, weights and losses fp32 (nn/autocast.hpp)
     uint64_t seed = 0;
     int threads = 0;
     std::string device = "cpu";  // a torch device: cpu, cuda, cuda:1 (not in the TOML: where to train is not what to train)
     ProcessGroupEnv processes;   // data-parallel ranks (torchrun's variables; not in the TOML either)
     double max_minutes = 0;      // > 0: stop after the step that reaches this wall time, saved (a leased GPU's budget)
+    bool profile = false;        // on a GPU, wait for each part's kernels so the profile is exact (slower)
 
     // Throws Error naming `path` and the dotted field ("train.learning_rate") for a missing or out-of-range
     // value: sizes from 1, heads dividing their width, rates and dropouts in [0, 1), lambdas from 0.
@@ -56,7 +58,7 @@ struct TrainConfig {
 
 // TOML: [data] dataset, vocab, split; [model] latent_dim, ff_size, num_layers, num_heads, dropout;
 // [text] model_dim, layers, heads, ff_size, dropout; [diffusion] steps; [train] batch, steps, learning_rate,
-// weight_decay, cond_dropout, ema_decay, seed, save_every, log_every; [loss] lambda_pos, lambda_vel,
+// weight_decay, cond_dropout, ema_decay, seed, save_every, log_every, precision; [loss] lambda_pos, lambda_vel,
 // lambda_foot, lambda_acc, acc_space; [augment] swap, dropout, neighbours, min_similarity, search_words; `out` at the top level (the model folder). Read strictly
 // (core/toml_section.hpp): unknown keys and wrong types are refused by name; then validate().
 TrainConfig read_train_config(const std::string& path);
@@ -66,10 +68,25 @@ TrainConfig read_train_config(const std::string& path);
 // 12,000 steps, which blurs the model's predictions (our first shipped model had exactly this fault).
 double ema_decay_at(double max_decay, int64_t step);
 
+// Seconds spent in each part of a training step, summed over the profiled steps: every step of one train_mdm
+// call but its first (which builds kernels, oneDNN primitives and allocator caches).
+//   data       draw and crop the batch (hml3d_dataset.hpp), reword captions, draw t and noise, copy to the
+//              device, q_sample
+//   text       tokenise and encode the captions
+//   forward    MDM's forward and the loss terms
+//   backward   backward and the gradients' all-reduce (with the loss values riding along)
+//   optimiser  AdamW's step;  ema  the weights' moving average;  log  metrics, checkpoint and model writes
+struct StepProfile {
+    double data = 0, text = 0, forward = 0, backward = 0, optimiser = 0, ema = 0, log = 0;
+    int64_t steps = 0;
+    double total() const { return data + text + forward + backward + optimiser + ema + log; }
+};
+
 struct TrainProgress {
     int64_t step = 0;
     double loss = 0;  // the last logged total
     bool stopped_early = false;  // by a signal or max_minutes, before its last step
+    StepProfile profile;
 };
 
 // Trains into config.out (model.json, weights.safetensors, Mean.npy, Std.npy, checkpoint.pt, metrics.jsonl).
