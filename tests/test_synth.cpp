@@ -149,6 +149,37 @@ TEST(Synth, ResumeRedoesFinishedJobsWhoseFilesWentMissingOrWereCut) {
     EXPECT_EQ(read_imu_dataset(out).size(), 4u);
 }
 
+TEST(Synth, ResumeRedoesJobsWhoseMotionOrMarkerWasDamagedAndNamesABadSettingsFile) {
+    const std::string out = test::scratch_dir("synth_resume_motions");
+    SynthOptions o = tiny_options(out);
+    o.bodies = "preset:male_average";
+    run_synth(o);
+    fs::remove(out + "/motions/j00000.bvh");                                                     // deleted by hand
+    fs::resize_file(out + "/motions/j00001_joints.npy", fs::file_size(out + "/motions/j00001_joints.npy") - 8);  // cut short
+    std::ofstream(out + "/jobs/j00002.json") << "{\"job\": \"j00002\", \"kept";                   // a marker cut short
+    const auto untouched = fs::last_write_time(out + "/motions/j00003.bvh");
+    EXPECT_EQ(run_synth(o)["this_run"]["jobs_run"], 3);
+    EXPECT_TRUE(fs::exists(out + "/motions/j00000.bvh"));
+    EXPECT_EQ(read_npy(out + "/motions/j00001_joints.npy").shape[1], 22);
+    EXPECT_EQ(fs::last_write_time(out + "/motions/j00003.bvh"), untouched);
+    // A marker of another shard's job is not redone here: read for the manifest, its fault is named.
+    std::ofstream(out + "/jobs/j00009.json") << R"({"job": 5})";
+    try {
+        run_synth(o);
+        FAIL() << "a damaged marker was read";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("j00009.json: job: expected a string"), std::string::npos) << e.what();
+    }
+    fs::remove(out + "/jobs/j00009.json");
+    std::ofstream(out + "/synth.json") << "{\"seed\": ";
+    try {
+        run_synth(o);
+        FAIL() << "a damaged synth.json was read";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("synth.json: json: expected a JSON document (got parse error at line 1"), std::string::npos) << e.what();
+    }
+}
+
 TEST(Synth, ShardsAddUpToTheWholeRun) {
     const std::string whole = test::scratch_dir("synth_whole"), sharded = test::scratch_dir("synth_sharded");
     run_synth(tiny_options(whole));

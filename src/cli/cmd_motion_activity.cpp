@@ -10,6 +10,7 @@
 #include "cli/command.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/json_file.hpp"
 #include "core/npy.hpp"
 #include "data/activity_reference.hpp"
 #include "motion/joint_sequence.hpp"
@@ -73,10 +74,12 @@ void classify_synth(const MotionActivityClassifier& c, const std::string& dir, c
     std::vector<std::string> prompted;
     std::map<std::string, std::map<std::string, long>> counts;
     for (const auto& e : std::filesystem::directory_iterator(dir + "/jobs")) {
-        const nlohmann::json job = nlohmann::json::parse(read_file_text(e.path().string()));
-        if (!job["kept"].get<bool>()) continue;
-        const std::string file = dir + "/motions/" + job["job"].get<std::string>() + "_joints.npy";
-        const std::string activity = job["activity"];
+        if (e.path().extension() != ".json") continue;
+        const std::string marker = e.path().string();
+        const nlohmann::json job = read_json_file(marker);
+        if (!json_bool(job, "kept", marker)) continue;
+        const std::string file = dir + "/motions/" + json_string(job, "job", marker) + "_joints.npy";
+        const std::string activity = json_string(job, "activity", marker);
         ++counts[activity][c.classify(describe_motion(joint_sequence_from_array(read_npy(file), file))).best];
         if (std::find(prompted.begin(), prompted.end(), activity) == prompted.end()) prompted.push_back(activity);
     }

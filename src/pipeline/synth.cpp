@@ -10,6 +10,7 @@
 #include "core/atomic_file.hpp"
 #include "core/csv.hpp"
 #include "core/error.hpp"
+#include "core/json_file.hpp"
 #include "core/npy.hpp"
 #include "core/output_path.hpp"
 #include "core/parallel.hpp"
@@ -177,6 +178,9 @@ void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt&
     if (d.kept) {
         write_npy(o.out + "/motions/" + name + "_joints.npy", joint_sequence_to_array(d.joints));
         write_bvh(o.out + "/motions/" + name + ".bvh", smpl22_to_bvh(d.joints));
+        marker["motions"] = json::array();
+        for (const std::string file : {name + "_joints.npy", name + ".bvh"})
+            marker["motions"].push_back({{"path", "motions/" + file}, {"bytes", fs::file_size(o.out + "/motions/" + file)}});
         VirtualImuOptions imu = stage.imu;
         imu.seed = stage.imu.seed + static_cast<uint64_t>(job);
         for (const BodySpec& b : stage.bodies) {
@@ -193,20 +197,69 @@ void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt&
     write_file_atomic(o.out + "/jobs/" + name + ".json", marker.dump(1) + "\n");
 }
 
-// Whether job `job` is finished and whole: its marker reads, each recording it lists exists with the size it was
-// written with (markers from before sizes were recorded: exists), and a kept motion's joints exist. A resume redoes
-// a job whose files went missing or were cut short (a full disk, a copy that broke off).
+// Every field of a job marker that a later stage reads, with its type; Error naming the marker file and the
+// key ("recordings.3.n_samples") otherwise. A marker passing this can be read without further checks.
+void check_marker(const json& m, const std::string& path) {
+    for (const char* key : {"job", "prompt", "activity"}) json_string(m, key, path);
+    json_count(m, "seed", path);
+    json_bool(m, "kept", path);
+    for (size_t i = 0; i < json_array(m, "attempts", path).size(); ++i) {
+        const std::string where = "attempts." + std::to_string(i);
+        for (const json& f : json_array(m["attempts"][i], "failures", path, where))
+            if (!f.is_string()) throw Error(path, where + ".failures", "names of quality scores", f.dump());
+    }
+    for (const auto& [name, v] : json_object(m, "quality", path).items())
+        if (!v.is_number()) throw Error(path, "quality." + name, "a number", v.dump());
+    const json& recordings = json_array(m, "recordings", path);
+    for (size_t i = 0; i < recordings.size(); ++i) {
+        const std::string where = "recordings." + std::to_string(i);
+        for (const char* key : {"path", "body", "position"}) json_string(recordings[i], key, path, where);
+        json_count(recordings[i], "n_samples", path, where);
+        if (recordings[i].contains("bytes")) json_count(recordings[i], "bytes", path, where);
+    }
+    if (m.contains("motions"))
+        for (size_t i = 0; i < json_array(m, "motions", path).size(); ++i) {
+            json_string(m["motions"][i], "path", path, "motions." + std::to_string(i));
+            json_count(m["motions"][i], "bytes", path, "motions." + std::to_string(i));
+        }
+    if (m.contains("activity_check")) {
+        json_string(json_object(m, "activity_check", path), "shown", path, "activity_check");
+        json_bool(m["activity_check"], "passed", path, "activity_check");
+    }
+    if (m.contains("source_draw")) json_object(m, "source_draw", path);
+}
+
+// Whether the file `out`/`relative` exists with `bytes` bytes (any size when the marker predates sizes: -1).
+bool file_whole(const std::string& out, const std::string& relative, int64_t bytes) {
+    std::error_code ec;
+    const uintmax_t size = fs::file_size(out + "/" + relative, ec);
+    return !ec && (bytes < 0 || size == static_cast<uintmax_t>(bytes));
+}
+
+// Whether job `job` is finished and whole: its marker reads and holds every field later stages need, each
+// recording and motion file it lists exists with the size it was written with (markers from before sizes or
+// motion lists were recorded: the files exist). A resume redoes a job whose marker is damaged or whose files
+// went missing or were cut short (a full disk, a copy that broke off, a motion deleted by hand).
 bool job_intact(const std::string& out, int job) {
     const std::string path = out + "/jobs/" + job_name(job) + ".json";
     if (!fs::exists(path)) return false;
-    const json marker = json::parse(read_file_text(path), nullptr, false);
-    if (marker.is_discarded() || !marker.is_object()) return false;
-    for (const json& r : marker.value("recordings", json::array())) {
-        std::error_code ec;
-        const uintmax_t size = fs::file_size(out + "/" + r.value("path", std::string()), ec);
-        if (ec || (r.contains("bytes") && r["bytes"] != size)) return false;
+    json marker;
+    try {
+        marker = read_json_file(path);
+        check_marker(marker, path);
+    } catch (const Error&) {
+        return false;  // damaged: the job is redone and its marker rewritten
     }
-    return !marker.value("kept", false) || fs::exists(out + "/motions/" + job_name(job) + "_joints.npy");
+    for (const json& r : marker["recordings"])
+        if (!file_whole(out, r["path"].get<std::string>(), r.contains("bytes") ? r["bytes"].get<int64_t>() : -1)) return false;
+    if (!marker["kept"].get<bool>()) return true;
+    if (marker.contains("motions")) {
+        for (const json& m : marker["motions"])
+            if (!file_whole(out, m["path"].get<std::string>(), m["bytes"].get<int64_t>())) return false;
+        return true;
+    }
+    const std::string name = job_name(job);
+    return file_whole(out, "motions/" + name + "_joints.npy", -1) && file_whole(out, "motions/" + name + ".bvh", -1);
 }
 
 json settings_json(const SynthOptions& o, const std::vector<Prompt>& prompts, const json& source, const RealismModel& realism) {
@@ -239,7 +292,7 @@ json recorded_setting(const json& before, const std::string& key) {
 void check_or_write_settings(const std::string& out, const json& settings) {
     const std::string path = out + "/synth.json";
     if (fs::exists(path)) {
-        const json before = json::parse(read_file_text(path));
+        const json before = read_json_file(path);
         for (const auto& [key, value] : settings.items()) {
             const json recorded = recorded_setting(before, key);
             if (recorded != value)
@@ -287,7 +340,10 @@ std::vector<json> read_markers(const std::string& out) {
     for (const auto& e : fs::directory_iterator(out + "/jobs"))
         if (e.path().extension() == ".json") files.push_back(e.path());
     std::sort(files.begin(), files.end());
-    for (const fs::path& p : files) markers.push_back(json::parse(read_file_text(p.string())));
+    for (const fs::path& p : files) {
+        markers.push_back(read_json_file(p.string()));  // other shards' markers too: checked like this run's
+        check_marker(markers.back(), p.string());
+    }
     return markers;
 }
 
