@@ -147,6 +147,24 @@ TEST(Npy, RefusesMalformedInputNamingTheField) {
     std::vector<uint8_t> v11 = good;
     v11[7] = 1;
     EXPECT_THROW(parse_npy(v11.data(), v11.size(), "v1.1.npy"), Error);
+    // Bytes after the array: a file that long was not written whole (NumPy's loader would ignore them).
+    std::vector<uint8_t> trailing = good;
+    trailing.insert(trailing.end(), {0, 0, 0, 0});
+    try {
+        parse_npy(trailing.data(), trailing.size(), "long.npy");
+        ADD_FAILURE() << "trailing bytes accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("long.npy: data: expected 24 bytes of data for shape (2, 3) (got 28 bytes (4 trailing))"), std::string::npos)
+            << e.what();
+    }
+    // A negative dimension: the message quotes the header from the offending character.
+    const auto negative = npy_bytes("{'descr': '<f4', 'fortran_order': False, 'shape': (-1, 3), }", six);
+    try {
+        parse_npy(negative.data(), negative.size(), "neg.npy");
+        ADD_FAILURE() << "a negative dimension accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("expected a non-negative integer (got '-1, 3), }"), std::string::npos) << e.what();
+    }
     std::vector<uint8_t> long_header = good;
     long_header[9] = 0x7f;  // header length 32 KB in a 152-byte file
     EXPECT_THROW(parse_npy(long_header.data(), long_header.size(), "long.npy"), Error);

@@ -46,11 +46,13 @@ struct HeaderParser {
     size_t i = 0;
 
     void skip_space() { while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i; }
-    // The message quotes at most 80 characters of the header (a version-2.0 header may be megabytes).
+    // The message quotes the header from the offending character on, at most 40 characters (a version-2.0
+    // header may be megabytes), so a shape of (-1, 3) shows '-1, 3), }', not the text before it.
     [[noreturn]] void fail(const std::string& expected) const {
-        const size_t from = i > 40 ? i - 40 : 0;
-        throw Error(source, "npy header", expected,
-                    "'" + s.substr(from, 80) + "' at header offset " + std::to_string(i));
+        std::string quoted = s.substr(std::min(i, s.size()), 40);
+        quoted = quoted.substr(0, quoted.find('\n'));  // the header's padding ends in a newline: one line only
+        quoted.erase(quoted.find_last_not_of(' ') + 1);
+        throw Error(source, "npy header", expected, "'" + quoted + "' at header offset " + std::to_string(i));
     }
     void expect(char c) {
         skip_space();
@@ -207,6 +209,9 @@ NdArray parse_npy(const uint8_t* data, size_t size, const std::string& source) {
     if (size - data_start < nbytes)
         throw Error(source, "data", std::to_string(nbytes) + " bytes of data for shape " + a.shape_str(),
                     std::to_string(size - data_start) + " bytes (truncated)");
+    if (size - data_start > nbytes)  // NumPy's loader would ignore them; a file that long was not written whole
+        throw Error(source, "data", std::to_string(nbytes) + " bytes of data for shape " + a.shape_str(),
+                    std::to_string(size - data_start) + " bytes (" + std::to_string(size - data_start - nbytes) + " trailing)");
     a.bytes.assign(data + data_start, data + data_start + nbytes);
     if (h.fortran_order) a.bytes = fortran_to_c_order(a.bytes, a.shape, item);
     return a;
