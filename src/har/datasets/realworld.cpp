@@ -9,6 +9,7 @@
 #include "core/csv.hpp"
 #include "core/error.hpp"
 #include "core/zip_archive.hpp"
+#include "har/datasets/release_files.hpp"
 
 namespace t2imu {
 
@@ -36,7 +37,13 @@ Stream parse_stream(const std::vector<uint8_t>& bytes, const std::string& source
     const CsvTable t = parse_csv(std::string(bytes.begin(), bytes.end()), source);
     const size_t time = t.column("attr_time"), x = t.column("attr_x"), y = t.column("attr_y"), z = t.column("attr_z");
     std::vector<std::pair<double, std::array<double, 3>>> rows;
-    for (size_t r = 0; r < t.rows.size(); ++r) rows.push_back({t.number(r, time), {t.number(r, x), t.number(r, y), t.number(r, z)}});
+    // A finite number in every cell: a nan would be written through and refused by the dataset's own reader.
+    const auto finite = [&](size_t r, size_t c) {
+        const double v = t.number(r, c);
+        if (!std::isfinite(v)) throw Error(source, "row " + std::to_string(r + 2) + " column '" + t.header[c] + "'", "a finite number", t.rows[r][c]);
+        return v;
+    };
+    for (size_t r = 0; r < t.rows.size(); ++r) rows.push_back({finite(r, time), {finite(r, x), finite(r, y), finite(r, z)}});
     std::stable_sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     Stream s;
     for (const auto& [ms, v] : rows)
@@ -57,7 +64,7 @@ void collect(const ZipMembers& members, const std::string& source, Streams& stre
         }
         std::smatch m;
         if (!std::regex_match(name, m, csv)) continue;
-        const StreamKey key{m[2], m[3].matched ? std::stoi(m[3]) : 1, m[4]};
+        const StreamKey key{m[2], m[3].matched ? release_index(m[3], source + ":" + name, "part number") : 1, m[4]};
         streams[key][m[1] == "acc" ? 0 : 1] = parse_stream(bytes, source + ":" + name);
     }
 }
@@ -150,6 +157,9 @@ std::vector<ImuRecording> import_realworld(const std::string& dir, std::vector<s
         std::vector<ImuRecording> r = read_realworld_proband(p, skipped);
         out.insert(out.end(), r.begin(), r.end());
     }
+    if (out.empty())
+        throw Error(dir, "recordings", "at least one usable recording among " + std::to_string(probands.size()) + " proband folders",
+                    skipped && !skipped->empty() ? "none; first refusal: " + skipped->front() : "none");
     return out;
 }
 

@@ -1,11 +1,18 @@
 #include "har/datasets/release_files.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 #include "core/error.hpp"
 
 namespace t2imu {
+
+int release_index(const std::string& text, const std::string& path, const std::string& field) {
+    if (text.empty() || text.size() > 6 || !std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c); }))
+        throw Error(path, field, "a whole number from 0 to 999999", "'" + text.substr(0, 24) + "'");
+    return std::stoi(text);
+}
 
 std::vector<ImuRecording> import_release_files(const std::string& dir, const std::regex& file_name,
                                                const std::string& expected, const ReleaseFileReader& read,
@@ -26,6 +33,9 @@ std::vector<ImuRecording> import_release_files(const std::string& dir, const std
             skipped->push_back(e.what());
         }
     }
+    if (out.empty())
+        throw Error(dir, "recordings", "at least one usable recording among " + std::to_string(files.size()) + " " + expected,
+                    skipped && !skipped->empty() ? "none; first refusal: " + skipped->front() : "none");
     return out;
 }
 

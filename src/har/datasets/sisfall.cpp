@@ -47,13 +47,19 @@ std::vector<ImuRecording> read_sisfall_file(const std::string& path) {
         ++n;
         std::replace(line.begin(), line.end(), ';', ' ');
         std::replace(line.begin(), line.end(), ',', ' ');
+        // Every line but a blank one is 9 finite numbers: a line of garbage or nan refuses the file (skipped and
+        // named by the import) rather than vanishing from it.
         std::istringstream cells(line);
         std::vector<double> v;
-        double x;
-        while (cells >> x) v.push_back(x);
+        for (std::string cell; cells >> cell;) {
+            char* end = nullptr;
+            const double x = std::strtod(cell.c_str(), &end);
+            if (end != cell.c_str() + cell.size() || !std::isfinite(x))
+                throw Error(path, "line " + std::to_string(n), "9 raw values (ADXL345, ITG3200, MMA8451Q)", "'" + cell.substr(0, 24) + "'");
+            v.push_back(x);
+        }
         if (v.empty()) continue;
-        if (v.size() != 9 || !cells.eof())
-            throw Error(path, "line " + std::to_string(n), "9 raw values (ADXL345, ITG3200, MMA8451Q)", std::to_string(v.size()));
+        if (v.size() != 9) throw Error(path, "line " + std::to_string(n), "9 raw values (ADXL345, ITG3200, MMA8451Q)", std::to_string(v.size()));
         for (size_t c = 0; c < 6; ++c) channels[c].push_back(v[c] * (c < 3 ? kAccScale : kGyroScale));
     }
     if (channels[0].size() < 8) throw Error(path, "samples", "at least 8 samples at 200 Hz");

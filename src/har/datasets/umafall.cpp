@@ -72,7 +72,7 @@ std::vector<ImuRecording> read_umafall_file(const std::string& path) {
             if (std::regex_match(line, t, tag)) {
                 std::string pos = t[2];
                 std::transform(pos.begin(), pos.end(), pos.begin(), [](unsigned char c) { return std::tolower(c); });
-                positions[std::stoi(t[1])] = pos;
+                positions[release_index(t[1], path, "line " + std::to_string(n) + " sensor id")] = pos;
             }
             continue;
         }
@@ -81,7 +81,8 @@ std::vector<ImuRecording> read_umafall_file(const std::string& path) {
         std::string cell;
         while (std::getline(cells, cell, ';')) f.push_back(trim(cell));
         if (f.size() < 7) throw Error(path, "line " + std::to_string(n), "TimeStamp;Sample No;X;Y;Z;Sensor Type;Sensor ID");
-        const int id = static_cast<int>(number(f[6], path, n)), type = static_cast<int>(number(f[5], path, n));
+        const int id = release_index(f[6], path, "line " + std::to_string(n) + " sensor id");
+        const int type = release_index(f[5], path, "line " + std::to_string(n) + " sensor type");
         if (!positions.count(id) || type > 1) continue;  // the phone, or the magnetometer
         samples[id][type][static_cast<long>(number(f[1], path, n))] = {number(f[2], path, n), number(f[3], path, n), number(f[4], path, n)};
     }
