@@ -252,6 +252,7 @@ void SignalStatisticsOptions::validate() const {
 nlohmann::json activity_signal_statistics(const std::vector<ImuRecording>& recordings, const SignalStatisticsOptions& options) {
     options.validate();
     nlohmann::json out = nlohmann::json::object();
+    if (!options.position.empty()) check_position_held(recordings, options.position, "--position");
     for (const auto& [activity, rows] : statistics_by_activity(recordings, options.position, options.rate_hz, nullptr, nullptr)) {
         nlohmann::json a = {{"recordings", rows.size()}};
         for (const std::string& name : signal_statistic_names()) a[name] = median_statistic(rows, name);
@@ -264,6 +265,10 @@ nlohmann::json compare_signal_statistics(const std::vector<ImuRecording>& real, 
                                          const SignalStatisticsOptions& options) {
     options.validate();
     const std::string& position = options.position;
+    if (!position.empty()) {
+        check_position_held(real, position, "--position");
+        check_position_held(synthetic, position, "--position");
+    }
     const double rate_hz = options.rate_hz;
     const std::set<std::string> real_labels = labels_of(real, position), synthetic_labels = labels_of(synthetic, position);
     const auto r = statistics_by_activity(real, position, rate_hz, &real_labels, &synthetic_labels);

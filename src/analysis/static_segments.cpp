@@ -61,6 +61,7 @@ nlohmann::json static_segment_noise(const std::vector<ImuRecording>& recordings,
                                     const SensorNoiseModel& device) {
     options.validate();
     const std::string& position = options.position;
+    if (!position.empty()) check_position_held(recordings, position, "--position");
     const double window_s = options.window_s;
     nlohmann::json per = nlohmann::json::array();
     std::vector<double> rates;

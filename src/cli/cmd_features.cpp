@@ -36,7 +36,12 @@ static void add_catch22_command(CLI::App& features) {
             return;
         }
         if (out.empty()) throw Error("features catch22", "--out", "an output CSV in batch mode");
-        check_usage([] { check_output_path(out, "--out"); });
+        w.window_option = "--window-s";
+        w.min_window_samples = static_cast<long>(kCatch22MinLength);  // shorter windows give every feature nan
+        check_usage([] {
+            w.validate();
+            check_output_path(out, "--out");
+        });
         std::stringstream list(positions);
         for (std::string p; std::getline(list, p, ',');)
             if (!p.empty()) w.positions.push_back(p);

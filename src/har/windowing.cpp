@@ -30,18 +30,6 @@ bool position_matches(const std::string& wanted, const std::string& position) {
     return position == wanted || position == "left_" + wanted || position == "right_" + wanted;
 }
 
-// A wanted position no recording matches is a typo or the wrong data set, not an empty result.
-void check_positions_held(const std::vector<ImuRecording>& recordings, const std::vector<std::string>& positions, const std::string& option) {
-    std::set<std::string> held;
-    for (const ImuRecording& r : recordings) held.insert(r.position);
-    for (const std::string& p : positions) {
-        if (std::any_of(held.begin(), held.end(), [&](const std::string& h) { return position_matches(p, h); })) continue;
-        std::string list;
-        for (const std::string& h : held) list += (list.empty() ? "" : ", ") + h;
-        throw Error(option, p, "a position the data set holds (" + list + ")");
-    }
-}
-
 }  // namespace
 
 std::vector<double> resample_channel(const std::vector<double>& x, double rate_in, double rate_out) {
@@ -72,9 +60,10 @@ std::vector<double> resample_channel(const std::vector<double>& x, double rate_i
 
 void WindowOptions::validate() const {
     if (!(rate_hz > 0 && rate_hz <= 10000)) throw Error("windows", "--rate", "0 < HZ <= 10000", std::to_string(rate_hz));
-    if (!(window_s > 0 && window_s <= 3600)) throw Error("windows", "--window", "0 < SECONDS <= 3600", std::to_string(window_s));
+    if (!(window_s > 0 && window_s <= 3600)) throw Error("windows", window_option, "0 < SECONDS <= 3600", std::to_string(window_s));
     if (!(overlap >= 0 && overlap < 1)) throw Error("windows", "--overlap", "0 <= OVERLAP < 1", std::to_string(overlap));
-    if (std::lround(window_s * rate_hz) < 1) throw Error("windows", "--window", "at least one sample at the rate", std::to_string(window_s) + " s");
+    if (std::lround(window_s * rate_hz) < min_window_samples)
+        throw Error(window_option, std::to_string(window_s) + " s", "at least " + std::to_string(min_window_samples) + " samples at --rate " + std::to_string(rate_hz) + " Hz");
 }
 
 WindowSet make_windows(const std::vector<ImuRecording>& recordings, const WindowOptions& o) {
@@ -86,7 +75,7 @@ WindowSet make_windows(const std::vector<ImuRecording>& recordings, const Window
         if (all.size() != 1) throw Error(o.positions_option, "positions", "a choice: the data set holds " + std::to_string(all.size()) + " positions");
         positions = {*all.begin()};
     }
-    check_positions_held(recordings, positions, o.positions_option);
+    for (const std::string& p : positions) check_position_held(recordings, p, o.positions_option, /*sided=*/true);
     std::map<std::string, std::vector<const ImuRecording*>> trials;
     for (const ImuRecording& r : recordings) trials[r.dataset + "|" + trial_key(r)].push_back(&r);
     WindowSet w;
@@ -129,7 +118,7 @@ WindowSet make_windows(const std::vector<ImuRecording>& recordings, const Window
         char expected[64], got[32];
         std::snprintf(expected, sizeof expected, "at most the longest trial, %.3g s", static_cast<double>(longest) / o.rate_hz);
         std::snprintf(got, sizeof got, "%g s", o.window_s);
-        throw Error("windows", "--window", expected, got);
+        throw Error("windows", o.window_option, expected, got);
     }
     return w;
 }

@@ -22,6 +22,8 @@ struct WindowOptions {
     bool gyro = false;                   // acc only, or acc and gyr
     std::vector<std::string> positions;  // empty: the data set must hold a single position
     std::string positions_option = "--positions";  // the option errors about `positions` name
+    std::string window_option = "--window";        // likewise for window_s
+    long min_window_samples = 1;                   // what the windows feed needs (catch22: 10)
 
     // Throws Error naming the option (--rate, --window, --overlap) for a value out of range or not finite.
     void validate() const;

@@ -148,4 +148,14 @@ void write_imu_manifest(const std::string& dir, const std::vector<ImuRecording>&
     write_csv(dir + "/manifest.csv", manifest);
 }
 
+void check_position_held(const std::vector<ImuRecording>& recordings, const std::string& position, const std::string& option, bool sided) {
+    std::set<std::string> held;
+    for (const ImuRecording& r : recordings) held.insert(r.position);
+    const auto matches = [&](const std::string& h) { return h == position || (sided && (h == "left_" + position || h == "right_" + position)); };
+    if (std::any_of(held.begin(), held.end(), matches)) return;
+    std::string list;
+    for (const std::string& h : held) list += (list.empty() ? "" : ", ") + h;
+    throw Error(option, position, "a position the data set holds (" + list + ")");
+}
+
 }  // namespace t2imu

@@ -38,6 +38,11 @@ std::vector<ImuRecording> read_imu_dataset(const std::string& dir, bool load_sam
 
 // Writes the recordings' CSVs and the manifest, each atomically; the manifest last, so a folder with a
 // manifest is complete.
+// Error(option, position, "a position the data set holds (LIST)") when no recording is at `position`; with
+// `sided`, left_POSITION and right_POSITION count as POSITION. A wanted position nothing matches is a typo or
+// the wrong data set, never an empty result.
+void check_position_held(const std::vector<ImuRecording>& recordings, const std::string& position, const std::string& option, bool sided = false);
+
 void write_imu_dataset(const std::string& dir, const std::vector<ImuRecording>& recordings, int decimals = 4);
 
 // One recording's CSV from virtual sensor signals (atomic), for writers that produce recordings one at a time
