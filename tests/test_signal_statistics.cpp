@@ -73,7 +73,7 @@ TEST(SignalStatistics, ComparesActivitiesBothSetsHoldWithRatios) {
     EXPECT_EQ(c["walking"]["recordings"]["synthetic"], 2);
     EXPECT_NEAR(c["walking"]["sd_x"]["ratio"].get<double>(), 0.5, 0.01);
     EXPECT_NEAR(c["walking"]["tilt_deg"]["real"].get<double>(), 16, 0.1);
-    EXPECT_TRUE(compare_signal_statistics(real, synthetic, {"wrist", 20}).empty());
+    EXPECT_THROW(compare_signal_statistics(real, synthetic, {"wrist", 20}), Error);  // a position neither holds: refused, not {}
     ImuRecording short_one = recording("walking", 0.9, 1.0, 0);
     short_one.samples.resize(60);
     short_one.t.resize(60);
