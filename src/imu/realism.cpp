@@ -59,7 +59,7 @@ void RealismModel::validate(const std::string& source) const {
     vibration.validate(source);
     if (device_rate_hz != 0) check("device_rate_hz", device_rate_hz, 5, 2000);
     if (device_rate_hz != std::round(device_rate_hz)) throw Error(source, "device_rate_hz", "0 or a whole number of Hz", std::to_string(device_rate_hz));
-    parse_noise_model(device);
+    parse_noise_model(device, source + ": device");
 }
 
 nlohmann::json RealismModel::to_json() const {
@@ -130,7 +130,12 @@ RealismModel parse_realism_toml(const std::string& text, const std::string& sour
     TomlSection top(doc, source, "");
     std::string base = "none";
     top.read("base", base);
-    RealismModel m = realism_preset(base);
+    RealismModel m;
+    try {
+        m = realism_preset(base);
+    } catch (const Error&) {  // the file's key is to blame, not --realism
+        throw Error(source, "base", "none, sisfall, umafall, hugadb or smartphone", base);
+    }
     m.name = source;
     read_keys(top, m);
     top.refuse_unknown_keys();

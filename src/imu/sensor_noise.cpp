@@ -34,7 +34,7 @@ SensorNoiseModel smartphone_chip() {
     return m;
 }
 
-SensorNoiseModel preset(const std::string& name) {
+SensorNoiseModel preset(const std::string& name, const std::string& option) {
     SensorNoiseModel m;
     if (name == "smartphone" || name == "hugadb" || name == "umafall") {
         m = smartphone_chip();
@@ -53,13 +53,13 @@ SensorNoiseModel preset(const std::string& name) {
         m.acc_range = 16 * kG;
         m.bits = 13;
     } else if (name != "none") {
-        throw Error("--noise", "model", "none, smartphone, hugadb, sisfall or umafall", name);
+        throw Error(option, "model", "none, smartphone, hugadb, sisfall or umafall", name);
     }
     m.name = name;
     return m;
 }
 
-void set_field(SensorNoiseModel& m, const std::string& key, double v) {
+void set_field(SensorNoiseModel& m, const std::string& key, double v, const std::string& option) {
     if (key == "acc_noise_density") m.acc_noise_density = v;
     else if (key == "gyr_noise_density") m.gyr_noise_density = v;
     else if (key == "acc_bias_sd") m.acc_bias_sd = v;
@@ -71,7 +71,7 @@ void set_field(SensorNoiseModel& m, const std::string& key, double v) {
     else if (key == "acc_range_g") m.acc_range = v * kG;
     else if (key == "gyr_range_dps") m.gyr_range = v * kDeg;
     else if (key == "bits") m.bits = static_cast<int>(v);
-    else throw Error("--noise", key, "a field of the noise model (acc_noise_density, gyr_noise_density, acc_bias_sd, "
+    else throw Error(option, key, "a field of the noise model (acc_noise_density, gyr_noise_density, acc_bias_sd, "
                      "gyr_bias_sd, acc_bias_walk, gyr_bias_walk, scale_sd, misalignment_deg, acc_range_g, gyr_range_dps, bits)");
 }
 
@@ -114,14 +114,14 @@ void corrupt(std::vector<Vector3d>& x, const AxisErrors& e, double density, doub
 
 }  // namespace
 
-SensorNoiseModel parse_noise_model(const std::string& text) {
+SensorNoiseModel parse_noise_model(const std::string& text, const std::string& option) {
     std::stringstream in(text);
     std::string part;
     std::getline(in, part, ',');
-    SensorNoiseModel m = preset(part);
+    SensorNoiseModel m = preset(part, option);
     while (std::getline(in, part, ',')) {
         const size_t eq = part.find('=');
-        if (eq == std::string::npos) throw Error("--noise", part, "key=value");
+        if (eq == std::string::npos) throw Error(option, part, "key=value");
         size_t used = 0;
         double v = 0;
         try {
@@ -130,10 +130,10 @@ SensorNoiseModel parse_noise_model(const std::string& text) {
             used = 0;
         }
         if (used == 0 || used != part.size() - eq - 1 || !std::isfinite(v) || v < 0)
-            throw Error("--noise", part.substr(0, eq), "a non-negative number", part.substr(eq + 1));
-        set_field(m, part.substr(0, eq), v);
+            throw Error(option, part.substr(0, eq), "a non-negative number", part.substr(eq + 1));
+        set_field(m, part.substr(0, eq), v, option);
     }
-    if (m.name == "none" && text != "none") throw Error("--noise", "none", "no overrides");
+    if (m.name == "none" && text != "none") throw Error(option, "none", "no overrides");
     return m;
 }
 

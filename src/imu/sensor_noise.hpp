@@ -39,7 +39,8 @@ struct SensorNoiseModel {
 
 // "none", a preset name, or a preset followed by ,key=value overrides (keys as the fields, with acc_range_g
 // and gyr_range_dps in g and deg/s). Errors name "--noise".
-SensorNoiseModel parse_noise_model(const std::string& text);
+// `option` names the text's origin in errors: "--noise", or a realism file's key ("r.toml: device").
+SensorNoiseModel parse_noise_model(const std::string& text, const std::string& option = "--noise");
 
 // Applies the model in place. Deterministic in `seed`.
 void apply_sensor_noise(const SensorNoiseModel& model, uint64_t seed, ImuSignals* signals);
