@@ -11,7 +11,7 @@ using Eigen::Vector3d;
 
 namespace {
 
-constexpr double kFps = 20.0;
+constexpr double kSynthesisFps = 20.0;
 
 struct Motion {
     std::vector<Vector3d> p;
@@ -20,10 +20,10 @@ struct Motion {
 
 template <class Pose> Motion sample(double seconds, Pose pose) {
     Motion m;
-    for (int f = 0; f <= static_cast<int>(seconds * kFps); ++f) {
+    for (int f = 0; f <= static_cast<int>(seconds * kSynthesisFps); ++f) {
         Vector3d p;
         Quat q;
-        pose(f / kFps, p, q);
+        pose(f / kSynthesisFps, p, q);
         m.p.push_back(p);
         m.q.push_back(q);
     }
@@ -36,7 +36,7 @@ TEST(ImuSynthesis, StaticSensorReadsGravityOnItsUpAxis) {
     // Rotated 90 degrees about Z: the sensor's +X axis is mapped onto world +Y, so it points up.
     const Quat tilt(Eigen::AngleAxisd(M_PI / 2, Vector3d::UnitZ()));
     const Motion m = sample(2.0, [&](double, Vector3d& p, Quat& q) { p = {0.3, 1.1, -0.2}; q = tilt; });
-    const ImuSignals s = synthesize_imu(m.p, m.q, kFps, 50);
+    const ImuSignals s = synthesize_imu(m.p, m.q, kSynthesisFps, 50);
     EXPECT_EQ(s.t.size(), 101u);
     for (size_t k = 0; k < s.t.size(); ++k) {
         EXPECT_NEAR(s.acc[k].norm(), kGravity, 1e-9);
@@ -47,7 +47,7 @@ TEST(ImuSynthesis, StaticSensorReadsGravityOnItsUpAxis) {
 
 TEST(ImuSynthesis, ConstantVelocityGivesGravityOnly) {
     const Motion m = sample(3.0, [](double t, Vector3d& p, Quat& q) { p = Vector3d(1.4 * t, 0.9, -0.3 * t); q = Quat::Identity(); });
-    const ImuSignals s = synthesize_imu(m.p, m.q, kFps, 100);
+    const ImuSignals s = synthesize_imu(m.p, m.q, kSynthesisFps, 100);
     for (const Vector3d& a : s.acc) EXPECT_LT((a - Vector3d(0, kGravity, 0)).norm(), 1e-9);
 }
 
@@ -58,7 +58,7 @@ TEST(ImuSynthesis, TurningInPlaceGivesYawRateAndCentripetalForce) {
         q = Quat(Eigen::AngleAxisd(w * t, Vector3d::UnitY()));
         p = q * Vector3d(r, 1.0, 0);
     });
-    const ImuSignals s = synthesize_imu(m.p, m.q, kFps, 50);
+    const ImuSignals s = synthesize_imu(m.p, m.q, kSynthesisFps, 50);
     double worst_gyr = 0, worst_acc = 0;
     for (size_t k = 0; k < s.t.size(); ++k) {
         worst_gyr = std::max(worst_gyr, (s.gyr[k] - Vector3d(0, w, 0)).norm());
@@ -73,7 +73,7 @@ TEST(ImuSynthesis, VerticalBounceMatchesAnalyticSpecificForce) {
     // p_y = 1 + A sin(2 pi f t): a_y = g - A (2 pi f)^2 sin(2 pi f t) in the (unrotated) sensor frame.
     const double A = 0.05, f = 1.0, om = 2 * M_PI * f;
     const Motion m = sample(3.0, [&](double t, Vector3d& p, Quat& q) { p = {0, 1 + A * std::sin(om * t), 0}; q = Quat::Identity(); });
-    const ImuSignals s = synthesize_imu(m.p, m.q, kFps, 60);
+    const ImuSignals s = synthesize_imu(m.p, m.q, kSynthesisFps, 60);
     double worst = 0, worst_step = 0;
     for (size_t k = 0; k < s.t.size(); ++k) {
         worst = std::max(worst, std::fabs(s.acc[k].y() - (kGravity - A * om * om * std::sin(om * s.t[k]))));
@@ -87,11 +87,11 @@ TEST(ImuSynthesis, VerticalBounceMatchesAnalyticSpecificForce) {
 TEST(ImuSynthesis, RefusesShortOrNonFiniteInput) {
     std::vector<Vector3d> p(3, Vector3d::Zero());
     std::vector<Quat> q(3, Quat::Identity());
-    EXPECT_THROW(synthesize_imu(p, q, kFps, 50), Error);
+    EXPECT_THROW(synthesize_imu(p, q, kSynthesisFps, 50), Error);
     p.resize(5, Vector3d::Zero());
     q.resize(5, Quat::Identity());
     p[2].x() = std::nan("");
-    EXPECT_THROW(synthesize_imu(p, q, kFps, 50), Error);
+    EXPECT_THROW(synthesize_imu(p, q, kSynthesisFps, 50), Error);
 }
 
 namespace {
