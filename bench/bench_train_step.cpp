@@ -2,7 +2,7 @@
 // on the shared motion capture's dataset, at batch 64 and 256, three ways on the same batches (the same seed),
 // all the machine's cores, in one benchmark process:
 //   old   the loop as it was at 70e56c2: libtorch's TransformerEncoder and Dropout, float32, one EMA kernel
-//         pair per tensor (LegacyMdm and legacy_steps below: that commit's model and loop body, restated here)
+//         pair per tensor (legacy_mdm.hpp and legacy_steps below: that commit's model and loop body, restated)
 //   fp32  today's loop (train_mdm) in float32: our encoder (nn/transformer_encoder.hpp) and hashed dropout
 //   bf16  today's loop with the forward's products in bfloat16 (nn/autocast.hpp)
 // Each run trains a few steps from a fresh model; the first builds kernels and caches and is left out, and so
@@ -21,6 +21,7 @@
 #include "diffusion/gaussian_diffusion.hpp"
 #include "diffusion/noise_schedule.hpp"
 #include "diffusion/trainer.hpp"
+#include "legacy_mdm.hpp"
 #include "nn/threads.hpp"
 
 using namespace t2imu;
@@ -31,40 +32,6 @@ static const bool kReuseFreedMemory = (keep_freed_memory_for_reuse(), true);
 
 namespace {
 
-// MDM's forward as at 70e56c2 (src/diffusion/mdm.cpp then): libtorch's modules.
-struct LegacyMdmImpl : torch::nn::Module {
-    explicit LegacyMdmImpl(const MdmConfig& c) : c_(c) {
-        namespace nn = torch::nn;
-        pose_embedding = register_module("pose", nn::Linear(c.njoints, c.latent_dim));
-        time_embed = register_module("time", nn::Sequential(nn::Linear(c.latent_dim, c.latent_dim), nn::SiLU(), nn::Linear(c.latent_dim, c.latent_dim)));
-        embed_text = register_module("text", nn::Linear(c.text_dim, c.latent_dim));
-        auto layer = nn::TransformerEncoderLayer(
-            nn::TransformerEncoderLayerOptions(c.latent_dim, c.num_heads).dim_feedforward(c.ff_size).dropout(c.dropout).activation(torch::kGELU));
-        encoder = register_module("encoder", nn::TransformerEncoder(nn::TransformerEncoderOptions(layer, c.num_layers)));
-        pose_final = register_module("final", nn::Linear(c.latent_dim, c.njoints));
-        pos_dropout = register_module("pos_dropout", nn::Dropout(c.dropout));
-        const torch::Tensor pos = torch::arange(c.max_len, torch::kFloat).unsqueeze(1);
-        const torch::Tensor div = torch::exp(torch::arange(0, c.latent_dim, 2, torch::kFloat) * (-std::log(10000.0) / static_cast<double>(c.latent_dim)));
-        pe = torch::stack({torch::sin(pos * div), torch::cos(pos * div)}, 2).flatten(1).unsqueeze(1);
-    }
-    torch::Tensor forward(const torch::Tensor& x, const torch::Tensor& t, const torch::Tensor& text, const torch::Tensor& lengths) {
-        const int64_t frames = x.size(3);
-        const torch::Tensor emb = time_embed->forward(pe.index_select(0, t).squeeze(1)).unsqueeze(0) + embed_text->forward(text).unsqueeze(0);
-        torch::Tensor seq = torch::cat({emb, pose_embedding->forward(x.squeeze(2).permute({2, 0, 1}))}, 0);
-        seq = pos_dropout->forward(seq + pe.index({torch::indexing::Slice(0, frames + 1)}));
-        const torch::Tensor pad = torch::arange(frames).unsqueeze(0) >= lengths.unsqueeze(1);
-        const torch::Tensor padding = torch::cat({torch::zeros({x.size(0), 1}, pad.options()), pad}, 1);
-        const torch::Tensor out = encoder->forward(seq, {}, padding).index({torch::indexing::Slice(1, torch::indexing::None)});
-        return pose_final->forward(out).permute({1, 2, 0}).unsqueeze(2);
-    }
-    MdmConfig c_;
-    torch::nn::Linear pose_embedding{nullptr}, embed_text{nullptr}, pose_final{nullptr};
-    torch::nn::Sequential time_embed{nullptr};
-    torch::nn::TransformerEncoder encoder{nullptr};
-    torch::nn::Dropout pos_dropout{nullptr};
-    torch::Tensor pe;
-};
-TORCH_MODULE(LegacyMdm);
 
 // 70e56c2's loop body on one process: returns the seconds of steps 2..steps.
 double legacy_steps(const TrainConfig& c, int64_t steps) {
