@@ -18,6 +18,7 @@
 #include "imu/imu_dataset.hpp"
 #include "imu/virtual_imu.hpp"
 #include "motion/bvh_export.hpp"
+#include "report/job_marker.hpp"
 #include "motion/activity_names.hpp"
 #include "motion/motion_activity.hpp"
 #include "motion/normalization.hpp"
@@ -197,38 +198,6 @@ void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt&
     write_file_atomic(o.out + "/jobs/" + name + ".json", marker.dump(1) + "\n");
 }
 
-// Every field of a job marker that a later stage reads, with its type; Error naming the marker file and the
-// key ("recordings.3.n_samples") otherwise. A marker passing this can be read without further checks.
-void check_marker(const json& m, const std::string& path) {
-    for (const char* key : {"job", "prompt", "activity"}) json_string(m, key, path);
-    json_count(m, "seed", path);
-    json_bool(m, "kept", path);
-    for (size_t i = 0; i < json_array(m, "attempts", path).size(); ++i) {
-        const std::string where = "attempts." + std::to_string(i);
-        for (const json& f : json_array(m["attempts"][i], "failures", path, where))
-            if (!f.is_string()) throw Error(path, where + ".failures", "names of quality scores", f.dump());
-    }
-    for (const auto& [name, v] : json_object(m, "quality", path).items())
-        if (!v.is_number()) throw Error(path, "quality." + name, "a number", v.dump());
-    const json& recordings = json_array(m, "recordings", path);
-    for (size_t i = 0; i < recordings.size(); ++i) {
-        const std::string where = "recordings." + std::to_string(i);
-        for (const char* key : {"path", "body", "position"}) json_string(recordings[i], key, path, where);
-        json_count(recordings[i], "n_samples", path, where);
-        if (recordings[i].contains("bytes")) json_count(recordings[i], "bytes", path, where);
-    }
-    if (m.contains("motions"))
-        for (size_t i = 0; i < json_array(m, "motions", path).size(); ++i) {
-            json_string(m["motions"][i], "path", path, "motions." + std::to_string(i));
-            json_count(m["motions"][i], "bytes", path, "motions." + std::to_string(i));
-        }
-    if (m.contains("activity_check")) {
-        json_string(json_object(m, "activity_check", path), "shown", path, "activity_check");
-        json_bool(m["activity_check"], "passed", path, "activity_check");
-    }
-    if (m.contains("source_draw")) json_object(m, "source_draw", path);
-}
-
 // Whether the file `out`/`relative` exists with `bytes` bytes (any size when the marker predates sizes: -1).
 bool file_whole(const std::string& out, const std::string& relative, int64_t bytes) {
     std::error_code ec;
@@ -246,7 +215,7 @@ bool job_intact(const std::string& out, int job) {
     json marker;
     try {
         marker = read_json_file(path);
-        check_marker(marker, path);
+        check_job_marker(marker, path);
     } catch (const Error&) {
         return false;  // damaged: the job is redone and its marker rewritten
     }
@@ -342,7 +311,7 @@ std::vector<json> read_markers(const std::string& out) {
     std::sort(files.begin(), files.end());
     for (const fs::path& p : files) {
         markers.push_back(read_json_file(p.string()));  // other shards' markers too: checked like this run's
-        check_marker(markers.back(), p.string());
+        check_job_marker(markers.back(), p.string());
     }
     return markers;
 }
