@@ -70,6 +70,13 @@ TEST(ReleaseImporters, UmafallRefusesAHugeSensorIdByNameNotByStoi) {
     ASSERT_EQ(skipped.size(), 1u);
     EXPECT_NE(skipped[0].find("line 3 sensor id: expected a whole number from 0 to 999999 (got '99999999999999')"), std::string::npos) << skipped[0];
     EXPECT_EQ(skipped[0].find("stoi"), std::string::npos);
+    // A sample counter of 1.5e21 (found by fuzz_umafall: its cast to long was undefined behaviour).
+    std::ofstream(file) << kUmafallHeader << "% C4:BE:84:70:64:8A; 3; WAIST; SensorTag\n"
+                        << "1000;1.5e21;0.1;0.2;0.9;0;3\n";
+    skipped.clear();
+    EXPECT_THROW(import_umafall(dir, &skipped), Error);
+    ASSERT_EQ(skipped.size(), 1u);
+    EXPECT_NE(skipped[0].find("line 4 sample no: expected a whole number from 0 to 10^12 (got '1.5e21')"), std::string::npos) << skipped[0];
     EXPECT_EQ(refusal([] { release_index("-3", "f", "id"); }), "f: id: expected a whole number from 0 to 999999 (got '-3')");
     EXPECT_EQ(release_index("000042", "f", "id"), 42);
 }

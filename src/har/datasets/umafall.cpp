@@ -84,7 +84,11 @@ std::vector<ImuRecording> read_umafall_file(const std::string& path) {
         const int id = release_index(f[6], path, "line " + std::to_string(n) + " sensor id");
         const int type = release_index(f[5], path, "line " + std::to_string(n) + " sensor type");
         if (!positions.count(id) || type > 1) continue;  // the phone, or the magnetometer
-        samples[id][type][static_cast<long>(number(f[1], path, n))] = {number(f[2], path, n), number(f[3], path, n), number(f[4], path, n)};
+        // The sample counter keys the samples: a whole number (a cast of 1e21 to long would be undefined).
+        const double sample_no = number(f[1], path, n);
+        if (!(sample_no >= 0 && sample_no <= 1e12 && sample_no == std::floor(sample_no)))
+            throw Error(path, "line " + std::to_string(n) + " sample no", "a whole number from 0 to 10^12", "'" + f[1].substr(0, 24) + "'");
+        samples[id][type][static_cast<long>(sample_no)] = {number(f[2], path, n), number(f[3], path, n), number(f[4], path, n)};
     }
     std::vector<ImuRecording> out;
     for (const auto& [id, position] : positions) {
