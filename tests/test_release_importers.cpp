@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "core/zip_archive.hpp"
+#include "har/datasets/hugadb.hpp"
 #include "har/datasets/realworld.hpp"
 #include "har/datasets/release_files.hpp"
 #include "har/datasets/sisfall.hpp"
@@ -103,4 +104,14 @@ TEST(ReleaseImporters, RealWorldRefusesANanCellAndAHugePartNumber) {
     const std::string huge = refusal([&] { import_realworld(dir, &skipped); });
     EXPECT_NE((huge + (skipped.empty() ? "" : skipped[0])).find("part number: expected a whole number from 0 to 999999"), std::string::npos)
         << huge;
+}
+
+TEST(ReleaseImporters, HugadbRefusesAnActivityIdOutOfRangeBeforeCastingIt) {
+    // 38 numbers and an activity id of -1.9e10 (found by fuzz_hugadb: its cast to int was undefined behaviour).
+    const std::string path = test::scratch_dir("release_hugadb") + "/HuGaDB_v1_walking_01_00.txt";
+    std::string row;
+    for (int i = 0; i < 38; ++i) row += "1\t";
+    std::ofstream(path) << row << "-18966700000\n";
+    const std::string m = refusal([&] { read_hugadb_file(path); });
+    EXPECT_NE(m.find("line 1: expected an activity id from 1 to 12"), std::string::npos) << m;
 }

@@ -52,8 +52,10 @@ std::vector<ImuRecording> read_hugadb_file(const std::string& path) {
         while (cells >> x) v.push_back(x);
         if (v.size() != 39 || !cells.eof())
             throw Error(path, "line " + std::to_string(n), "39 numbers (6 IMUs x 6, 2 EMG, activity)", std::to_string(v.size()));
+        // Checked as a double first: casting -1.9e10 to int is undefined behaviour (found by fuzz_hugadb).
+        if (!(v[38] >= 1 && v[38] <= 12 && v[38] == std::floor(v[38])))
+            throw Error(path, "line " + std::to_string(n), "an activity id from 1 to 12", std::to_string(v[38]));
         const int act = static_cast<int>(v[38]);
-        if (act < 1 || act > 12) throw Error(path, "line " + std::to_string(n), "an activity id from 1 to 12", std::to_string(act));
         rows.push_back(std::move(v));
         activity.push_back(act);
     }
