@@ -32,6 +32,9 @@ TEST(JsonFile, ASyntaxErrorNamesTheFileAndWhereItBroke) {
     EXPECT_EQ(m.find("json.exception"), std::string::npos) << m;
     EXPECT_NE(refusal([&] { parse_json_text("{\"a\": \"\xff\"}", "x.json"); }).find("x.json: json: expected a JSON document"), std::string::npos);
     EXPECT_NE(refusal([&] { read_json_file(path + ".missing"); }).find(path + ".missing"), std::string::npos);
+    // A number beyond double's range (found by fuzz_job_marker: the parser throws out_of_range, not parse_error).
+    EXPECT_NE(refusal([&] { parse_json_text("{\"seed\": 0.1e1111111}", "big.json"); }).find("big.json: json: expected a JSON document (got number overflow"),
+              std::string::npos);
 }
 
 TEST(JsonFile, FieldsAreReadByTypeAndFaultsNameTheDottedKey) {
