@@ -20,14 +20,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-template <class F> std::string refusal(F f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "no error";
-}
 
 // A SisFall walking trial of 40 samples at 200 Hz; `bad` (when given) replaces line `at`.
 void write_sisfall(const std::string& path, int at = -1, const std::string& bad = "") {
@@ -56,7 +48,7 @@ TEST(ReleaseImporters, SisFallRefusesAGarbageOrNanLineInsteadOfDroppingIt) {
     // Nothing usable: the import itself is refused, with the first file's reason.
     fs::remove(dir + "/SA01/D01_SA01_R01.txt");
     skipped.clear();
-    const std::string m = refusal([&] { import_sisfall(dir, &skipped); });
+    const std::string m = test::error_message([&] { import_sisfall(dir, &skipped); });
     EXPECT_NE(m.find(dir + ": recordings: expected at least one usable recording among 2"), std::string::npos) << m;
     EXPECT_NE(m.find("first refusal: " + dir + "/SA01/D01_SA01_R02.txt"), std::string::npos) << m;
 }
@@ -78,7 +70,7 @@ TEST(ReleaseImporters, UmafallRefusesAHugeSensorIdByNameNotByStoi) {
     EXPECT_THROW(import_umafall(dir, &skipped), Error);
     ASSERT_EQ(skipped.size(), 1u);
     EXPECT_NE(skipped[0].find("line 4 sample no: expected a whole number from 0 to 10^12 (got '1.5e21')"), std::string::npos) << skipped[0];
-    EXPECT_EQ(refusal([] { release_index("-3", "f", "id"); }), "f: id: expected a whole number from 0 to 999999 (got '-3')");
+    EXPECT_EQ(test::error_message([] { release_index("-3", "f", "id"); }), "f: id: expected a whole number from 0 to 999999 (got '-3')");
     EXPECT_EQ(release_index("000042", "f", "id"), 42);
 }
 
@@ -93,7 +85,7 @@ TEST(ReleaseImporters, RealWorldRefusesANanCellAndAHugePartNumber) {
     write_zip(dir + "/proband1/data/acc_walking_csv.zip", {{"acc_walking_chest.csv", csv("nan")}});
     write_zip(dir + "/proband1/data/gyr_walking_csv.zip", {{"Gyroscope_walking_chest.csv", csv("0.2")}});
     std::vector<std::string> skipped;
-    const std::string m = refusal([&] { import_realworld(dir, &skipped); });
+    const std::string m = test::error_message([&] { import_realworld(dir, &skipped); });
     EXPECT_NE((m + (skipped.empty() ? "" : skipped[0])).find("acc_walking_chest.csv: row 7 column 'attr_x': expected a finite number (got nan)"),
               std::string::npos)
         << m << " / " << (skipped.empty() ? "" : skipped[0]);
@@ -101,7 +93,7 @@ TEST(ReleaseImporters, RealWorldRefusesANanCellAndAHugePartNumber) {
     fs::create_directories(dir + "/proband1/data");
     write_zip(dir + "/proband1/data/acc_walking_csv.zip", {{"acc_walking_99999999999_chest.csv", csv("0.1")}});
     skipped.clear();
-    const std::string huge = refusal([&] { import_realworld(dir, &skipped); });
+    const std::string huge = test::error_message([&] { import_realworld(dir, &skipped); });
     EXPECT_NE((huge + (skipped.empty() ? "" : skipped[0])).find("part number: expected a whole number from 0 to 999999"), std::string::npos)
         << huge;
 }
@@ -112,6 +104,6 @@ TEST(ReleaseImporters, HugadbRefusesAnActivityIdOutOfRangeBeforeCastingIt) {
     std::string row;
     for (int i = 0; i < 38; ++i) row += "1\t";
     std::ofstream(path) << row << "-18966700000\n";
-    const std::string m = refusal([&] { read_hugadb_file(path); });
+    const std::string m = test::error_message([&] { read_hugadb_file(path); });
     EXPECT_NE(m.find("line 1: expected an activity id from 1 to 12"), std::string::npos) << m;
 }

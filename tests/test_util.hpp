@@ -6,6 +6,8 @@
 #include <functional>
 #include <string>
 
+#include "core/error.hpp"
+
 namespace t2imu::test {
 
 // ../shared/data beside the checkout, or $T2IMU_SHARED_DATA. Empty when absent.
@@ -32,6 +34,16 @@ struct CliResult {
     int exit_code;
     std::string output;  // stdout and stderr together
 };
+// The message of the t2imu::Error that `f` throws, or "no error".
+template <class F> std::string error_message(F f) {
+    try {
+        f();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
 // Runs the t2imu binary with `args` (a shell-quoted string).
 CliResult run_cli(const std::string& args);
 
