@@ -46,3 +46,14 @@ TEST(SampleOptions, DefaultsPassAndEachBadValueIsRefusedByItsOption) {
     ddpm.steps = 0;
     EXPECT_NO_THROW(ddpm.validate());
 }
+
+TEST(SampleOptions, SecondsBecomeFramesAt20FpsWithinTheSampledLengths) {
+    EXPECT_EQ(frames_for_seconds(6.0, "--seconds"), 120);
+    EXPECT_EQ(frames_for_seconds(0.2, "--seconds"), 4);
+    EXPECT_EQ(frames_for_seconds(9.8, "--seconds"), 196);
+    EXPECT_EQ(frames_for_seconds(1.26, "--seconds"), 25);  // rounded, as synth and sample always did
+    for (const double bad : {0.1, 9.9, -1.0, 1e12, std::nan(""), HUGE_VAL}) {
+        const std::string message = test::error_message([&] { frames_for_seconds(bad, "--seconds"); });
+        EXPECT_EQ(message.rfind("--seconds", 0), 0u) << bad << ": " << message;
+    }
+}

@@ -24,6 +24,20 @@ TEST(SamplerComparison, ParsesTheSamplerList) {
     for (const char* bad : {"ddpm:5", "ddim", "euler:3", "ddim:1", "dpmpp:x", ""}) EXPECT_THROW(parse_sampler_configs(bad), Error) << bad;
 }
 
+TEST(SamplerComparison, OptionsAreCheckedBeforeAnyModelIsLoaded) {
+    SamplerComparisonOptions o;
+    o.model = "no-such-model";  // validate() reads nothing
+    EXPECT_NO_THROW(o.validate());
+    o.guidance = std::nan("");
+    EXPECT_NE(test::error_message([&] { o.validate(); }).find("--guidance"), std::string::npos);
+    o.guidance = 2.5;
+    o.frames = 197;
+    EXPECT_NE(test::error_message([&] { o.validate(); }).find("--frames"), std::string::npos);
+    o.frames = 120;
+    o.samples_per_prompt = 0;
+    EXPECT_NE(test::error_message([&] { o.validate(); }).find("--samples-per-prompt"), std::string::npos);
+}
+
 TEST(SamplerComparison, SameSeedsGiveTheSameMotionsAndOtherSamplersDiffer) {
     torch::set_num_threads(1);
     const std::string dir = test::scratch_dir("sampler_comparison");

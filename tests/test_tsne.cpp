@@ -115,3 +115,17 @@ TEST(Tsne, CliEmbedsAFeatureTableAndCarriesLabels) {
     for (size_t i = 0; i < 120; ++i) e.row(static_cast<Eigen::Index>(i)) << y.number(i, 2), y.number(i, 3);
     EXPECT_GT(knn_label_agreement(e, label), 0.99);
 }
+
+TEST(Tsne, OptionsNoDataCouldMakeValidAreRefusedNamingTheOption) {
+    EXPECT_NO_THROW(TsneOptions{}.validate());
+    const auto refusal = [](auto change) {
+        TsneOptions o;
+        change(o);
+        return test::error_message([&] { o.validate(); });
+    };
+    EXPECT_NE(refusal([](TsneOptions& o) { o.perplexity = std::nan(""); }).find("--perplexity"), std::string::npos);
+    EXPECT_NE(refusal([](TsneOptions& o) { o.perplexity = 0; }).find("--perplexity"), std::string::npos);
+    EXPECT_NE(refusal([](TsneOptions& o) { o.perplexity = 1e12; }).find("--perplexity"), std::string::npos);
+    EXPECT_NE(refusal([](TsneOptions& o) { o.iterations = 0; }).find("--iterations"), std::string::npos);
+    EXPECT_NE(refusal([](TsneOptions& o) { o.iterations = 100; }).find("exaggeration"), std::string::npos);  // 250 > 100
+}

@@ -234,6 +234,15 @@ double gradient(const SparseRows& p, double exaggeration, const PointMatrix& y, 
 
 }  // namespace
 
+void TsneOptions::validate() const {
+    if (!(perplexity > 0 && perplexity <= 1e6)) throw Error("tsne", "--perplexity", "above 0 and below a third of the points", std::to_string(perplexity));
+    if (iterations < 1 || iterations > 1000000) throw Error("tsne", "--iterations", "1 to 10^6", std::to_string(iterations));
+    if (exaggeration_iterations < 0 || exaggeration_iterations > iterations)
+        throw Error("tsne", "exaggeration iterations", "0 to the iterations", std::to_string(exaggeration_iterations));
+    if (!(early_exaggeration >= 1 && early_exaggeration <= 1000)) throw Error("tsne", "early exaggeration", "1 to 1000", std::to_string(early_exaggeration));
+    if (!(theta >= 0 && theta <= 1)) throw Error("tsne", "theta", "0 (exact) to 1", std::to_string(theta));
+}
+
 TsneResult tsne(const PointMatrix& x, const TsneOptions& o) {
     const Eigen::Index n = x.rows();
     if (n < 4) throw Error("tsne", "points", "at least 4 points", std::to_string(n));

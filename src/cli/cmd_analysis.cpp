@@ -1,5 +1,6 @@
 // t2imu analysis lacc: L_acc before/after fine-tuning per activity category (the paper's Fig. 1).
 #include <cstdio>
+#include <optional>
 
 #include "analysis/domain_gap.hpp"
 #include "analysis/lacc_analysis.hpp"
@@ -19,15 +20,20 @@ namespace {
 
 struct LaccArgs {
     std::string before, after, vocab, labels, out;
-    double tau = -1;
+    std::optional<double> tau;  // a cosine similarity threshold; else calibrated on --labels
 };
 
 void run(const LaccArgs& a) {
+    check_usage([&] {
+        if (a.tau && !(*a.tau >= -1 && *a.tau <= 1)) throw Error("--tau", "tau", "a cosine similarity from -1 to 1", std::to_string(*a.tau));
+        if (!a.tau && a.labels.empty()) throw Error("--tau", "tau", "--tau T or --labels CSV to calibrate it");
+        check_output_path(a.out, "--out");
+    });
     const WordVectors vectors = WordVectors::load(a.vocab);
     const SifEncoder sif(vectors, kCategorySifWeight);
     const std::vector<LaccSample> before = read_lacc_csv(a.before), after = read_lacc_csv(a.after);
-    double tau = a.tau;
-    if (!a.labels.empty()) {
+    double tau = a.tau.value_or(0);
+    if (!a.tau) {
         const CsvTable t = read_csv(a.labels);
         std::vector<std::string> captions, labels;
         for (const auto& row : t.rows) captions.push_back(row[t.column("caption")]), labels.push_back(row[t.column("category")]);
@@ -35,7 +41,6 @@ void run(const LaccArgs& a) {
         std::printf("tau %.2f: %.1f %% agreement with %zu labelled captions\n", c.tau, 100 * c.agreement, c.captions);
         tau = c.tau;
     }
-    if (tau < 0) throw Error("--tau", "tau", "--tau T or --labels CSV to calibrate it");
     const LaccAnalysis analysis = analyse_lacc(before, after, ActivityCategorizer(sif, tau));
     write_file_atomic(a.out, lacc_analysis_csv(analysis));
     std::printf("%s: L_acc change %.2f %% over %zu samples (high-dynamic %.2f %%, low-dynamic %.2f %%)\n", a.out.c_str(),

@@ -20,10 +20,14 @@ struct CompareArgs {
 };
 
 void run(CompareArgs a) {
-    check_usage([&] { check_output_path(a.out, "--out"); });
     SamplerComparisonOptions& o = a.options;
+    check_usage([&] {
+        o.frames = frames_for_seconds(a.seconds, "--seconds");
+        o.validate();
+        parse_sampler_configs(a.samplers);
+        check_output_path(a.out, "--out");
+    });
     o.prompts = read_prompt_set(a.prompts);
-    o.frames = static_cast<int>(std::lround(a.seconds * 20));
     o.device = global_options().device;
     const CsvTable t = compare_samplers(o, parse_sampler_configs(a.samplers));
     write_csv(a.out, t);

@@ -18,8 +18,11 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--out", out, "results folder; rerun with the same folder to continue")->required();
     cmd->add_option("--repeats", repeats, "HAR trainings per row (default: the config's har.repeats)");
     cmd->callback([] {
+        check_usage([] {
+            if (repeats < 0 || repeats > 1000) throw Error("--repeats", "trainings", "0 (the config's) to 1000", std::to_string(repeats));
+            check_output_folder(out, "--out");
+        });
         ExperimentConfig c = read_experiment_config(config);
-        check_usage([] { check_output_folder(out, "--out"); });
         if (repeats > 0) c.har.repeats = repeats;
         c.synth.device = global_options().device;
         c.synth.threads = worker_threads();

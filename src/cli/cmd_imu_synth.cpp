@@ -53,7 +53,7 @@ void write_outputs(const SynthArgs& a, const std::vector<BodyImu>& bodies, const
 void run(const SynthArgs& a) {
     VirtualImuOptions options = a.options;
     check_usage([&] {
-        if (!(a.fps > 0 && std::isfinite(a.fps))) throw Error("--fps", "fps", "a positive frame rate", std::to_string(a.fps));
+        check_motion_fps(a.fps, "--fps");
         options.noise = parse_noise_model(a.noise);
         options.realism = parse_realism(a.realism);
         options.validate();

@@ -1,8 +1,11 @@
 // t2imu model forward: one denoiser pass on arrays in the official layouts (for checks against PyTorch).
 #include "cli/command.hpp"
+#include "cli/usage.hpp"
 #include "core/error.hpp"
 #include "core/npy.hpp"
+#include "core/output_path.hpp"
 #include "diffusion/mdm_io.hpp"
+#include "diffusion/sample_options.hpp"
 
 namespace t2imu::cli {
 
@@ -19,7 +22,14 @@ static CommandRegistrar registrar([](CLI::App& root) {
     auto* uncond = cmd->add_flag("--uncond", f.uncond, "the unconditional pass (text zeroed)");
     cmd->add_option("--guidance", f.guidance, "classifier-free guidance scale (uncond + s (cond - uncond))")->excludes(uncond);
     cmd->add_option("--out", f.out, "output .npy [B,263,1,F] float32")->required();
-    cmd->callback([] { run_mdm_forward(f); });
+    cmd->callback([] {
+        check_usage([] {
+            if (!(f.guidance >= 0 && f.guidance <= kMaxGuidance))
+                throw Error("--guidance", "scale", "0 (no guidance) to " + std::to_string(static_cast<int>(kMaxGuidance)), std::to_string(f.guidance));
+            check_output_path(f.out, "--out");
+        });
+        run_mdm_forward(f);
+    });
 });
 
 }  // namespace t2imu::cli

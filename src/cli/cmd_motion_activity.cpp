@@ -8,10 +8,12 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command.hpp"
+#include "cli/usage.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/json_file.hpp"
 #include "core/npy.hpp"
+#include "core/output_path.hpp"
 #include "data/activity_reference.hpp"
 #include "motion/joint_sequence.hpp"
 
@@ -98,7 +100,11 @@ void classify_synth(const MotionActivityClassifier& c, const std::string& dir, c
 }
 
 void run(const ActivityArgs& a) {
-    if (a.dataset.empty() == a.reference.empty()) throw Error("motion activity", "reference", "either --dataset DIR or --reference CSV");
+    check_usage([&] {
+        if (a.dataset.empty() == a.reference.empty()) throw Error("motion activity", "reference", "either --dataset DIR or --reference CSV");
+        if (!a.save_reference.empty()) check_output_path(a.save_reference, "--save-reference");
+        if (!a.out.empty()) check_output_path(a.out, "--out");
+    });
     const MotionActivityClassifier c = a.dataset.empty() ? MotionActivityClassifier::load(a.reference)
                                                          : MotionActivityClassifier(activity_examples(a.dataset));
     if (!a.save_reference.empty()) {

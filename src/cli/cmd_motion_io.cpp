@@ -38,9 +38,12 @@ static void add_export_command(CLI::App& motion) {
     static double fps = 20.0;
     cmd->add_option("input", in, "joints .npy [F,22,3]")->required()->check(CLI::ExistingFile);
     cmd->add_option("--out", out, "output .bvh")->required();
-    cmd->add_option("--fps", fps, "frame rate of the joints")->capture_default_str()->check(CLI::PositiveNumber);
+    cmd->add_option("--fps", fps, "frame rate of the joints")->capture_default_str();
     cmd->callback([] {
-        check_usage([] { check_output_path(out, "--out"); });
+        check_usage([] {
+            check_motion_fps(fps, "--fps");
+            check_output_path(out, "--out");
+        });
         write_bvh(out, smpl22_to_bvh(joint_sequence_from_array(read_npy(in), in, 22, 1, fps)));
     });
 }

@@ -5,8 +5,10 @@
 #include <filesystem>
 
 #include "cli/command.hpp"
+#include "cli/usage.hpp"
 #include "core/atomic_file.hpp"
 #include "core/npy.hpp"
+#include "core/output_path.hpp"
 #include "motion/motion_quality.hpp"
 
 namespace t2imu::cli {
@@ -75,7 +77,14 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--fps", fps, "frame rate of the joints")->capture_default_str();
     cmd->add_option("--percentile", p, "percentile to print over the inputs")->capture_default_str();
     cmd->add_option("--out", out, "per-file scores CSV");
-    cmd->callback([] { run(inputs, fps, p, out); });
+    cmd->callback([] {
+        check_usage([] {
+            check_motion_fps(fps, "--fps");
+            if (!(p >= 0 && p <= 100)) throw Error("--percentile", "percentile", "0 to 100", std::to_string(p));
+            if (!out.empty()) check_output_path(out, "--out");
+        });
+        run(inputs, fps, p, out);
+    });
 });
 
 }  // namespace t2imu::cli

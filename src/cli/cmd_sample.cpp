@@ -33,7 +33,7 @@ void run(SampleArgs a) {
         if (a.seconds != 0 && a.frames != 0) throw Error("sample", "length", "either --seconds or --frames");
         if (!a.prompt.empty()) check_prompt_text(a.prompt, "--prompt", "text");
         if (a.frames != 0) a.options.frames = a.frames;
-        if (a.seconds != 0) a.options.frames = static_cast<int>(std::lround(a.seconds * 20));
+        if (a.seconds != 0) a.options.frames = frames_for_seconds(a.seconds, "--seconds");
         a.options.validate();
         check_output_path(a.out, "--out");
     });
@@ -79,6 +79,7 @@ static void add_eval_lacc(CLI::App& root) {
     cmd->add_option("--seed", seed, "seed of the draws (use the same for the models you compare)");
     cmd->add_option("--out", out, "output CSV")->required();
     cmd->callback([] {
+        check_usage([] { check_output_path(out, "--out"); });
         std::unique_ptr<MotionModel> m = load_motion_model(model, global_options().device);
         const CsvTable table = evaluate_lacc(*m, dataset, split, seed);
         write_csv(out, table);

@@ -97,6 +97,7 @@ static void add_nearest(CLI::App& text) {
     cmd->add_option("--prompts", prompts, "prompt set (activity<TAB>prompt)")->required()->check(CLI::ExistingFile);
     cmd->add_option("--out", out, "CSV: activity,prompt,nearest_caption,similarity");
     cmd->callback([] {
+        if (!out.empty()) check_usage([] { check_output_path(out, "--out"); });
         std::vector<std::string> files;
         if (std::filesystem::is_directory(corpus)) {
             for (const auto& e : std::filesystem::directory_iterator(corpus))

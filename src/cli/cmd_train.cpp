@@ -32,12 +32,14 @@ struct RunOptions {
 };
 
 void run(const RunOptions& o) {
-    TrainConfig c = read_train_config(o.config);
+    // The options first, then the config they override: a bad option is a usage error before any file is read.
     check_usage([&] {
-        check_output_path(c.out, o.config + ": out");
-        if (!(o.max_minutes >= 0 && o.max_minutes < 1e7)) throw Error("--max-minutes", "minutes", "0 (no budget) or more", std::to_string(o.max_minutes));
+        if (!(o.max_minutes >= 0 && o.max_minutes <= 1e7)) throw Error("--max-minutes", "minutes", "0 (no budget) to 10^7", std::to_string(o.max_minutes));
+        if (o.steps < 0 || o.steps > 1000000000) throw Error("--steps", "steps", "0 (the config's) to 10^9", std::to_string(o.steps));
         if (!o.precision.empty()) parse_precision(o.precision, "--precision", "value");
     });
+    TrainConfig c = read_train_config(o.config);
+    check_usage([&] { check_output_path(c.out, o.config + ": out"); });
     if (!o.precision.empty()) c.precision = o.precision;
     c.max_minutes = o.max_minutes;
     c.threads = worker_threads();

@@ -22,7 +22,10 @@ struct TsneArgs {
 // The window table's label columns (catch22_table.hpp) and any non-numeric column are carried over beside
 // tsne_x, tsne_y; the rest are the features.
 void run(const TsneArgs& a) {
-    check_usage([&] { check_output_path(a.out, "--out"); });
+    check_usage([&] {
+        a.options.validate();
+        check_output_path(a.out, "--out");
+    });
     const std::set<std::string> labels(kWindowLabelColumns.begin(), kWindowLabelColumns.end());
     const TsneTable t = tsne_table(read_csv(a.in), labels, a.options, a.in);
     write_csv(a.out, t.embedding);

@@ -173,10 +173,11 @@ BuildSummary build_into(const BuildOptions& o, const std::string& tmp);
 void BuildOptions::validate() const {
     if (mocap_dir.empty()) throw Error("data build", "--mocap", "a motion-capture folder");
     if (out_dir.empty()) throw Error("data build", "--out", "an output folder");
-    if (!(std::floor(max_seconds * kFps + 1e-9) >= 40))  // MDM leaves out motions under 40 frames
-        throw Error("data build", "--max-seconds", "at least 2 s (40 frames)", std::to_string(max_seconds));
-    if (!(max_seconds_per_file >= 0 && std::isfinite(max_seconds_per_file)))
-        throw Error("data build", "--max-seconds-per-file", "0 (no cap) or a number of seconds", std::to_string(max_seconds_per_file));
+    // MDM leaves out motions under 40 frames; an hour bounds what a capture take holds (and the frame counts).
+    if (!(std::floor(max_seconds * kFps + 1e-9) >= 40 && max_seconds <= 3600))
+        throw Error("data build", "--max-seconds", "2 s (40 frames) to 3600 s", std::to_string(max_seconds));
+    if (!(max_seconds_per_file >= 0 && max_seconds_per_file <= 86400))
+        throw Error("data build", "--max-seconds-per-file", "0 (no cap) to 86400 s", std::to_string(max_seconds_per_file));
     if (lying_turns && !derive) throw Error("data build", "--lying-turns", "the derived clips it is one of (not with --no-derived)");
 }
 

@@ -22,6 +22,12 @@ Sampler parse_sampler(const std::string& name, const std::string& option) {
 
 int denoiser_calls(Sampler sampler, int steps, int schedule_steps) { return sampler == Sampler::ddpm ? schedule_steps : steps; }
 
+int frames_for_seconds(double seconds, const std::string& option) {
+    if (!(seconds * kSampleFps >= 3.5 && seconds * kSampleFps < 196.5))
+        throw Error(option, "seconds", "0.2 to 9.8 s (4 to 196 frames at 20 fps)", std::to_string(seconds));
+    return static_cast<int>(std::lround(seconds * kSampleFps));
+}
+
 void SampleOptions::validate() const {
     if (frames < 4 || frames > 196) throw Error("sampling", "--frames", "4 to 196 (20 fps)", std::to_string(frames));
     // ddpm takes every step of the model's schedule and ignores `steps`.

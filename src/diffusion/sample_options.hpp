@@ -20,6 +20,11 @@ Sampler parse_sampler(const std::string& name, const std::string& option = "--sa
 int denoiser_calls(Sampler sampler, int steps, int schedule_steps);
 
 constexpr double kMaxGuidance = 100;  // classifier-free guidance scales accepted: [0, kMaxGuidance]
+constexpr double kSampleFps = 20;     // HumanML3D's frame rate: every sampled motion is at 20 fps
+
+// A length in seconds as sampled frames (round(seconds * 20)); throws Error naming `option` unless the length is
+// finite and gives 4 to 196 frames (0.2 to 9.8 s), the lengths SampleOptions accepts.
+int frames_for_seconds(double seconds, const std::string& option);
 
 struct SampleOptions {
     int frames = 120;              // 20 fps; at most 196 (HumanML3D's longest)

@@ -63,8 +63,9 @@ SensorNoiseModel VirtualImuOptions::device() const { return noise.enabled() ? no
 void VirtualImuOptions::validate() const {
     if (!(rate_hz > 0 && rate_hz <= 2000)) throw Error("--rate", "rate", "0 < HZ <= 2000", std::to_string(rate_hz));
     if (!(mount_jitter_deg >= 0 && mount_jitter_deg <= 180)) throw Error("--mount-jitter", "degrees", "0 to 180", std::to_string(mount_jitter_deg));
-    if (!(twist_smoothing_frames >= 0 && std::isfinite(twist_smoothing_frames)))
-        throw Error("--twist-smoothing", "sigma", "0 or more frames", std::to_string(twist_smoothing_frames));
+    // A sigma of 1,000 frames (50 s at 20 fps) already flattens the twist of any clip we sample.
+    if (!(twist_smoothing_frames >= 0 && twist_smoothing_frames <= 1000))
+        throw Error("--twist-smoothing", "sigma", "0 to 1000 frames", std::to_string(twist_smoothing_frames));
     realism.validate("--realism " + realism.name);
     if (realism.device_rate_hz > 0 && rate_hz != std::round(rate_hz))
         throw Error("--rate", "rate", "a whole number of Hz with a realism model's device_rate_hz", std::to_string(rate_hz));

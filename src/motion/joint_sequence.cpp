@@ -12,6 +12,10 @@ JointSequence::JointSequence(int frames, int joints, double fps_)
     : num_frames(frames), num_joints(joints), fps(fps_),
       positions(static_cast<size_t>(frames) * static_cast<size_t>(joints), Eigen::Vector3d::Zero()) {}
 
+void check_motion_fps(double fps, const std::string& option) {
+    if (!(fps > 0 && fps <= 1000)) throw Error(option, "frame rate", "above 0 and at most 1000 fps", std::to_string(fps));
+}
+
 double lowest_joint_height_at(const JointSequence& s, int frame) {
     double low = s.at(frame, 0).y();
     for (int j = 1; j < s.num_joints; ++j) low = std::min(low, s.at(frame, j).y());

@@ -28,6 +28,10 @@ struct JointSequence {
 // (seconds) into frame counts at any rate.
 inline int frames_of(double seconds, double fps) { return static_cast<int>(std::lround(seconds * fps)); }
 
+// Throws Error naming `option` unless `fps` is a frame rate motion can have here: above 0, at most 1,000 fps
+// (optical capture runs to ~480; a larger value is a typo, and frame counts derived from it would overflow).
+void check_motion_fps(double fps, const std::string& option);
+
 // The lowest joint's height (y, m) at `frame`, and over the whole motion (at least one frame and joint).
 double lowest_joint_height_at(const JointSequence& s, int frame);
 double lowest_joint_height(const JointSequence& s);

@@ -145,6 +145,18 @@ std::string number(double v) {
 
 }  // namespace
 
+void SamplerComparisonOptions::validate() const {
+    if (samples_per_prompt < 1 || samples_per_prompt > 1000)
+        throw Error("sampler comparison", "--samples-per-prompt", "1 to 1000", std::to_string(samples_per_prompt));
+    if (!(min_activity_agreement >= 0 && min_activity_agreement <= 1))
+        throw Error("sampler comparison", "--min-activity-agreement", "0 to 1", std::to_string(min_activity_agreement));
+    SampleOptions s;
+    s.frames = frames;
+    s.guidance = guidance;
+    s.batch = batch;
+    s.validate();
+}
+
 CsvTable compare_samplers(const SamplerComparisonOptions& o, const std::vector<SamplerConfig>& configs) {
     if (configs.empty() || o.prompts.empty() || o.samples_per_prompt < 1) throw Error("sampler comparison", "input", "samplers and prompts");
     std::unique_ptr<MotionModel> model = load_motion_model(o.model, o.device);

@@ -49,6 +49,10 @@ struct SamplerComparisonOptions {
     double min_activity_agreement = 0.55;
     std::string captured_dataset;          // "" = no captured row
     std::string captured_split = "test";
+
+    // Throws Error naming the option (--seconds, --guidance, --batch, --samples-per-prompt...) of a value out of
+    // range or not finite; the prompts and files are checked where they are read.
+    void validate() const;
 };
 
 // One row per config, the first being the reference; columns as above.

@@ -85,7 +85,7 @@ std::vector<Drawn> draw_filtered(MotionSource& source, const std::vector<int>& j
                                  const std::vector<std::string>& labels, const std::vector<std::string>& expected,
                                  const MotionActivityClassifier* classifier,
                                  const SynthOptions& o, double* generate_s, double* score_s) {
-    const int frames = static_cast<int>(std::lround(o.seconds * 20));
+    const int frames = frames_for_seconds(o.seconds, "--seconds");
     std::vector<Drawn> out(jobs.size());
     std::vector<std::optional<Drawn>> best_activity(jobs.size());  // see keep_best_activity_draw
     std::vector<size_t> pending(jobs.size());
@@ -180,7 +180,7 @@ void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt&
         write_npy(o.out + "/motions/" + name + "_joints.npy", joint_sequence_to_array(d.joints));
         write_bvh(o.out + "/motions/" + name + ".bvh", smpl22_to_bvh(d.joints));
         marker["motions"] = json::array();
-        for (const std::string file : {name + "_joints.npy", name + ".bvh"})
+        for (const std::string& file : {name + "_joints.npy", name + ".bvh"})
             marker["motions"].push_back({{"path", "motions/" + file}, {"bytes", fs::file_size(o.out + "/motions/" + file)}});
         VirtualImuOptions imu = stage.imu;
         imu.seed = stage.imu.seed + static_cast<uint64_t>(job);
@@ -286,7 +286,7 @@ SampleOptions synth_sampling_defaults() {
 
 void SynthOptions::validate() const {
     if (samples_per_prompt < 1) throw Error("synth", "--samples-per-prompt", "at least 1", std::to_string(samples_per_prompt));
-    if (!(seconds >= 0.2 && seconds <= kMaxMotionFrames / 20.0)) throw Error("synth", "--seconds", "0.2 to 9.8", std::to_string(seconds));
+    frames_for_seconds(seconds, "--seconds");
     if (shards < 1 || shard < 0 || shard >= shards) throw Error("synth", "--shard", "I/N with 1 <= I <= N");
     if (max_retries < 0) throw Error("synth", "--retries", "0 or more", std::to_string(max_retries));
     VirtualImuOptions imu;
