@@ -6,6 +6,7 @@
 
 #include "analysis/catch22_features.hpp"
 #include "core/error.hpp"
+#include "core/parse.hpp"
 
 namespace t2imu {
 
@@ -46,11 +47,9 @@ std::vector<double> read_catch22_series(const std::string& path) {
     std::vector<double> series;
     std::string token;
     while (in >> token) {
-        char* end = nullptr;
-        const double v = std::strtod(token.c_str(), &end);
-        if (end == token.c_str() || *end != '\0')
-            throw Error(path, "value " + std::to_string(series.size() + 1), "a number", token);
-        series.push_back(v);
+        const std::optional<double> v = parse_number(token);
+        if (!v) throw Error(path, "value " + std::to_string(series.size() + 1), "a number", token);
+        series.push_back(*v);
     }
     return series;
 }

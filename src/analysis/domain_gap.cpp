@@ -24,7 +24,8 @@ PointMatrix columns_of(const CsvTable& t, const std::vector<std::string>& names,
         const size_t col = t.column(names[c]);
         for (size_t r = 0; r < rows.size(); ++r) {
             const std::string& v = t.rows[rows[r]][col];
-            x(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = (v == "nan" || v.empty()) ? std::nan("") : std::strtod(v.c_str(), nullptr);
+            // catch22 writes "nan" (or nothing) for a feature of a flat channel; anything else must be a number.
+            x(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = v.empty() ? std::nan("") : t.number(rows[r], col);
         }
     }
     return x;

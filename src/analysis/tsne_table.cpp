@@ -5,17 +5,11 @@
 #include <cstdlib>
 
 #include "core/error.hpp"
+#include "core/parse.hpp"
 
 namespace t2imu {
 
 namespace {
-
-bool is_number(const std::string& s) {
-    if (s.empty()) return false;
-    char* end = nullptr;
-    std::strtod(s.c_str(), &end);
-    return end == s.c_str() + s.size();
-}
 
 bool is_missing(const std::string& s) { return s == "nan" || s == "NaN" || s == "-nan"; }
 
@@ -39,7 +33,7 @@ TsneTable tsne_table(const CsvTable& table, const std::set<std::string>& label_c
     std::vector<size_t> features, labels;
     for (size_t c = 0; c < table.header.size(); ++c) {
         bool numeric = label_columns.count(table.header[c]) == 0;
-        for (const auto& row : table.rows) numeric = numeric && (is_number(row[c]) || is_missing(row[c]));
+        for (const auto& row : table.rows) numeric = numeric && (parse_number(row[c]) || is_missing(row[c]));
         (numeric ? features : labels).push_back(c);
     }
     if (features.empty()) throw Error(what, "columns", "numeric feature columns");
@@ -49,7 +43,7 @@ TsneTable tsne_table(const CsvTable& table, const std::set<std::string>& label_c
     for (size_t r = 0; r < table.rows.size(); ++r)
         for (size_t f = 0; f < features.size(); ++f) {
             const std::string& v = table.rows[r][features[f]];
-            out.features(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(f)) = is_missing(v) ? NAN : std::strtod(v.c_str(), nullptr);
+            out.features(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(f)) = is_missing(v) ? NAN : *parse_number(v);  // numeric: checked above
         }
     standardise_columns(out.features);
     out.result = tsne(out.features, options);

@@ -5,6 +5,7 @@
 
 #include "body/body_population.hpp"
 #include "core/error.hpp"
+#include "core/parse.hpp"
 
 namespace t2imu {
 
@@ -45,15 +46,7 @@ std::vector<std::string> split(const std::string& s, char sep) {
 }  // namespace
 
 double parse_body_number(const std::string& text, const std::string& field) {
-    size_t used = 0;
-    double v = 0;
-    try {
-        v = std::stod(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used != text.size() || !std::isfinite(v)) throw Error("--body", field, "a number", text);
-    return v;
+    return finite_number(text, "--body", field);
 }
 
 namespace {

@@ -1,10 +1,10 @@
 // t2imu data build: motion capture + captions -> a training set in the HumanML3D layout.
 #include <cstdio>
-#include <sstream>
 
 #include "cli/command.hpp"
 #include "cli/usage.hpp"
 #include "core/output_path.hpp"
+#include "core/parse.hpp"
 #include "data/dataset_builder.hpp"
 
 namespace t2imu::cli {
@@ -29,10 +29,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
                   "do not keep captured clips at their capture rate (capture_joints/, what retrieval gives the sensors), and derive clips at 20 fps");
     cmd->add_flag("--strict", o.strict, "stop at the first clip that fails to import (default: skip and report it)");
     cmd->callback([] {
-        std::stringstream in(licences);
-        std::string item;
-        while (std::getline(in, item, ','))
-            if (!item.empty()) o.licences.insert(item);
+        for (const std::string& item : split_list(licences)) o.licences.insert(item);
         check_usage([] {
             o.validate();
             check_replaceable_folder(o.out_dir, "--out");

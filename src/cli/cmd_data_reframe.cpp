@@ -6,13 +6,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <set>
-#include <sstream>
 
 #include "body/body_model.hpp"
 #include "cli/command.hpp"
 #include "cli/usage.hpp"
 #include "core/error.hpp"
 #include "core/output_path.hpp"
+#include "core/parse.hpp"
 #include "imu/reframe.hpp"
 
 namespace t2imu::cli {
@@ -27,25 +27,18 @@ struct ReframeArgs {
 
 // A built-in placement set by name or a TOML file; an unknown name is refused naming `option`.
 PlacementSet placement_set(const std::string& text, const std::string& option) {
-    if (text.size() > 5 && text.compare(text.size() - 5, 5, ".toml") == 0) return read_placement_toml(text);
+    if (text.size() > 5 && ends_with(text, ".toml")) return read_placement_toml(text);
     const std::vector<std::string>& names = builtin_placement_set_names();
     if (std::find(names.begin(), names.end(), text) == names.end())
         throw Error(option, "set", "realworld, sisfall, umafall, hugadb or a .toml file", text);
     return builtin_placement_set(text);
 }
 
-std::set<std::string> split_positions(const std::string& text) {
-    std::set<std::string> out;
-    std::stringstream list(text);
-    for (std::string p; std::getline(list, p, ',');)
-        if (!p.empty()) out.insert(p);
-    return out;
-}
-
 // The recordings to turn (--positions, else all), checked against the dataset before any samples are read.
 std::vector<ImuRecording> selected_recordings(const ReframeArgs& a) {
     std::vector<ImuRecording> all = read_imu_dataset(a.dataset, false), kept;
-    const std::set<std::string> wanted = split_positions(a.positions);
+    const std::vector<std::string> listed = split_list(a.positions);
+    const std::set<std::string> wanted(listed.begin(), listed.end());
     std::set<std::string> held;
     for (ImuRecording& r : all) {
         held.insert(r.position);

@@ -2,7 +2,6 @@
 // program ("value, NAME" per line, in its output order, %.14f), or of every window of a dataset into a CSV.
 #include <cstdio>
 #include <set>
-#include <sstream>
 
 #include "analysis/catch22.hpp"
 #include "analysis/catch22_table.hpp"
@@ -10,6 +9,7 @@
 #include "cli/command.hpp"
 #include "cli/usage.hpp"
 #include "core/output_path.hpp"
+#include "core/parse.hpp"
 
 namespace t2imu::cli {
 
@@ -42,9 +42,7 @@ static void add_catch22_command(CLI::App& features) {
             w.validate();
             check_output_path(out, "--out");
         });
-        std::stringstream list(positions);
-        for (std::string p; std::getline(list, p, ',');)
-            if (!p.empty()) w.positions.push_back(p);
+        w.positions = split_list(positions);
         const std::vector<ImuRecording> recordings = read_imu_dataset(dataset);
         if (w.positions.empty() && !recordings.empty()) {
             std::set<std::string> all;

@@ -3,13 +3,13 @@
 #include <cstdio>
 #include <map>
 #include <set>
-#include <sstream>
 
 #include "cli/command.hpp"
 #include "cli/usage.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/output_path.hpp"
+#include "core/parse.hpp"
 #include "har/class_map.hpp"
 #include "har/nn/deepconvlstm.hpp"
 #include "har/nn/har_training.hpp"
@@ -25,14 +25,6 @@ struct HarArgs {
     WindowOptions windows;
     HarOptions options;
 };
-
-std::vector<std::string> split_list(const std::string& s) {
-    std::vector<std::string> out;
-    std::stringstream in(s);
-    for (std::string part; std::getline(in, part, ',');)
-        if (!part.empty()) out.push_back(part);
-    return out;
-}
 
 void run(HarArgs a) {
     WindowOptions w = a.windows;

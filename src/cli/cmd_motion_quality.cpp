@@ -9,15 +9,12 @@
 #include "core/atomic_file.hpp"
 #include "core/npy.hpp"
 #include "core/output_path.hpp"
+#include "core/parse.hpp"
 #include "motion/motion_quality.hpp"
 
 namespace t2imu::cli {
 
 namespace {
-
-bool ends_with(const std::string& s, const std::string& tail) {
-    return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
 
 // A folder gives its *_joints.npy files (`t2imu sample` output, beside *_features.npy) or, with none, all of
 // its .npy files (a dataset's new_joints/).

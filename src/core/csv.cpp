@@ -5,6 +5,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/parse.hpp"
 
 namespace t2imu {
 
@@ -22,11 +23,9 @@ bool CsvTable::has_column(const std::string& name) const {
 
 double CsvTable::number(size_t row, size_t col) const {
     const std::string& f = rows.at(row).at(col);
-    char* end = nullptr;
-    const double v = std::strtod(f.c_str(), &end);
-    if (f.empty() || end != f.c_str() + f.size())
-        throw Error(source, "row " + std::to_string(row + 2) + " column '" + header.at(col) + "'", "a number", "'" + f + "'");
-    return v;
+    const std::optional<double> v = parse_number(f);
+    if (!v) throw Error(source, "row " + std::to_string(row + 2) + " column '" + header.at(col) + "'", "a number", "'" + f + "'");
+    return *v;
 }
 
 CsvTable parse_csv(const std::string& text, const std::string& source) {

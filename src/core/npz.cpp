@@ -3,6 +3,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/npy.hpp"
+#include "core/parse.hpp"
 #include "core/zip_archive.hpp"
 
 namespace t2imu {
@@ -14,7 +15,7 @@ std::map<std::string, NdArray> parse_npz(const uint8_t* data, size_t size, const
     std::map<std::string, NdArray> out;
     for (const auto& [member, bytes] : parse_zip(data, size, source)) {
         std::string name = member;
-        if (name.size() > 4 && name.compare(name.size() - 4, 4, ".npy") == 0) name.resize(name.size() - 4);
+        if (name.size() > 4 && ends_with(name, ".npy")) name.resize(name.size() - 4);
         if (out.count(name)) throw Error(source, member, "member names that differ without .npy", name + " twice");
         out[name] = parse_npy(bytes.data(), bytes.size(), source + ":" + member);
     }

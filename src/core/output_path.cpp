@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/parse.hpp"
 
 namespace t2imu {
 
@@ -140,8 +141,9 @@ void remove_stale_partials(const std::string& path) {
         const std::string name = e.path().filename().string();
         if (name.compare(0, prefix.size(), prefix) != 0) continue;
         const std::string pid = name.substr(prefix.size());
-        if (pid.empty() || pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos) continue;
-        if (::kill(static_cast<pid_t>(std::stol(pid)), 0) == 0 || errno != ESRCH) continue;  // alive, or not ours to judge
+        const std::optional<long long> id = parse_integer(pid);
+        if (!id || *id < 1 || *id > 999999999) continue;
+        if (::kill(static_cast<pid_t>(*id), 0) == 0 || errno != ESRCH) continue;  // alive, or not ours to judge
         std::error_code ignored;  // best effort: a folder we cannot remove only costs disk space
         fs::remove_all(e.path(), ignored);
     }

@@ -7,6 +7,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/parse.hpp"
 
 namespace t2imu {
 
@@ -21,11 +22,9 @@ CaptionLine parse_caption_line(const std::string& line, const std::string& sourc
     c.tokens = line.substr(hashes[2] + 1, hashes[1] - hashes[2] - 1);
     auto tag = [&](size_t from, size_t to) {
         const std::string s = line.substr(from, to - from);
-        char* end = nullptr;
-        double v = std::strtod(s.c_str(), &end);
-        if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(v) || v < 0)
-            throw Error(source, "caption time", "seconds >= 0 (or nan, read as 0)", s);
-        return v;
+        const std::optional<double> v = parse_finite(s);
+        if (!v || *v < 0) throw Error(source, "caption time", "seconds >= 0 (or nan, read as 0)", s);
+        return *v;
     };
     // HumanML3D writes 'nan' for missing tags; the official loader reads them as 0 (whole clip).
     const std::string start = line.substr(hashes[1] + 1, hashes[0] - hashes[1] - 1), end = line.substr(hashes[0] + 1);

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "core/parse.hpp"
 #include "core/signal/gaussian_filter.hpp"
 #include "core/signal/resample_poly.hpp"
 #include "har/class_map.hpp"
@@ -20,7 +21,7 @@ bool is_integer(double v) { return std::fabs(v - std::round(v)) < 1e-9 && v >= 1
 std::string trial_key(const ImuRecording& r) {
     for (const std::string& sep : {std::string("_"), std::string("/")}) {
         const std::string suffix = sep + r.position + ".csv";
-        if (r.path.size() > suffix.size() && r.path.compare(r.path.size() - suffix.size(), suffix.size(), suffix) == 0)
+        if (r.path.size() > suffix.size() && ends_with(r.path, suffix))
             return r.path.substr(0, r.path.size() - suffix.size());
     }
     return r.path;

@@ -8,6 +8,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/parse.hpp"
 #include "core/toml_section.hpp"
 
 namespace t2imu {
@@ -160,7 +161,7 @@ std::vector<SensorPlacement> parse_sensor_sets(const std::string& text) {
     while (start <= text.size()) {
         const size_t comma = text.find(',', start);
         const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-        const bool toml = item.size() > 5 && item.compare(item.size() - 5, 5, ".toml") == 0;
+        const bool toml = item.size() > 5 && ends_with(item, ".toml");
         const PlacementSet set = toml ? read_placement_toml(item) : builtin_placement_set(item);
         for (const SensorPlacement& p : set.sensors) {
             if (!seen.insert(p.position).second) throw Error("--sensors", "position", "distinct positions across the sets", p.position + " twice");

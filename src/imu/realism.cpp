@@ -5,6 +5,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/parse.hpp"
 #include "core/toml_section.hpp"
 #include "imu/sensor_noise.hpp"
 
@@ -144,7 +145,7 @@ RealismModel parse_realism_toml(const std::string& text, const std::string& sour
 }
 
 RealismModel parse_realism(const std::string& text) {
-    const bool toml = text.size() > 5 && text.compare(text.size() - 5, 5, ".toml") == 0;
+    const bool toml = text.size() > 5 && ends_with(text, ".toml");
     return toml ? parse_realism_toml(read_file_text(text), text) : realism_preset(text);
 }
 

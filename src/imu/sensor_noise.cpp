@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/parse.hpp"
 
 namespace t2imu {
 
@@ -122,16 +123,9 @@ SensorNoiseModel parse_noise_model(const std::string& text, const std::string& o
     while (std::getline(in, part, ',')) {
         const size_t eq = part.find('=');
         if (eq == std::string::npos) throw Error(option, part, "key=value");
-        size_t used = 0;
-        double v = 0;
-        try {
-            v = std::stod(part.substr(eq + 1), &used);
-        } catch (const std::exception&) {
-            used = 0;
-        }
-        if (used == 0 || used != part.size() - eq - 1 || !std::isfinite(v) || v < 0)
-            throw Error(option, part.substr(0, eq), "a non-negative number", part.substr(eq + 1));
-        set_field(m, part.substr(0, eq), v, option);
+        const std::optional<double> v = parse_finite(part.substr(eq + 1));
+        if (!v || *v < 0) throw Error(option, part.substr(0, eq), "a non-negative number", part.substr(eq + 1));
+        set_field(m, part.substr(0, eq), *v, option);
     }
     if (m.name == "none" && text != "none") throw Error(option, "none", "no overrides");
     return m;

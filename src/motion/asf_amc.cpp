@@ -6,6 +6,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/parse.hpp"
 
 namespace t2imu {
 
@@ -27,10 +28,7 @@ std::vector<std::string> words(const std::string& line) {
 }
 
 double number(const std::string& w, const std::string& source, int line, const char* what) {
-    char* end = nullptr;
-    const double v = std::strtod(w.c_str(), &end);
-    if (end != w.c_str() + w.size() || !std::isfinite(v)) throw Error(source, "line " + std::to_string(line), what, w);
-    return v;
+    return finite_number(w, source, "line " + std::to_string(line), what);
 }
 
 // Euler angles (degrees) applied in the order of the letters: "XYZ" gives Rz Ry Rx.

@@ -7,6 +7,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/parse.hpp"
 
 namespace t2imu {
 
@@ -35,10 +36,9 @@ struct Tokens {
     }
     double number(const char* what) {
         const std::string& w = next(what);
-        char* end = nullptr;
-        const double v = std::strtod(w.c_str(), &end);
-        if (end != w.c_str() + w.size() || !std::isfinite(v)) { --i; fail(what); }
-        return v;
+        const std::optional<double> v = parse_finite(w);
+        if (!v) { --i; fail(what); }
+        return *v;
     }
 };
 

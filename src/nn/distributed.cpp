@@ -12,6 +12,7 @@
 #endif
 
 #include "core/error.hpp"
+#include "core/parse.hpp"
 
 namespace t2imu {
 
@@ -20,13 +21,7 @@ namespace {
 int env_int(const std::function<const char*(const char*)>& getenv, const char* name, int fallback, int low, int high) {
     const char* text = getenv(name);
     if (!text || !*text) return fallback;
-    try {
-        size_t used = 0;
-        const int v = std::stoi(text, &used);
-        if (used == std::string(text).size() && v >= low && v <= high) return v;
-    } catch (const std::exception&) {
-    }
-    throw Error("environment", name, "an integer in [" + std::to_string(low) + ", " + std::to_string(high) + "]", text);
+    return static_cast<int>(integer_in(text, low, high, "environment", name));
 }
 
 bool is_loopback(const std::string& address) {

@@ -12,6 +12,7 @@
 #include "core/csv.hpp"
 #include "core/error.hpp"
 #include "core/npy.hpp"
+#include "core/parse.hpp"
 #include "data/hml3d_dataset.hpp"
 #include "motion/activity_names.hpp"
 #include "motion/humanml3d.hpp"
@@ -143,7 +144,9 @@ JointSequence capture_rate_crop(const JointSequence& copy, const CaptureCopy& c,
 // "000123#40-120" -> 40: the first 20 fps frame of a caption span within its clip (0 for a whole clip).
 int span_start(const std::string& id) {
     const size_t hash = id.find('#');
-    return hash == std::string::npos ? 0 : std::stoi(id.substr(hash + 1));
+    if (hash == std::string::npos) return 0;
+    const size_t dash = id.find('-', hash);  // "40-120": the span's first frame before the dash
+    return static_cast<int>(integer_in(id.substr(hash + 1, dash == std::string::npos ? std::string::npos : dash - hash - 1), 0, 1000000, id, "span start"));
 }
 
 enum class Tier { tags_and_classifier, tags, any };
@@ -314,15 +317,9 @@ std::tuple<std::string, std::string, double> parse_hybrid(const std::string& res
     const size_t a = rest.find(','), b = a == std::string::npos ? a : rest.find(',', a + 1);
     const std::string expected = "hybrid:MODEL_FOLDER,DATASET,STRENGTH with STRENGTH above 0 and at most 1";
     if (b == std::string::npos || rest.find(',', b + 1) != std::string::npos) throw Error("--model", "hybrid", expected, "hybrid:" + rest);
-    double strength = 0;
-    size_t used = 0;
-    try {
-        strength = std::stod(rest.substr(b + 1), &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used == 0 || used != rest.size() - b - 1 || !(strength > 0 && strength <= 1)) throw Error("--model", "hybrid strength", expected, rest.substr(b + 1));
-    return {rest.substr(0, a), rest.substr(a + 1, b - a - 1), strength};
+    const std::optional<double> strength = parse_number(rest.substr(b + 1));
+    if (!strength || !(*strength > 0 && *strength <= 1)) throw Error("--model", "hybrid strength", expected, rest.substr(b + 1));
+    return {rest.substr(0, a), rest.substr(a + 1, b - a - 1), *strength};
 }
 
 }  // namespace

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
-#include <sstream>
 
 #include "core/error.hpp"
+#include "core/parse.hpp"
 #include "data/hml3d_dataset.hpp"
 #include "diffusion/text_to_motion.hpp"
 #include "motion/humanml3d.hpp"
@@ -22,16 +22,14 @@ std::string SamplerConfig::name() const {
 
 std::vector<SamplerConfig> parse_sampler_configs(const std::string& text) {
     std::vector<SamplerConfig> out;
-    std::stringstream list(text);
-    std::string item;
-    while (std::getline(list, item, ',')) {
+    for (const std::string& item : split_list(text)) {
         SamplerConfig c;
         const size_t colon = item.find(':');
         c.sampler = parse_sampler(item.substr(0, colon), "--samplers");
         if (colon != std::string::npos) {
-            char* end = nullptr;
-            c.steps = static_cast<int>(std::strtol(item.c_str() + colon + 1, &end, 10));
-            if (*end != '\0' || c.steps < 2) throw Error("--samplers", "entry", "NAME:STEPS with STEPS >= 2", item);
+            const std::optional<long long> steps = parse_integer(item.substr(colon + 1));
+            if (!steps || *steps < 2 || *steps > 10000) throw Error("--samplers", "entry", "NAME:STEPS with STEPS from 2 to 10000", item);
+            c.steps = static_cast<int>(*steps);
         }
         const bool ddpm = c.sampler == Sampler::ddpm;
         if (!(ddpm && colon == std::string::npos) && !(!ddpm && c.steps >= 2))

@@ -8,6 +8,7 @@
 
 #include "core/csv.hpp"
 #include "core/error.hpp"
+#include "core/parse.hpp"
 #include "core/zip_archive.hpp"
 #include "har/datasets/release_files.hpp"
 
@@ -58,7 +59,7 @@ Stream parse_stream(const std::vector<uint8_t>& bytes, const std::string& source
 void collect(const ZipMembers& members, const std::string& source, Streams& streams) {
     static const std::regex csv(R"((?:.*/)?(acc|Gyroscope)_([a-z]+)(?:_(\d+))?_([a-z]+)\.csv)");
     for (const auto& [name, bytes] : members) {
-        if (name.size() > 4 && name.compare(name.size() - 4, 4, ".zip") == 0) {
+        if (name.size() > 4 && ends_with(name, ".zip")) {
             collect(parse_zip(bytes.data(), bytes.size(), source + ":" + name), source + ":" + name, streams);
             continue;
         }

@@ -5,13 +5,12 @@
 #include <filesystem>
 
 #include "core/error.hpp"
+#include "core/parse.hpp"
 
 namespace t2imu {
 
 int release_index(const std::string& text, const std::string& path, const std::string& field) {
-    if (text.empty() || text.size() > 6 || !std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c); }))
-        throw Error(path, field, "a whole number from 0 to 999999", "'" + text.substr(0, 24) + "'");
-    return std::stoi(text);
+    return static_cast<int>(integer_in(text, 0, 999999, path, field));
 }
 
 std::vector<ImuRecording> import_release_files(const std::string& dir, const std::regex& file_name,

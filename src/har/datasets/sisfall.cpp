@@ -9,6 +9,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/parse.hpp"
 #include "core/signal/resample_poly.hpp"
 #include "har/datasets/release_files.hpp"
 
@@ -52,11 +53,9 @@ std::vector<ImuRecording> read_sisfall_file(const std::string& path) {
         std::istringstream cells(line);
         std::vector<double> v;
         for (std::string cell; cells >> cell;) {
-            char* end = nullptr;
-            const double x = std::strtod(cell.c_str(), &end);
-            if (end != cell.c_str() + cell.size() || !std::isfinite(x))
-                throw Error(path, "line " + std::to_string(n), "9 raw values (ADXL345, ITG3200, MMA8451Q)", "'" + cell.substr(0, 24) + "'");
-            v.push_back(x);
+            const std::optional<double> x = parse_finite(cell);
+            if (!x) throw Error(path, "line " + std::to_string(n), "9 raw values (ADXL345, ITG3200, MMA8451Q)", "'" + cell.substr(0, 24) + "'");
+            v.push_back(*x);
         }
         if (v.empty()) continue;
         if (v.size() != 9) throw Error(path, "line " + std::to_string(n), "9 raw values (ADXL345, ITG3200, MMA8451Q)", std::to_string(v.size()));

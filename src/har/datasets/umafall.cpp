@@ -9,6 +9,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/parse.hpp"
 #include "har/datasets/release_files.hpp"
 
 namespace t2imu {
@@ -38,11 +39,7 @@ std::string trim(std::string s) {
 }
 
 double number(const std::string& s, const std::string& path, int line) {
-    char* end = nullptr;
-    const double v = std::strtod(s.c_str(), &end);
-    if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(v))
-        throw Error(path, "line " + std::to_string(line), "a number", "'" + s + "'");
-    return v;
+    return finite_number(s, path, "line " + std::to_string(line));
 }
 
 }  // namespace

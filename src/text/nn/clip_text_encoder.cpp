@@ -5,6 +5,7 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "core/parse.hpp"
 #include "nn/state_dict.hpp"
 
 namespace t2imu {
@@ -14,7 +15,6 @@ namespace {
 std::string leaf(const std::string& path) { return path.substr(path.rfind('.') + 1); }
 
 bool starts_with(const std::string& s, const std::string& p) { return s.compare(0, p.size(), p) == 0; }
-bool ends_with(const std::string& s, const std::string& p) { return s.size() >= p.size() && s.compare(s.size() - p.size(), p.size(), p) == 0; }
 
 // Where a file keeps the text tower: OpenAI's names under `prefix`, or Hugging Face's names.
 struct Layout {

@@ -1,0 +1,29 @@
+// Strict conversions of text to numbers and lists, in one place. "Strict": the whole text must be the number,
+// as strtod (real numbers: decimal, exponent, "nan", "inf"; leading blanks allowed, as strtod allows them) or
+// from_chars (integers: decimal digits with an optional '-', no blanks, no '+') reads it; "1.5x", "", "1 2" and
+// an integer beyond long long's range are not numbers. The std::optional forms leave the message to the caller
+// (who knows the line and column); the throwing forms name `source` and `field` in the project's one-line Error.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace t2imu {
+
+std::optional<double> parse_number(const std::string& text);   // nan and inf included
+std::optional<double> parse_finite(const std::string& text);   // nan and inf refused
+std::optional<long long> parse_integer(const std::string& text);
+
+// A finite number; Error(source, field, expected, text) otherwise.
+double finite_number(const std::string& text, const std::string& source, const std::string& field,
+                     const std::string& expected = "a number");
+// An integer from `low` to `high`; Error(source, field, "a whole number from low to high", text) otherwise.
+long long integer_in(const std::string& text, long long low, long long high, const std::string& source, const std::string& field);
+
+// Whether `path` ends with `suffix` (".toml", "_joints.npy"): how options tell a file from a preset name.
+bool ends_with(const std::string& path, const std::string& suffix);
+
+// "a,b,,c" -> {"a", "b", "c"}: the items between `separator`s, empty ones dropped (so "" gives none).
+std::vector<std::string> split_list(const std::string& text, char separator = ',');
+
+}  // namespace t2imu
