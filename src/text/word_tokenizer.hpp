@@ -17,4 +17,10 @@ namespace t2imu {
 std::vector<std::string> split_words(const std::string& text);
 std::vector<int> word_indices(const std::string& text, const WordVectors& vocabulary);
 
+// The words of `vectors` that the lines of `paths` (text files, or folders searched for *.txt) resolve to, in
+// rank order: a small vocabulary to carry to a training machine. The trainable text encoder gives every caption
+// of those files the same input with this subset as with the full vocabulary, since each caption word resolves
+// to a word the subset keeps; SIF weights (rank-based) differ.
+WordVectors vocabulary_used_in(const WordVectors& vectors, const std::vector<std::string>& paths);
+
 }  // namespace t2imu

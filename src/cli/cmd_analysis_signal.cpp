@@ -1,0 +1,73 @@
+// t2imu analysis signal-stats | static-noise: per-activity accelerometer statistics of IMU data sets, and the
+// device errors measured in the quietest window of each real recording.
+#include <cstdio>
+
+#include "analysis/signal_statistics.hpp"
+#include "analysis/static_segments.hpp"
+#include "cli/command.hpp"
+#include "cli/usage.hpp"
+#include "core/atomic_file.hpp"
+#include "core/output_path.hpp"
+#include "imu/imu_dataset.hpp"
+#include "imu/sensor_noise.hpp"
+
+namespace t2imu::cli {
+
+static void add_signal_stats(CLI::App& analysis) {
+    auto* cmd = analysis.add_subcommand("signal-stats", "per-activity accelerometer statistics of IMU data sets (level, spectrum, tilt), real beside synthetic (JSON)");
+    static std::string real, synthetic, out;
+    static SignalStatisticsOptions o;
+    cmd->add_option("--real", real, "an IMU data set folder (manifest.csv)")->required()->check(CLI::ExistingDirectory);
+    cmd->add_option("--synthetic", synthetic, "a second data set to compare with --real (synthetic)")->check(CLI::ExistingDirectory);
+    cmd->add_option("--position", o.position, "only this position (waist); default: every position");
+    cmd->add_option("--rate", o.rate_hz, "resample to this rate first, Hz (HAR's)");
+    cmd->add_option("--out", out, "RESULT.json")->required();
+    cmd->callback([] {
+        check_usage([] {
+            o.validate();
+            check_output_path(out, "--out");
+        });
+        const std::vector<ImuRecording> r = read_imu_dataset(real);
+        const nlohmann::json stats = synthetic.empty() ? activity_signal_statistics(r, o) : compare_signal_statistics(r, read_imu_dataset(synthetic), o);
+        write_file_atomic(out, stats.dump(2) + "\n");
+        std::printf("%s: statistics of %zu activities\n", out.c_str(), stats.size());
+    });
+}
+
+static void add_static_noise(CLI::App& analysis) {
+    auto* cmd = analysis.add_subcommand("static-noise", "device errors from the quietest window of each real recording (noise, gyro offset, |g| error), beside a device model's (JSON)");
+    static std::string real, noise = "none", out;
+    static StaticNoiseOptions o;
+    cmd->add_option("--real", real, "an IMU data set folder (manifest.csv)")->required()->check(CLI::ExistingDirectory);
+    cmd->add_option("--position", o.position, "only this position (waist); default: every position");
+    cmd->add_option("--window", o.window_s, "window length, s");
+    cmd->add_option("--noise", noise, "a device model to set beside the measurement (as synth --noise: sisfall, umafall, ...)");
+    cmd->add_option("--out", out, "RESULT.json")->required();
+    cmd->callback([] {
+        SensorNoiseModel device;
+        check_usage([&] {
+            o.validate();
+            device = parse_noise_model(noise);
+            check_output_path(out, "--out");
+        });
+        const nlohmann::json r = static_segment_noise(read_imu_dataset(real), o, device);
+        write_file_atomic(out, r.dump(2) + "\n");
+        const nlohmann::json& m = r["measured"];
+        std::printf("%s: %d recordings at %g Hz; quietest %g s: acc sd %.4f/%.4f/%.4f m/s^2, gyr sd %.4f/%.4f/%.4f rad/s, gyr offset sd %.4f/%.4f/%.4f rad/s, ||a|-g| %.3f m/s^2\n",
+                    out.c_str(), r["recordings"].get<int>(), r["rate_hz"].get<double>(), o.window_s, m["acc_sd_x"].get<double>(), m["acc_sd_y"].get<double>(),
+                    m["acc_sd_z"].get<double>(), m["gyr_sd_x"].get<double>(), m["gyr_sd_y"].get<double>(), m["gyr_sd_z"].get<double>(),
+                    m["gyr_offset_sd_x"].get<double>(), m["gyr_offset_sd_y"].get<double>(), m["gyr_offset_sd_z"].get<double>(), m["acc_norm_error_abs"].get<double>());
+        if (r.contains("device"))
+            std::printf("  %s predicts: acc sd %.4f m/s^2, gyr sd %.4f rad/s, gyr offset sd %.4f rad/s, acc offset sd %.3f m/s^2\n", noise.c_str(),
+                        r["device"]["acc_sd"].get<double>(), r["device"]["gyr_sd"].get<double>(), r["device"]["gyr_offset_sd"].get<double>(),
+                        r["device"]["acc_offset_sd"].get<double>());
+    });
+}
+
+static CommandRegistrar registrar([](CLI::App& root) {
+    CLI::App& analysis = command_group(root, "analysis", "evaluation analyses");
+    add_signal_stats(analysis);
+    add_static_noise(analysis);
+});
+
+}  // namespace t2imu::cli
