@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "core/hash.hpp"
 #include "data/splits.hpp"
 
 using namespace t2imu;

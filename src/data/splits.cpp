@@ -3,29 +3,11 @@
 #include <algorithm>
 #include <vector>
 
+#include "core/hash.hpp"
+
 namespace t2imu {
 
-uint64_t fnv1a64(const std::string& s) {
-    uint64_t h = 0xcbf29ce484222325ull;
-    for (unsigned char c : s) {
-        h ^= c;
-        h *= 0x100000001b3ull;
-    }
-    return h;
-}
-
 namespace {
-
-// MurmurHash3's 64-bit finaliser: FNV-1a of keys that differ only in their last characters ("reactidle_000",
-// "reactidle_001") differ little in their high bits, so ordered by the raw hash they sit side by side and are
-// dealt into one split together.
-uint64_t mix64(uint64_t h) {
-    h ^= h >> 33;
-    h *= 0xff51afd7ed558ccdull;
-    h ^= h >> 33;
-    h *= 0xc4ceb9fe1a85ec53ull;
-    return h ^ (h >> 33);
-}
 
 std::string source_of(const std::string& key) { return key.substr(0, key.find('/')); }
 
@@ -35,7 +17,9 @@ std::map<std::string, Split> assign_splits(const std::map<std::string, int>& cli
     std::map<std::string, std::vector<std::pair<uint64_t, std::string>>> order;  // per source
     std::map<std::string, long> total;
     for (const auto& [key, n] : clips_per_key) {
-        order[source_of(key)].push_back({mix64(fnv1a64(key)), key});
+        // Mixed: FNV-1a of keys that differ only in their last characters ("reactidle_000", "reactidle_001")
+        // differ little in their high bits, so ordered by the raw hash they would be dealt into one split together.
+        order[source_of(key)].push_back({murmur3_fmix64(fnv1a64(key)), key});
         total[source_of(key)] += n;
     }
     std::map<std::string, Split> out;

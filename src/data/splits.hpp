@@ -14,7 +14,6 @@ namespace t2imu {
 
 enum class Split { train, val, test };
 
-uint64_t fnv1a64(const std::string& s);
 std::map<std::string, Split> assign_splits(const std::map<std::string, int>& clips_per_key);
 const char* split_name(Split s);
 

@@ -12,6 +12,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/hash.hpp"
 #include "core/npy.hpp"
 #include "core/toml_section.hpp"
 #include "data/hml3d_dataset.hpp"
@@ -295,10 +296,7 @@ torch::Generator noise_generator(const torch::Device& device, uint64_t seed, boo
 // A rank's own stream for the model's dropout masks (splitmix64 of seed, rank and the starting step), so the
 // ranks do not drop the same units in their different samples.
 void seed_rank_dropout(const torch::Device& device, uint64_t seed, int rank, int64_t step) {
-    uint64_t z = seed + 0x9E3779B97F4A7C15ull * (static_cast<uint64_t>(rank) + 1) + 0xBF58476D1CE4E5B9ull * static_cast<uint64_t>(step);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
+    const uint64_t z = splitmix64(seed + 0x9E3779B97F4A7C15ull * (static_cast<uint64_t>(rank) + 1) + 0xBF58476D1CE4E5B9ull * static_cast<uint64_t>(step));
     at::Generator dropout = device.is_cpu() ? at::detail::getDefaultCPUGenerator() : at::globalContext().defaultGenerator(device);
     dropout.set_current_seed(z);  // a handle sharing the default generator
 }

@@ -5,6 +5,7 @@
 
 #include "body/procedural_body.hpp"
 #include "core/error.hpp"
+#include "core/hash.hpp"
 #include "imu/device_rate.hpp"
 
 namespace t2imu {
@@ -13,16 +14,6 @@ using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
 namespace {
-
-// Stable per-(seed, body, sensor) seeds: FNV-1a of the names mixed with the user's seed.
-uint64_t derived_seed(uint64_t seed, const std::string& body, const std::string& position, const char* purpose) {
-    uint64_t h = 1469598103934665603ull ^ seed;
-    for (const std::string& s : {body, position, std::string(purpose)}) {
-        for (unsigned char c : s) h = (h ^ c) * 1099511628211ull;
-        h = (h ^ 0xff) * 1099511628211ull;
-    }
-    return h;
-}
 
 nlohmann::json vec(const Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
@@ -83,7 +74,7 @@ BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& spec, c
     if (none) build.kind = BodySpec::Kind::procedural;
     const std::unique_ptr<BodyModel> body = make_body(build);
     const RealismModel& realism = options.realism;
-    out.tempo = draw_tempo(realism, derived_seed(options.seed, out.body.name, "", "tempo"));
+    out.tempo = draw_tempo(realism, derived_seed(options.seed, {out.body.name, "", "tempo"}));
     JointSequence timed = motion;
     timed.fps = motion.fps * out.tempo;  // a uniform time warp: the same path at tempo x the speed
     FitOptions fit;
@@ -98,8 +89,8 @@ BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& spec, c
     std::vector<Vector3d> p;
     std::vector<Quat> q;
     for (const SensorPlacement& placement : sensors) {
-        const Matrix3d jitter = random_mounting_error(options.mount_jitter_deg, derived_seed(options.seed, out.body.name, placement.position, "mount"));
-        const double tilt = draw_tilt_deg(realism, derived_seed(options.seed, out.body.name, placement.position, "tilt"));
+        const Matrix3d jitter = random_mounting_error(options.mount_jitter_deg, derived_seed(options.seed, {out.body.name, placement.position, "mount"}));
+        const double tilt = draw_tilt_deg(realism, derived_seed(options.seed, {out.body.name, placement.position, "tilt"}));
         out.mounts.push_back(mount_sensor(*body, placement, jitter, tilt));
         out.tilt_deg.push_back(tilt);
         FittedMotion swayed;  // a trunk sensor's own copy of the frames when the trunk sway is on
@@ -115,11 +106,11 @@ BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& spec, c
         dynamics.strap_axis = out.mounts.back().horizontal_tangent_in_sensor();
         if (!landings.empty())
             dynamics.impacts = impact_pulses(landings, realism.impact_gain, realism.impact_ms / 1000, placement.segment, timed.fps,
-                                             realism.impact_spread, derived_seed(options.seed, out.body.name, placement.position, "landings"));
+                                             realism.impact_spread, derived_seed(options.seed, {out.body.name, placement.position, "landings"}));
         const double sample_rate = realism.device_rate_hz > 0 ? realism.device_rate_hz : options.rate_hz;
         ImuSignals s = synthesize_imu(p, q, timed.fps, sample_rate, dynamics);
-        add_body_vibration(realism.vibration, derived_seed(options.seed, out.body.name, placement.position, "vibration"), &s);
-        apply_sensor_noise(device, derived_seed(options.seed, out.body.name, placement.position, "noise"), &s);
+        add_body_vibration(realism.vibration, derived_seed(options.seed, {out.body.name, placement.position, "vibration"}), &s);
+        apply_sensor_noise(device, derived_seed(options.seed, {out.body.name, placement.position, "noise"}), &s);
         out.signals.push_back(resample_imu_signals(s, options.rate_hz));
     }
     return out;

@@ -3,15 +3,11 @@
 #include <ATen/CPUGeneratorImpl.h>
 #include <ATen/Parallel.h>
 
+#include "core/hash.hpp"
+
 namespace t2imu {
 
 namespace {
-
-uint64_t splitmix64(uint64_t z) {
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
 
 uint64_t draw_seed() {
     at::Generator generator = at::detail::getDefaultCPUGenerator();
