@@ -52,101 +52,136 @@ std::string synth_title(const fs::path& synth_dir, const std::string& results_di
     return relative != "." ? relative : fs::weakly_canonical(results_dir).filename().string();
 }
 
+// What a results folder holds, found by content (so any layout of t2imu's outputs works): HAR results, domain
+// gaps, synthesis reports, L_acc tables, t-SNE tables and up to three IMU traces.
+struct FoundResults {
+    std::vector<std::pair<std::string, nlohmann::json>> har, gaps;
+    std::vector<SynthFolder> synth;
+    std::vector<std::pair<std::string, CsvTable>> lacc, tsne, traces;
+};
+
+void classify_json(const fs::path& p, const std::string& results_dir, FoundResults* found) {
+    nlohmann::json j;
+    try {
+        j = nlohmann::json::parse(read_file_text(p.string()));
+    } catch (const std::exception&) {
+        return;  // not a result of ours
+    }
+    if (!j.is_object()) return;
+    if (j.contains("balanced_accuracy") && j.contains("confusion")) found->har.push_back({stem(p), j});
+    else if (j.contains("classifier_two_sample_test")) found->gaps.push_back({stem(p), j});
+    else if (j.contains("per_activity") && j.contains("motions_kept"))
+        found->synth.push_back({p.parent_path().string(), synth_title(p.parent_path(), results_dir), j});
+}
+
+void classify_csv(const fs::path& p, const std::string& results_dir, FoundResults* found) {
+    CsvTable t;
+    try {
+        t = read_csv(p.string());
+    } catch (const Error&) {
+        return;
+    }
+    if (has(t, "group") && has(t, "change_percent")) found->lacc.push_back({stem(p), t});
+    else if (has(t, "tsne_x") && has(t, "tsne_y")) found->tsne.push_back({stem(p), t});
+    else if (!t.header.empty() && t.header[0] == "t" && has(t, "acc_x") && found->traces.size() < 3)
+        found->traces.push_back({fs::relative(p, results_dir).string(), t});
+}
+
+FoundResults find_results(const std::string& results_dir) {
+    std::vector<fs::path> files;
+    for (const auto& e : fs::recursive_directory_iterator(results_dir))
+        if (e.is_regular_file()) files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    FoundResults found;
+    for (const fs::path& p : files) {
+        if (p.extension() == ".json") classify_json(p, results_dir, &found);
+        else if (p.extension() == ".csv") classify_csv(p, results_dir, &found);
+    }
+    return found;
+}
+
+void lacc_section(const std::vector<std::pair<std::string, CsvTable>>& tables, Page& page) {
+    for (const auto& [name, t] : tables) {
+        page.body += "<h2>Acceleration loss per activity category</h2>\n";
+        plot_lacc_change(t, page.out_dir + "/lacc_" + name + ".png");
+        page.figure("lacc_" + name + ".png", "Change of L_acc after fine-tuning per category (Fig. 1): " + name);
+    }
+}
+
+void tsne_section(const std::vector<std::pair<std::string, CsvTable>>& tables, Page& page) {
+    for (const auto& [name, t] : tables) {
+        page.body += "<h2>t-SNE of catch22 features</h2>\n";
+        std::string colour = has(t, "source") ? "source" : "";
+        for (const std::string& h : t.header)
+            if (colour.empty() && h != "tsne_x" && h != "tsne_y") colour = h;
+        plot_tsne(t, colour, page.out_dir + "/tsne_" + name + ".png", "t-SNE, all windows: " + name);
+        page.figure("tsne_" + name + ".png", "t-SNE of all windows, coloured by " + colour + " (Fig. 2): " + name);
+        if (!has(t, "activity")) continue;
+        const std::vector<std::string> high = {"running", "jogging", "jumping", "dancing"};
+        try {
+            plot_tsne(t, colour, page.out_dir + "/tsne_high_" + name + ".png", "t-SNE, high-dynamic activities: " + name, "activity", high);
+            page.figure("tsne_high_" + name + ".png", "t-SNE of high-dynamic activities (running, jumping, dancing): " + name);
+        } catch (const Error&) {
+            // no high-dynamic windows in this table
+        }
+    }
+}
+
+void gap_section(const std::vector<std::pair<std::string, nlohmann::json>>& gaps, Page& page) {
+    if (gaps.empty()) return;
+    page.body += "<h2>Domain gap (real vs synthetic)</h2>\n<table><tr><th>result</th><th>two-sample balanced accuracy</th><th>most different feature (KS)</th></tr>\n";
+    char buf[512];
+    for (const auto& [name, g] : gaps) {
+        const auto& top = g["per_feature"].empty() ? nlohmann::json::object() : g["per_feature"][0];
+        std::snprintf(buf, sizeof buf, "<tr><td>%s</td><td>%.3f</td><td>%s (%.3f)</td></tr>\n", html_escape(name).c_str(),
+                      g["classifier_two_sample_test"]["balanced_accuracy"].get<double>(),
+                      html_escape(top.value("feature", std::string("-"))).c_str(), top.value("ks", 0.0));
+        page.body += buf;
+    }
+    page.body += "</table><p>0.5 = a classifier cannot tell real from synthetic windows; 1.0 = fully separable.</p>\n";
+}
+
+void trace_section(const std::vector<std::pair<std::string, CsvTable>>& traces, Page& page) {
+    for (size_t i = 0; i < traces.size(); ++i) {
+        if (i == 0) page.body += "<h2>IMU traces</h2>\n";
+        const std::string png = "trace_" + std::to_string(i) + ".png";
+        plot_imu_trace(traces[i].second, page.out_dir + "/" + png, traces[i].first);
+        page.figure(png, "IMU signals: " + traces[i].first);
+    }
+}
+
+std::string page_html(const std::string& results_dir, const Page& page) {
+    return "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>t2imu report</title><style>"
+           "body{font-family:sans-serif;max-width:1000px;margin:2em auto;}img{max-width:100%;}"
+           "table{border-collapse:collapse;}td,th{border:1px solid #ccc;padding:4px 8px;}"
+           ".job{border-top:1px solid #eee;margin:0.6em 0;}.job p{margin:0.3em 0;}.outcome{font-size:90%;color:#444;}</style></head><body>\n"
+           "<h1>t2imu report</h1>\n<p>Results from " + html_escape(results_dir) + "</p>\n" + page.body + "</body></html>\n";
+}
+
 }  // namespace
 
 ReportSummary write_report(const std::string& results_dir, const std::string& report_dir, const std::string& real_dir) {
     if (!fs::is_directory(results_dir)) throw Error(results_dir, "folder", "a folder of results");
     fs::create_directories(report_dir);
-    ReportSummary summary;
+    const FoundResults found = find_results(results_dir);
     Page page;
     page.out_dir = report_dir;
-    std::vector<fs::path> files;
-    for (const auto& e : fs::recursive_directory_iterator(results_dir))
-        if (e.is_regular_file()) files.push_back(e.path());
-    std::sort(files.begin(), files.end());
-    std::vector<std::pair<std::string, nlohmann::json>> har, gaps;
-    std::vector<SynthFolder> synth;
-    std::vector<std::pair<std::string, CsvTable>> lacc, tsne, traces;
-    for (const fs::path& p : files) {
-        if (p.extension() == ".json") {
-            nlohmann::json j;
-            try {
-                j = nlohmann::json::parse(read_file_text(p.string()));
-            } catch (const std::exception&) {
-                continue;  // not a result of ours
-            }
-            if (j.is_object() && j.contains("balanced_accuracy") && j.contains("confusion")) har.push_back({stem(p), j});
-            else if (j.is_object() && j.contains("classifier_two_sample_test")) gaps.push_back({stem(p), j});
-            else if (j.is_object() && j.contains("per_activity") && j.contains("motions_kept")) synth.push_back({p.parent_path().string(), synth_title(p.parent_path(), results_dir), j});
-        } else if (p.extension() == ".csv") {
-            CsvTable t;
-            try {
-                t = read_csv(p.string());
-            } catch (const Error&) {
-                continue;
-            }
-            if (has(t, "group") && has(t, "change_percent")) lacc.push_back({stem(p), t});
-            else if (has(t, "tsne_x") && has(t, "tsne_y")) tsne.push_back({stem(p), t});
-            else if (!t.header.empty() && t.header[0] == "t" && has(t, "acc_x") && traces.size() < 3)
-                traces.push_back({fs::relative(p, results_dir).string(), t});
-        }
-    }
-    const bool compare_real = !real_dir.empty() && !synth.empty();
-    synth_section(synth, compare_real ? read_imu_dataset(real_dir) : std::vector<ImuRecording>{}, real_dir, page);
-    har_section(har, page);
-    for (const auto& [name, t] : lacc) {
-        page.body += "<h2>Acceleration loss per activity category</h2>\n";
-        plot_lacc_change(t, report_dir + "/lacc_" + name + ".png");
-        page.figure("lacc_" + name + ".png", "Change of L_acc after fine-tuning per category (Fig. 1): " + name);
-    }
-    for (const auto& [name, t] : tsne) {
-        page.body += "<h2>t-SNE of catch22 features</h2>\n";
-        std::string colour = has(t, "source") ? "source" : "";
-        for (const std::string& h : t.header)
-            if (colour.empty() && h != "tsne_x" && h != "tsne_y") colour = h;
-        plot_tsne(t, colour, report_dir + "/tsne_" + name + ".png", "t-SNE, all windows: " + name);
-        page.figure("tsne_" + name + ".png", "t-SNE of all windows, coloured by " + colour + " (Fig. 2): " + name);
-        if (has(t, "activity")) {
-            const std::vector<std::string> high = {"running", "jogging", "jumping", "dancing"};
-            try {
-                plot_tsne(t, colour, report_dir + "/tsne_high_" + name + ".png", "t-SNE, high-dynamic activities: " + name, "activity", high);
-                page.figure("tsne_high_" + name + ".png", "t-SNE of high-dynamic activities (running, jumping, dancing): " + name);
-            } catch (const Error&) {
-                // no high-dynamic windows in this table
-            }
-        }
-        ++summary.tsne_tables;
-    }
-    if (!gaps.empty()) {
-        page.body += "<h2>Domain gap (real vs synthetic)</h2>\n<table><tr><th>result</th><th>two-sample balanced accuracy</th><th>most different feature (KS)</th></tr>\n";
-        char buf[512];
-        for (const auto& [name, g] : gaps) {
-            const auto& top = g["per_feature"].empty() ? nlohmann::json::object() : g["per_feature"][0];
-            std::snprintf(buf, sizeof buf, "<tr><td>%s</td><td>%.3f</td><td>%s (%.3f)</td></tr>\n", html_escape(name).c_str(),
-                          g["classifier_two_sample_test"]["balanced_accuracy"].get<double>(),
-                          html_escape(top.value("feature", std::string("-"))).c_str(), top.value("ks", 0.0));
-            page.body += buf;
-        }
-        page.body += "</table><p>0.5 = a classifier cannot tell real from synthetic windows; 1.0 = fully separable.</p>\n";
-    }
-    for (size_t i = 0; i < traces.size(); ++i) {
-        if (i == 0) page.body += "<h2>IMU traces</h2>\n";
-        const std::string png = "trace_" + std::to_string(i) + ".png";
-        plot_imu_trace(traces[i].second, report_dir + "/" + png, traces[i].first);
-        page.figure(png, "IMU signals: " + traces[i].first);
-    }
-    const std::string html = "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>t2imu report</title><style>"
-                             "body{font-family:sans-serif;max-width:1000px;margin:2em auto;}img{max-width:100%;}"
-                             "table{border-collapse:collapse;}td,th{border:1px solid #ccc;padding:4px 8px;}"
-                             ".job{border-top:1px solid #eee;margin:0.6em 0;}.job p{margin:0.3em 0;}.outcome{font-size:90%;color:#444;}</style></head><body>\n"
-                             "<h1>t2imu report</h1>\n<p>Results from " + html_escape(results_dir) + "</p>\n" + page.body + "</body></html>\n";
-    write_file_atomic(report_dir + "/index.html", html);
+    const bool compare_real = !real_dir.empty() && !found.synth.empty();
+    synth_section(found.synth, compare_real ? read_imu_dataset(real_dir) : std::vector<ImuRecording>{}, real_dir, page);
+    har_section(found.har, page);
+    lacc_section(found.lacc, page);
+    tsne_section(found.tsne, page);
+    gap_section(found.gaps, page);
+    trace_section(found.traces, page);
+    write_file_atomic(report_dir + "/index.html", page_html(results_dir, page));
+    ReportSummary summary;
     summary.figures = page.figures;
-    summary.synth_reports = static_cast<int>(synth.size());
-    summary.har_results = static_cast<int>(har.size());
-    summary.lacc_tables = static_cast<int>(lacc.size());
-    summary.gap_results = static_cast<int>(gaps.size());
-    summary.traces = static_cast<int>(traces.size());
+    summary.synth_reports = static_cast<int>(found.synth.size());
+    summary.har_results = static_cast<int>(found.har.size());
+    summary.lacc_tables = static_cast<int>(found.lacc.size());
+    summary.tsne_tables = static_cast<int>(found.tsne.size());
+    summary.gap_results = static_cast<int>(found.gaps.size());
+    summary.traces = static_cast<int>(found.traces.size());
     return summary;
 }
 
