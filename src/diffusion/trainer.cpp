@@ -349,6 +349,137 @@ void update_ema(Training& tr, double decay) {
 // Slots of the values that ride along with the gradients' all-reduce.
 enum Rider : int64_t { kSimple, kPos, kVel, kFoot, kAcc, kTotal, kStop };
 
+// The model and text encoder, initialised from the configuration's seed (so every rank builds the same weights)
+// or loaded from a model folder (a fine-tuning), on the device; the optimiser and EMA come after the broadcast.
+Training new_training(const TrainConfig& c, const WordVectors& vocab, const torch::Device& device, const std::string& init_from) {
+    torch::manual_seed(c.seed);
+    MdmConfig mc = c.mdm;
+    mc.text_dim = c.text.out_dim;
+    mc.mask_frames = true;
+    Training tr{Mdm(mc), GloveTextEncoder(vocab, c.text), nullptr, {}, noise_generator(device, c.seed, c.processes.world_size > 1),
+                std::mt19937_64(c.seed + 1), 0};
+    if (!init_from.empty()) {
+        load_state_dict(*tr.mdm, init_from + "/weights.safetensors");
+        load_state_dict(*tr.text, init_from + "/text_encoder.safetensors");
+    }
+    tr.mdm->to(device);
+    tr.text->to(device);
+    return tr;
+}
+
+// Everything a run keeps fixed from its first step to its last, beside the Training state.
+struct RunSetup {
+    BatchShare share;                // this rank's samples of the global batch
+    torch::Device device;
+    torch::TensorOptions draws_on;   // where t and the noise are drawn: the CPU when several ranks must agree
+    GaussianDiffusion diffusion;
+    torch::Tensor mean, std;         // the dataset's feature statistics on the device (the losses de-normalise)
+    Precision precision;
+    std::bernoulli_distribution drop;         // classifier-free guidance's caption dropout
+    std::optional<CaptionAugmenter> reword;   // caption augmentation, when configured
+};
+
+RunSetup run_setup(const TrainConfig& c, const Hml3dDataset& data, const WordVectors& vocab, const BatchShare& share,
+                   const torch::Device& device) {
+    const bool several = c.processes.world_size > 1;
+    const auto on_device = [&](const Eigen::VectorXd& v) {
+        return torch::from_blob(const_cast<double*>(v.data()), {263}, torch::kFloat64).to(device, torch::kFloat32);
+    };
+    RunSetup run{share,
+                 device,
+                 torch::TensorOptions().device(several ? torch::Device(torch::kCPU) : device),
+                 GaussianDiffusion(cosine_schedule(c.diffusion_steps)),
+                 on_device(data.stats().mean),
+                 on_device(data.stats().std),
+                 parse_precision(c.precision, "train config", "train.precision"),
+                 std::bernoulli_distribution(c.cond_dropout),
+                 std::nullopt};
+    if (c.augment.enabled()) run.reword.emplace(vocab, c.augment, all_captions(data));
+    return run;
+}
+
+// One step's inputs: this rank's share of the global batch, its captions (dropped or reworded) and x0 noised
+// to x_t at the drawn steps t. Every rank draws the whole batch's captions, t and noise, so the ranks' streams
+// stay equal; the order of the draws is part of the checkpoint's contract (resume continues the same stream).
+struct StepBatch {
+    Batch drawn;                        // the global batch; x0 views its features on the CPU, so it lives here
+    torch::Tensor x0, x_t, t, lengths;  // x0 [n, F, 263] normalised; x_t [n, 263, 1, F] (MDM's layout)
+    std::vector<std::string> captions;
+};
+
+StepBatch draw_step_batch(Training& tr, Hml3dDataset& data, const TrainConfig& c, RunSetup& run) {
+    StepBatch s;
+    s.drawn = data.next_batch(c.batch);
+    const Batch& b = s.drawn;
+    std::vector<std::string> captions = b.captions;
+    for (std::string& caption : captions)
+        if (run.drop(tr.dropout_rng)) caption.clear();
+        else if (run.reword) caption = run.reword->augment(caption, tr.dropout_rng);  // same stream: saved with the checkpoint
+    const torch::Tensor t_all = torch::randint(c.diffusion_steps, {b.size}, tr.generator, run.draws_on.dtype(torch::kInt64));
+    const torch::Tensor noise_all = torch::randn({b.size, b.channels, 1, b.frames}, tr.generator, run.draws_on);
+    const int64_t lo = run.share.begin, n = run.share.size;
+    const float* features = b.features.data() + static_cast<size_t>(lo) * static_cast<size_t>(b.frames * b.channels);
+    s.x0 = torch::from_blob(const_cast<float*>(features), {n, b.frames, b.channels}, torch::kFloat32).to(run.device);
+    s.lengths = torch::tensor(std::vector<int64_t>(b.lengths.begin() + lo, b.lengths.begin() + lo + n)).to(run.device);
+    s.captions.assign(captions.begin() + lo, captions.begin() + lo + n);
+    s.t = t_all.slice(0, lo, lo + n).to(run.device);
+    s.x_t = run.diffusion.q_sample(s.x0.permute({0, 2, 1}).unsqueeze(2), s.t, noise_all.slice(0, lo, lo + n).to(run.device));
+    return s;
+}
+
+// Forward, losses, backward and the all-reduce that carries the loss terms and the stop flag (riders, in Rider
+// order, on the CPU), then the optimiser and EMA. Times each part on `clock`.
+std::vector<double> train_step(Training& tr, const StepBatch& s, const TrainConfig& c, const RunSetup& run, const DataParallel& group,
+                               bool out_of_time, PartClock& clock) {
+    // The text encoder (libtorch's own layers, a few tokens) stays in fp32; MDM's products run in bf16 when
+    // asked, its output and the losses below in fp32.
+    const torch::Tensor text = tr.text->encode(s.captions);
+    clock.lap(clock.parts.text);
+    torch::Tensor x0_hat;
+    {
+        const AutocastScope mixed(run.device, run.precision);
+        x0_hat = tr.mdm->forward(s.x_t, s.t, text, false, s.lengths).squeeze(2).permute({0, 2, 1}).to(torch::kFloat32);
+    }
+    // Every term is a mean over the share of per-sample means (each normalised by its own valid frames,
+    // losses.hpp), so the ranks' mean of equal shares is the global batch's mean: no normaliser to share.
+    const LossTerms terms = mdm_loss_terms(s.x0, x0_hat, s.lengths, run.mean, run.std, c);
+    clock.lap(clock.parts.forward);
+    tr.optimiser->zero_grad();
+    terms.total.backward();
+    const torch::Tensor stop_flag = torch::full({1}, g_stop_requested || out_of_time ? 1.0f : 0.0f, s.x0.options());
+    const torch::Tensor losses = torch::stack({terms.simple, terms.pos, terms.vel, terms.foot, terms.acc, terms.total}).detach().to(torch::kFloat32);
+    const torch::Tensor riders = group.average_gradients(tr.parameters(), torch::cat({losses, stop_flag})).to(torch::kCPU, torch::kFloat64).contiguous();
+    clock.lap(clock.parts.backward);
+    tr.optimiser->step();
+    clock.lap(clock.parts.optimiser);
+    if (!tr.ema.empty()) update_ema(tr, ema_decay_at(c.ema_decay, tr.step));
+    clock.lap(clock.parts.ema);
+    return std::vector<double>(riders.data_ptr<double>(), riders.data_ptr<double>() + riders.numel());
+}
+
+// Rank 0's log line (stderr and the metrics buffer) and, every save_every steps, the metrics appended, the
+// checkpoint and the model folder.
+void log_and_save(Training& tr, const Hml3dDataset& data, const TrainConfig& c, const std::vector<double>& r, double seconds,
+                  int64_t first, bool last_step, std::string* metrics) {
+    if (tr.step % c.log_every == 0 || last_step) {
+        const double rate = static_cast<double>(tr.step - first) / std::max(seconds, 1e-9);
+        const nlohmann::json line = {{"step", tr.step}, {"loss", r[kTotal]}, {"l_simple", r[kSimple]}, {"l_pos", r[kPos]},
+                                     {"l_vel", r[kVel]}, {"l_foot", r[kFoot]}, {"l_acc", r[kAcc]}, {"steps_per_s", rate}};
+        *metrics += line.dump() + "\n";
+        std::fprintf(stderr, "step %lld/%lld loss %.4f (simple %.4f acc %.4f) %.2f steps/s ETA %.0f s\n", static_cast<long long>(tr.step),
+                     static_cast<long long>(c.steps), r[kTotal], r[kSimple], r[kAcc], rate,
+                     static_cast<double>(c.steps - tr.step) / std::max(rate, 1e-9));
+    }
+    if (tr.step % c.save_every == 0 || last_step) {
+        std::string previous;
+        if (fs::exists(c.out + "/metrics.jsonl")) previous = read_file_text(c.out + "/metrics.jsonl");
+        write_file_atomic(c.out + "/metrics.jsonl", previous + *metrics);
+        metrics->clear();
+        save_checkpoint(tr, data, c.out + "/checkpoint.pt");
+        write_model(tr, c, data);
+    }
+}
+
 }  // namespace
 
 void request_training_stop() { g_stop_requested = true; }
@@ -360,119 +491,45 @@ double ema_decay_at(double max_decay, int64_t step) {
 TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& init_from, int64_t stop_after) {
     // Refused before anything waits for the other ranks.
     const BatchShare share = batch_share(c.batch, c.processes.rank, c.processes.world_size);
-    const bool several = c.processes.world_size > 1;
     if (c.threads > 0) set_torch_threads(c.threads);
     Hml3dDataset data(c.dataset, c.split);
     if (data.clips().empty()) throw Error(c.dataset, c.split, "at least one usable clip (40 to 199 frames with a caption)");
     data.seed(c.seed);
     const WordVectors vocab = WordVectors::load(c.vocab);
-    torch::manual_seed(c.seed);
-    MdmConfig mc = c.mdm;
-    mc.text_dim = c.text.out_dim;
-    mc.mask_frames = true;
     const torch::Device device = training_device(c.device, c.processes);
-    Training tr{Mdm(mc), GloveTextEncoder(vocab, c.text), nullptr, {}, noise_generator(device, c.seed, several), std::mt19937_64(c.seed + 1), 0};
-    if (!init_from.empty()) {
-        load_state_dict(*tr.mdm, init_from + "/weights.safetensors");
-        load_state_dict(*tr.text, init_from + "/text_encoder.safetensors");
-    }
-    tr.mdm->to(device);
-    tr.text->to(device);
+    Training tr = new_training(c, vocab, device, init_from);
     const DataParallel group(c.processes, device);
     group.broadcast_from_main(tr.parameters());  // the same seed already gave the same weights: this makes sure
     tr.optimiser = std::make_unique<torch::optim::AdamW>(tr.parameters(), torch::optim::AdamWOptions(c.learning_rate).weight_decay(c.weight_decay));
     if (c.ema_decay > 0)
         for (const torch::Tensor& p : tr.parameters()) tr.ema.push_back(p.detach().clone());
     if (group.is_main()) fs::create_directories(c.out);
-    const std::string checkpoint = c.out + "/checkpoint.pt";
     if (resume) {
+        const std::string checkpoint = c.out + "/checkpoint.pt";
         if (!fs::exists(checkpoint)) throw Error(checkpoint, "file", "a checkpoint to resume from");
         load_checkpoint(tr, data, checkpoint, device);
     }
-    if (several) seed_rank_dropout(device, c.seed, group.rank(), tr.step);
-    const GaussianDiffusion diffusion(cosine_schedule(c.diffusion_steps));
-    const torch::Tensor mean = torch::from_blob(const_cast<double*>(data.stats().mean.data()), {263}, torch::kFloat64).to(device, torch::kFloat32);
-    const torch::Tensor std = torch::from_blob(const_cast<double*>(data.stats().std.data()), {263}, torch::kFloat64).to(device, torch::kFloat32);
-    const Precision precision = parse_precision(c.precision, "train config", "train.precision");
-    const torch::TensorOptions draws_on = torch::TensorOptions().device(several ? torch::Device(torch::kCPU) : device);
+    if (c.processes.world_size > 1) seed_rank_dropout(device, c.seed, group.rank(), tr.step);
+    RunSetup run = run_setup(c, data, vocab, share, device);
     std::string metrics;
     TrainProgress progress;
     const auto start = std::chrono::steady_clock::now();
+    const auto elapsed_s = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     const int64_t first = tr.step, last = stop_after > 0 ? std::min(c.steps, tr.step + stop_after) : c.steps;
-    std::bernoulli_distribution drop(c.cond_dropout);
-    std::optional<CaptionAugmenter> reword;
-    if (c.augment.enabled()) reword.emplace(vocab, c.augment, all_captions(data));
     g_stop_requested = false;
     bool stop = false;
     PartClock clock(device, c.profile);
     while (tr.step < last && !stop) {
         clock.start_step(tr.step > first);  // the call's first step builds kernels and caches: not profiled
-        // The global batch and all its draws, on every rank; this rank keeps samples [share.begin, + share.size).
-        const Batch b = data.next_batch(c.batch);
-        std::vector<std::string> captions = b.captions;
-        for (std::string& caption : captions)
-            if (drop(tr.dropout_rng)) caption.clear();
-            else if (reword) caption = reword->augment(caption, tr.dropout_rng);  // same stream: saved with the checkpoint
-        const torch::Tensor t_all = torch::randint(c.diffusion_steps, {b.size}, tr.generator, draws_on.dtype(torch::kInt64));
-        const torch::Tensor noise_all = torch::randn({b.size, b.channels, 1, b.frames}, tr.generator, draws_on);
-        const int64_t lo = share.begin, n = share.size;
-        const float* features = b.features.data() + static_cast<size_t>(lo) * static_cast<size_t>(b.frames * b.channels);
-        const torch::Tensor x0 = torch::from_blob(const_cast<float*>(features), {n, b.frames, b.channels}, torch::kFloat32).to(device);
-        const torch::Tensor lengths = torch::tensor(std::vector<int64_t>(b.lengths.begin() + lo, b.lengths.begin() + lo + n)).to(device);
-        const std::vector<std::string> my_captions(captions.begin() + lo, captions.begin() + lo + n);
-        const torch::Tensor t = t_all.slice(0, lo, lo + n).to(device);
-        const torch::Tensor x0_mdm = x0.permute({0, 2, 1}).unsqueeze(2);  // [n, 263, 1, F]
-        const torch::Tensor x_t = diffusion.q_sample(x0_mdm, t, noise_all.slice(0, lo, lo + n).to(device));
+        const StepBatch batch = draw_step_batch(tr, data, c, run);
         clock.lap(clock.parts.data);
-        // The text encoder (libtorch's own layers, a few tokens) stays in fp32; MDM's products run in bf16 when
-        // asked, its output and the losses below in fp32.
-        const torch::Tensor text = tr.text->encode(my_captions);
-        clock.lap(clock.parts.text);
-        torch::Tensor x0_hat;
-        {
-            const AutocastScope mixed(device, precision);
-            x0_hat = tr.mdm->forward(x_t, t, text, false, lengths).squeeze(2).permute({0, 2, 1}).to(torch::kFloat32);
-        }
-        // Every term is a mean over the share of per-sample means (each normalised by its own valid frames,
-        // losses.hpp), so the ranks' mean of equal shares is the global batch's mean: no normaliser to share.
-        const LossTerms terms = mdm_loss_terms(x0, x0_hat, lengths, mean, std, c);
-        clock.lap(clock.parts.forward);
-        tr.optimiser->zero_grad();
-        terms.total.backward();
-        const bool out_of_time = c.max_minutes > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >= 60 * c.max_minutes;
-        const torch::Tensor stop_flag = torch::full({1}, g_stop_requested || out_of_time ? 1.0f : 0.0f, x0.options());
-        const torch::Tensor riders =
-            group.average_gradients(tr.parameters(), torch::cat({torch::stack({terms.simple, terms.pos, terms.vel, terms.foot, terms.acc, terms.total})
-                                                                    .detach().to(torch::kFloat32), stop_flag}))
-                .to(torch::kCPU, torch::kFloat64);
-        const auto r = riders.accessor<double, 1>();
+        const bool out_of_time = c.max_minutes > 0 && elapsed_s() >= 60 * c.max_minutes;
+        const std::vector<double> r = train_step(tr, batch, c, run, group, out_of_time, clock);
         stop = r[kStop] > 0;  // any rank's request stops all of them after the same step
-        clock.lap(clock.parts.backward);
-        tr.optimiser->step();
-        clock.lap(clock.parts.optimiser);
-        if (!tr.ema.empty()) update_ema(tr, ema_decay_at(c.ema_decay, tr.step));
-        clock.lap(clock.parts.ema);
         ++tr.step;
         progress.loss = r[kTotal];
         if (!group.is_main()) continue;
-        if (tr.step % c.log_every == 0 || tr.step == last || stop) {
-            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            const double rate = static_cast<double>(tr.step - first) / std::max(seconds, 1e-9);
-            const nlohmann::json line = {{"step", tr.step}, {"loss", progress.loss}, {"l_simple", r[kSimple]}, {"l_pos", r[kPos]},
-                                         {"l_vel", r[kVel]}, {"l_foot", r[kFoot]}, {"l_acc", r[kAcc]}, {"steps_per_s", rate}};
-            metrics += line.dump() + "\n";
-            std::fprintf(stderr, "step %lld/%lld loss %.4f (simple %.4f acc %.4f) %.2f steps/s ETA %.0f s\n", static_cast<long long>(tr.step),
-                         static_cast<long long>(c.steps), progress.loss, r[kSimple], r[kAcc], rate,
-                         static_cast<double>(c.steps - tr.step) / std::max(rate, 1e-9));
-        }
-        if (tr.step % c.save_every == 0 || tr.step == last || stop) {
-            std::string previous;
-            if (fs::exists(c.out + "/metrics.jsonl")) previous = read_file_text(c.out + "/metrics.jsonl");
-            write_file_atomic(c.out + "/metrics.jsonl", previous + metrics);
-            metrics.clear();
-            save_checkpoint(tr, data, checkpoint);
-            write_model(tr, c, data);
-        }
+        log_and_save(tr, data, c, r, elapsed_s(), first, tr.step == last || stop, &metrics);
         clock.lap(clock.parts.log);
     }
     progress.profile = clock.parts;
