@@ -24,3 +24,6 @@ find "$shared"/umafall/raw-sample -name 'UMAFall_*.csv' | head -2 | while read -
 for f in "$shared"/hugadb/raw-sample/HuGaDB_*.txt; do [ -f "$f" ] && head -n 40 "$f" > "fuzz/corpus-hugadb/$(basename "$f")"; done
 find "$scratch" -name manifest.csv -size -16k | head -10 | while read -r f; do cp "$f" "fuzz/corpus-imu_manifest/$(echo "$f" | md5sum | cut -c1-8).csv"; done
 find "$scratch" -path '*/jobs/*.json' -size -16k | head -10 | while read -r f; do cp "$f" "fuzz/corpus-job_marker/$(echo "$f" | md5sum | cut -c1-8).json"; done
+# RealWorld sensor archives the tests wrote (test_realworld, test_release_importers, test_cli_imu_synth).
+mkdir -p fuzz/corpus-realworld
+find "$scratch" -path '*/proband*/data/acc_*_csv.zip' -size -64k | head -10 | while read -r f; do cp "$f" "fuzz/corpus-realworld/$(echo "$f" | md5sum | cut -c1-8).zip"; done
