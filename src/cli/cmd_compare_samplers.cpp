@@ -21,15 +21,16 @@ struct CompareArgs {
 
 void run(CompareArgs a) {
     SamplerComparisonOptions& o = a.options;
+    std::vector<SamplerConfig> configs;
     check_usage([&] {
         o.frames = frames_for_seconds(a.seconds, "--seconds");
         o.validate();
-        parse_sampler_configs(a.samplers);
+        configs = parse_sampler_configs(a.samplers);
         check_output_path(a.out, "--out");
     });
     o.prompts = read_prompt_set(a.prompts);
     o.device = global_options().device;
-    const CsvTable t = compare_samplers(o, parse_sampler_configs(a.samplers));
+    const CsvTable t = compare_samplers(o, configs);
     write_csv(a.out, t);
     std::printf("%-12s %6s %9s %12s %12s %10s %9s %9s\n", "sampler", "calls", "motion/s", "acc energy", "joint acc", "descr. d",
                 "quality", "activity");

@@ -24,8 +24,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--out", f.out, "output .npy [B,263,1,F] float32")->required();
     cmd->callback([] {
         check_usage([] {
-            if (!(f.guidance >= 0 && f.guidance <= kMaxGuidance))
-                throw Error("--guidance", "scale", "0 (no guidance) to " + std::to_string(static_cast<int>(kMaxGuidance)), std::to_string(f.guidance));
+            check_guidance_scale(f.guidance, "--guidance");
             check_output_path(f.out, "--out");
         });
         run_mdm_forward(f);

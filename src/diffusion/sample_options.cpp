@@ -22,6 +22,11 @@ Sampler parse_sampler(const std::string& name, const std::string& option) {
 
 int denoiser_calls(Sampler sampler, int steps, int schedule_steps) { return sampler == Sampler::ddpm ? schedule_steps : steps; }
 
+void check_guidance_scale(double scale, const std::string& option) {
+    if (!(scale >= 0 && scale <= kMaxGuidance))
+        throw Error("sampling", option, "a scale from 0 to " + std::to_string(static_cast<int>(kMaxGuidance)), std::to_string(scale));
+}
+
 int frames_for_seconds(double seconds, const std::string& option) {
     if (!(seconds * kSampleFps >= 3.5 && seconds * kSampleFps < 196.5))
         throw Error(option, "seconds", "0.2 to 9.8 s (4 to 196 frames at 20 fps)", std::to_string(seconds));
@@ -35,8 +40,7 @@ void SampleOptions::validate() const {
         throw Error("sampling", "--steps", "1 to 10000 denoiser evaluations", std::to_string(steps));
     // A huge scale turns every feature into inf or NaN (1e20 does in float32), found only much later (inverse
     // kinematics, the IMU stage). MDM samples at 2.5; past ~10 a scale extrapolates far beyond the data.
-    if (!(guidance >= 0 && guidance <= kMaxGuidance))
-        throw Error("sampling", "--guidance", "a scale from 0 to " + std::to_string(static_cast<int>(kMaxGuidance)), std::to_string(guidance));
+    check_guidance_scale(guidance, "--guidance");
     if (!(eta >= 0 && eta <= 1)) throw Error("sampling", "--eta", "0 to 1", std::to_string(eta));
     if (batch < 1) throw Error("sampling", "--batch", "at least 1", std::to_string(batch));
     if (!(strength > 0 && strength <= 1)) throw Error("sampling", "--strength", "above 0 and at most 1", std::to_string(strength));

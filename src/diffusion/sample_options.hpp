@@ -20,6 +20,8 @@ Sampler parse_sampler(const std::string& name, const std::string& option = "--sa
 int denoiser_calls(Sampler sampler, int steps, int schedule_steps);
 
 constexpr double kMaxGuidance = 100;  // classifier-free guidance scales accepted: [0, kMaxGuidance]
+// Throws Error naming `option` unless 0 <= scale <= kMaxGuidance (NaN refused).
+void check_guidance_scale(double scale, const std::string& option);
 constexpr double kSampleFps = 20;     // HumanML3D's frame rate: every sampled motion is at 20 fps
 
 // A length in seconds as sampled frames (round(seconds * 20)); throws Error naming `option` unless the length is
