@@ -38,7 +38,6 @@ const std::map<std::string, Coverage> kCoveredBy = {
     {"har/nn/deepconvlstm", {"test_har.cpp", "#include \"har/nn/deepconvlstm.hpp\""}},
     {"har/nn/har_training", {"test_har.cpp", "#include \"har/nn/har_training.hpp\""}},
     {"har/windowing", {"test_har.cpp", "#include \"har/windowing.hpp\""}},
-    {"imu/device_roll", {"test_realism.cpp", "apply_device_roll"}},
     {"imu/realworld_export", {"test_cli_imu_synth.cpp", "--format realworld"}},
     {"motion/skeleton", {"test_foot_contacts.cpp", "#include \"motion/skeleton.hpp\""}},
     {"report/html_page", {"test_report.cpp", "#include \"report/html_page.hpp\""}},

@@ -1,13 +1,16 @@
 // The realism model (imu/realism) through the whole bodies/IMU stage: off is the ideal sensor to the byte, a
 // tempo of 1 is the identity, a static body reads gravity only whatever the attachment, the tilt and the tempo
 // are the ones drawn, landings make the attachment ring; presets and TOML files are read strictly. And realism.cpp
-// on its own: what every preset turns on, the device roll lever against a known roll, the draws' distributions, validation naming the key, the JSON form
-// read back as a TOML file, and .toml paths.
+// on its own: what every preset turns on, the draws' distributions, validation naming the key, the JSON form
+// read back as a TOML file, .toml paths, and the lever table: spelled variants, the help, retired keys, and each key
+// written in at most two files of src/.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
+#include <filesystem>
 #include <functional>
+#include <regex>
 
 #include "body/procedural_body.hpp"
 #include "core/error.hpp"
@@ -90,15 +93,15 @@ TEST(Realism, StaticBodyOnSoftTissueReadsGravityOnly) {
 
 TEST(Realism, TiltTurnsTheBeltSensorsOutwardAxisDown) {
     RealismModel m;
-    m.tilt_deg = 15;
+    m.tilt.mean_deg = 15;
     const BodyImu imu = synthesize_body_imu(standing(), average_man(), parse_sensor_sets("sisfall"), with(m));
-    ASSERT_EQ(imu.tilt_deg.size(), 1u);
-    EXPECT_EQ(imu.tilt_deg[0], 15);
+    ASSERT_EQ(imu.mount_tilts_deg.size(), 1u);
+    EXPECT_EQ(imu.mount_tilts_deg[0], 15);
     // SisFall's board: y down, z out of the belly (forwards). Tilted 15 deg, z reads -g sin 15 deg, y -g cos 15 deg.
     const Vector3d a = imu.signals[0].acc[10];
     EXPECT_NEAR(a.z(), -kGravity * std::sin(15 * M_PI / 180), 1e-3);
     EXPECT_NEAR(a.y(), -kGravity * std::cos(15 * M_PI / 180), 1e-3);
-    m.tilt_sd_deg = 5;  // drawn per recording: seeded, and different between seeds
+    m.tilt.sd_deg = 5;  // drawn per recording: seeded, and different between seeds
     EXPECT_EQ(draw_tilt_deg(m, 3), draw_tilt_deg(m, 3));
     EXPECT_NE(draw_tilt_deg(m, 3), draw_tilt_deg(m, 4));
 }
@@ -167,7 +170,7 @@ TEST(Realism, TrunkSwayTurnsAndMovesTheWaistTagLessAndLeavesTheAnkleAlone) {
 
 TEST(Realism, TempoPlaysTheSameMotionFasterOrSlower) {
     RealismModel m;
-    m.tempo_sd = 0.2;
+    m.tempo_log_sd = 0.2;
     const JointSequence motion = hopping();
     const BodyImu imu = synthesize_body_imu(motion, average_man(), parse_sensor_sets("sisfall"), with(m));
     EXPECT_NE(imu.tempo, 1.0);
@@ -188,7 +191,7 @@ TEST(Realism, LandingsMakeTheAttachmentRingAboveThreeHertz) {
     const BodyImu ideal = synthesize_body_imu(motion, average_man(), waist, {});
     RealismModel m;
     m.tissue = {8, 0.3};
-    m.impact_gain = 1;
+    m.landings.gain_m_s = 1;
     const BodyImu soft = synthesize_body_imu(motion, average_man(), waist, with(m));
     ASSERT_EQ(ideal.signals[0].acc.size(), soft.signals[0].acc.size());
     // The mean reading is kept (the pulses carry no net velocity change: gravity and the bounce stay).
@@ -206,17 +209,19 @@ TEST(Realism, PresetsAndTomlFilesAreReadStrictly) {
     for (const std::string& name : realism_preset_names()) EXPECT_NO_THROW(realism_preset(name).validate(name)) << name;
     EXPECT_THROW(parse_realism("sisfal"), Error);
     const RealismModel m = parse_realism_toml("base = \"sisfall\"\ntilt_deg = 20\ntissue_hz = 0\n", "mine.toml");
-    EXPECT_EQ(m.tilt_deg, 20);
+    EXPECT_EQ(m.tilt.mean_deg, 20);
     EXPECT_FALSE(m.tissue.enabled());
     EXPECT_EQ(m.device, "sisfall");  // kept from the base
     EXPECT_EQ(m.name, "mine.toml");
     EXPECT_THROW(parse_realism_toml("tilt_dg = 3\n", "mine.toml"), Error);
     EXPECT_THROW(parse_realism_toml("tempo_sd = 2\n", "mine.toml"), Error);
     EXPECT_THROW(parse_realism_toml("device = \"phone\"\n", "mine.toml"), Error);
-    VirtualImuOptions o;
-    o.realism = realism_preset("sisfall");
-    o.noise = parse_noise_model("smartphone");
-    EXPECT_THROW(o.validate(), Error);  // two device models
+    RealismModel two = realism_preset("sisfall");
+    const std::string e = test::error_message([&] { fold_noise_option("smartphone", &two); });  // two device models
+    EXPECT_TRUE(test::contains(e, "--noise") && test::contains(e, "sisfall")) << e;
+    RealismModel one = realism_preset("none");
+    fold_noise_option("smartphone", &one);  // --noise alone is the realism model's device
+    EXPECT_EQ(one.device, "smartphone");
 }
 
 namespace {
@@ -236,8 +241,8 @@ TEST(Realism, PresetsTurnOnOnlyTiltAndTheirOwnDevice) {
     // other preset uses the device model of the same name; the calibrated ones spread the tilt over recordings.
     EXPECT_EQ(realism_preset_names(), (std::vector<std::string>{"none", "sisfall", "umafall", "hugadb", "smartphone"}));
     const RealismModel none = realism_preset("none");
-    EXPECT_EQ(none.tilt_deg, 0);
-    EXPECT_EQ(none.tilt_sd_deg, 0);
+    EXPECT_EQ(none.tilt.mean_deg, 0);
+    EXPECT_EQ(none.tilt.sd_deg, 0);
     EXPECT_EQ(none.device, "none");
     for (const std::string& name : realism_preset_names()) {
         const RealismModel m = realism_preset(name);
@@ -245,24 +250,22 @@ TEST(Realism, PresetsTurnOnOnlyTiltAndTheirOwnDevice) {
         EXPECT_EQ(m.device, name);
         EXPECT_FALSE(m.tissue.enabled()) << name;
         EXPECT_FALSE(m.strap.enabled()) << name;
-        EXPECT_EQ(m.impact_gain, 0) << name;
-        EXPECT_EQ(m.tempo_sd, 0) << name;
-        EXPECT_FALSE(m.roll.enabled()) << name;
-        EXPECT_FALSE(m.trunk.enabled()) << name;
+        for (const RealismLever& lever : realism_levers())
+            if (std::string(lever.name) != "tilt" && std::string(lever.name) != "device") EXPECT_FALSE(lever.enabled(m)) << name << " " << lever.name;
         EXPECT_NO_THROW(parse_noise_model(m.device)) << name;
     }
-    EXPECT_GT(realism_preset("sisfall").tilt_sd_deg, 0);
-    EXPECT_GT(realism_preset("umafall").tilt_sd_deg, 0);
+    EXPECT_GT(realism_preset("sisfall").tilt.sd_deg, 0);
+    EXPECT_GT(realism_preset("umafall").tilt.sd_deg, 0);
     const std::string m = realism_error([] { realism_preset("sisfal"); });
     EXPECT_TRUE(mentions(m, "--realism") && mentions(m, "sisfal")) << m;
 }
 
 TEST(Realism, DrawsFollowTheModelsDistributions) {
     RealismModel m;
-    m.tilt_deg = 7.5;
+    m.tilt.mean_deg = 7.5;
     EXPECT_EQ(draw_tilt_deg(m, 1), 7.5);  // no spread: the mean itself
     EXPECT_EQ(draw_tempo(m, 1), 1.0);     // no tempo spread: the motion as it is
-    m.tilt_sd_deg = 10;
+    m.tilt.sd_deg = 10;
     double sum = 0, sum2 = 0;
     const int n = 4000;
     for (int seed = 0; seed < n; ++seed) {
@@ -276,16 +279,18 @@ TEST(Realism, DrawsFollowTheModelsDistributions) {
 
 TEST(Realism, ValidationNamesTheKeyOutOfRange) {
     const std::pair<const char*, std::function<void(RealismModel&)>> cases[] = {
-        {"tilt_deg", [](RealismModel& m) { m.tilt_deg = 91; }},
-        {"tilt_deg", [](RealismModel& m) { m.tilt_deg = NAN; }},
-        {"tilt_sd_deg", [](RealismModel& m) { m.tilt_sd_deg = -1; }},
-        {"impact_gain", [](RealismModel& m) { m.impact_gain = 11; }},
-        {"impact_ms", [](RealismModel& m) { m.impact_ms = 4; }},
-        {"tempo_sd", [](RealismModel& m) { m.tempo_sd = 0.6; }},
-        {"roll_gain", [](RealismModel& m) { m.roll.gain = -3; }},
-        {"impact_size_sd", [](RealismModel& m) { m.impact_spread.size_sd = 1.5; }},
-        {"impact_horizontal_sd", [](RealismModel& m) { m.impact_spread.horizontal_sd = -0.1; }},
-        {"roll_sigma_s", [](RealismModel& m) { m.roll.sigma_s = 0; }},
+        {"tilt_deg", [](RealismModel& m) { m.tilt.mean_deg = 91; }},
+        {"tilt_deg", [](RealismModel& m) { m.tilt.mean_deg = NAN; }},
+        {"tilt_sd_deg", [](RealismModel& m) { m.tilt.sd_deg = -1; }},
+        {"impact_gain", [](RealismModel& m) { m.landings.gain_m_s = 11; }},
+        {"impact_ms", [](RealismModel& m) { m.landings.duration_ms = 4; }},
+        {"tempo_sd", [](RealismModel& m) { m.tempo_log_sd = 0.6; }},
+        {"impact_size_sd", [](RealismModel& m) { m.landings.spread.size_sd = 1.5; }},
+        {"impact_horizontal_sd", [](RealismModel& m) { m.landings.spread.horizontal_sd = -0.1; }},
+        {"vibration_gain", [](RealismModel& m) { m.vibration.gain = 1.5; }},
+        {"vibration_high_hz", [](RealismModel& m) { m.vibration.high_hz = 4; }},
+        {"device_rate_hz", [](RealismModel& m) { m.device_sample_rate_hz = 3; }},
+        {"device", [](RealismModel& m) { m.device = "phone"; }},
         {"trunk_pitch_gain", [](RealismModel& m) { m.trunk.pitch_gain = 2.5; }},
         {"trunk_yaw_gain", [](RealismModel& m) { m.trunk.yaw_gain = -1.5; }},
         {"trunk_sigma_s", [](RealismModel& m) { m.trunk.sigma_s = 0; }},
@@ -306,15 +311,14 @@ TEST(Realism, ValidationNamesTheKeyOutOfRange) {
 
 TEST(Realism, JsonFormReadsBackAsTheSameModel) {
     RealismModel m = realism_preset("umafall");
-    m.tilt_deg = -4.5;
+    m.tilt.mean_deg = -4.5;
     m.tissue = {9, 0.4};
     m.strap = {5.5, 0.3};
-    m.impact_gain = 0.8;
-    m.impact_ms = 30;
-    m.tempo_sd = 0.1;
-    m.roll = {-0.5, 0.8};
+    m.landings = {0.8, 30, {0.3, 0.7}};
+    m.tempo_log_sd = 0.1;
     m.trunk = {0.4, 0.6, 0.7};
-    m.impact_spread = {0.3, 0.7};
+    m.vibration = {0.2, 4, 11};
+    m.device_sample_rate_hz = 20;
     const nlohmann::json j = m.to_json();
     // Every key but the name as a TOML file, from the "none" base: the same model.
     std::string toml;
@@ -333,82 +337,82 @@ TEST(Realism, JsonFormReadsBackAsTheSameModel) {
     EXPECT_TRUE(mentions(e, dir + "/absent.toml")) << e;
 }
 
-namespace {
-
-// SisFall's belt board at rest: x right, y down, z out of the belly (world X left, Y up, Z forward).
-SensorMount belt_board() {
-    SensorMount m;
-    m.rest_from_sensor.col(0) = -Vector3d::UnitX();
-    m.rest_from_sensor.col(1) = -Vector3d::UnitY();
-    m.rest_from_sensor.col(2) = Vector3d::UnitZ();
-    m.skin_normal = Vector3d::UnitZ();
-    return m;
-}
-
-// The board's roll (rad) per frame: the elevation of the body's left axis, which it carries as -x.
-std::vector<double> roll_of(const std::vector<Quat>& track) {
-    std::vector<double> r;
-    for (const Quat& q : track) r.push_back(std::asin((q * -Vector3d::UnitX()).y()));
-    return r;
-}
-
-// Amplitude of the f-Hz sine in x over whole periods from the middle of the track.
-double amplitude_at(const std::vector<double>& x, double fps, double f, size_t from, size_t count) {
-    double c = 0, s = 0;
-    for (size_t k = from; k < from + count; ++k) {
-        c += x[k] * std::cos(2 * M_PI * f * k / fps);
-        s += x[k] * std::sin(2 * M_PI * f * k / fps);
+TEST(RealismTable, OffValuesAreTheDefaultsAndCalibratedValuesTurnEachLeverOn) {
+    for (const RealismLever& lever : realism_levers()) {
+        RealismModel m;
+        EXPECT_FALSE(lever.enabled(m)) << lever.name;
+        for (const RealismKey& k : lever.keys)
+            if (k.number) EXPECT_EQ(k.number(m), k.off) << k.key;
+        const RealismModel on = parse_realism(std::string("none+") + lever.name);  // validated
+        EXPECT_TRUE(lever.enabled(on)) << lever.name;
+        for (const RealismLever& other : realism_levers())  // and nothing else
+            if (&other != &lever) EXPECT_FALSE(other.enabled(on)) << lever.name << " turned on " << other.name;
     }
-    return 2 * std::hypot(c, s) / count;
 }
 
-}  // namespace
-
-TEST(DeviceRoll, KeepsPostureAndScalesTheSwayByTheGain) {
-    // A trunk leaning 0.2 rad to the left and swaying 0.1 rad at 1 Hz about the forward axis, 10 s at 100 fps.
-    const double fps = 100, lean = 0.2, sway = 0.1;
-    std::vector<Quat> track;
-    for (int k = 0; k < 1000; ++k) {
-        const double roll = lean + sway * std::sin(2 * M_PI * k / fps);
-        track.push_back(Quat(Eigen::AngleAxisd(roll, Vector3d::UnitZ()) * belt_board().rest_from_sensor));
+TEST(RealismTable, VariantsSpellAPresetWithLeversOnAndOff) {
+    const RealismModel strap = parse_realism("sisfall+strap+vibration");
+    EXPECT_EQ(strap.name, "sisfall+strap+vibration");
+    EXPECT_EQ(strap.tilt.mean_deg, 7.5);  // the preset's
+    EXPECT_EQ(strap.device, "sisfall");
+    EXPECT_EQ(strap.strap.frequency_hz, 6);  // calibrated on SisFall walking's lateral spectrum
+    EXPECT_EQ(strap.strap.damping_ratio, 0.25);
+    EXPECT_EQ(strap.vibration.gain, 0.15);
+    const RealismModel tilt_alone = parse_realism("sisfall-device");
+    EXPECT_EQ(tilt_alone.device, "none");
+    EXPECT_EQ(tilt_alone.tilt.sd_deg, 10);
+    const RealismModel device_alone = parse_realism("umafall-tilt");
+    EXPECT_EQ(device_alone.tilt.sd_deg, 0);
+    EXPECT_EQ(device_alone.device, "umafall");
+    for (const char* bad : {"sisfall+wobble", "sisfall+", "nonesuch+tilt", "+tilt"}) {
+        const std::string e = realism_error([&] { parse_realism(bad); });
+        EXPECT_TRUE(mentions(e, "--realism")) << bad << ": " << e;
     }
-    const std::vector<double> before = roll_of(track);
-    EXPECT_NEAR(before[25], lean + sway, 1e-12);  // the left axis raised by the roll
-    // The slow part passes exp(-(2 pi 1 Hz 0.5 s)^2 / 2) = 0.0072 of the sway, so the board keeps
-    // gain + (1 - gain) 0.0072 of it; the lean stays.
-    for (double gain : {1.0, 0.5, 0.0, -0.5}) {
-        std::vector<Quat> edited = track;
-        apply_device_roll({gain, 0.5}, belt_board(), fps, &edited);
-        const std::vector<double> after = roll_of(edited);
-        const double kept = gain + (1 - gain) * std::exp(-std::pow(2 * M_PI * 0.5, 2) / 2);
-        EXPECT_NEAR(amplitude_at(after, fps, 1, 300, 400), sway * std::abs(kept), 1e-3) << gain;
-        double mean = 0;
-        for (size_t k = 300; k < 700; ++k) mean += after[k] / 400;
-        EXPECT_NEAR(mean, lean, 2e-3) << gain;
-        if (gain == 1.0) {
-            for (size_t k = 0; k < track.size(); ++k) EXPECT_EQ(edited[k].coeffs(), track[k].coeffs());
+    EXPECT_TRUE(mentions(realism_error([] { parse_realism("sisfall+wobble"); }), "wobble"));
+}
+
+TEST(RealismTable, TheHelpNamesEveryLeverAndKeyWithItsRange) {
+    const std::string help = realism_help();
+    for (const std::string& preset : realism_preset_names()) EXPECT_TRUE(mentions(help, preset)) << preset;
+    for (const RealismLever& lever : realism_levers()) {
+        EXPECT_TRUE(mentions(help, std::string(lever.name) + " (" + realism_stage_name(lever.stage) + ")")) << lever.name;
+        for (const RealismKey& k : lever.keys) EXPECT_TRUE(mentions(help, std::string("      ") + k.key + ": ")) << k.key;
+    }
+    EXPECT_TRUE(mentions(help, "tilt_deg: -90 to 90 deg; off 0, calibrated 7.5")) << help;
+    EXPECT_TRUE(mentions(help, "device_rate_hz: 0 (off) or 5 to 2000 Hz, whole")) << help;
+    // Both commands that take --realism show it.
+    for (const char* command : {"synth --help", "imu synth --help"}) {
+        const test::CliResult r = test::run_cli(command);
+        for (const RealismLever& lever : realism_levers())
+            for (const RealismKey& k : lever.keys) EXPECT_TRUE(mentions(r.output, k.key)) << command << " " << k.key;
+    }
+}
+
+TEST(RealismTable, ARetiredLeverRecordedOffReadsAsTodaysModel) {
+    nlohmann::json old = realism_preset("sisfall").to_json();
+    old["roll_gain"] = 1;  // the device roll, retired on 2026-12-05, recorded off
+    old["roll_sigma_s"] = 0.5;
+    old.erase("vibration_gain");  // a lever added since: absent reads as off
+    EXPECT_EQ(realism_record_as_today(old), realism_preset("sisfall").to_json());
+    old["roll_gain"] = 0;  // recorded on: no model of today equals it
+    EXPECT_NE(realism_record_as_today(old), realism_preset("sisfall").to_json());
+}
+
+TEST(RealismTable, EveryKeyIsWrittenInAtMostTwoFilesOfTheLibrary) {
+    // Its table entry (realism.cpp) and at most the stage that records its draw (virtual_imu.cpp). "device" is
+    // also the word for libtorch's device, so it is not counted.
+    namespace fs = std::filesystem;
+    for (const RealismLever& lever : realism_levers())
+        for (const RealismKey& k : lever.keys) {
+            if (std::string(k.key) == "device") continue;
+            const std::regex word(std::string("\\b") + k.key + "\\b");
+            std::vector<std::string> files;
+            for (const auto& e : fs::recursive_directory_iterator(fs::path(T2IMU_SOURCE_DIR) / "src")) {
+                if (!e.is_regular_file()) continue;
+                std::ifstream in(e.path());
+                const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+                if (std::regex_search(text, word)) files.push_back(e.path().filename().string());
+            }
+            EXPECT_LE(files.size(), 2u) << k.key << " in " << ::testing::PrintToString(files);
         }
-        // Turned about the skin normal only: the board's z axis (the normal) is where it was.
-        for (size_t k = 0; k < track.size(); k += 50) EXPECT_LT((edited[k] * Vector3d::UnitZ() - track[k] * Vector3d::UnitZ()).norm(), 1e-12);
-    }
-}
-
-TEST(DeviceRoll, LeavesSkinFacingUpAndLyingOnTheBackAlone) {
-    // A body lying on its back (front up, head towards -Z) rocking 0.3 rad side to side about its long axis at
-    // 1 Hz: the board's left axis rises and falls as in an upright sway, but a turn about the normal cannot
-    // undo that roll (it tips the left axis by (n x left).up = 0), so the lever leaves it alone.
-    const double fps = 50;
-    const Eigen::Matrix3d lying = Eigen::AngleAxisd(-M_PI / 2, Vector3d::UnitX()).toRotationMatrix();
-    std::vector<Quat> track;
-    for (int k = 0; k < 300; ++k)
-        track.push_back(Quat(Eigen::AngleAxisd(0.3 * std::sin(2 * M_PI * k / fps), Vector3d::UnitZ()) * lying * belt_board().rest_from_sensor));
-    EXPECT_NEAR(roll_of(track)[12], std::asin(std::sin(0.3 * std::sin(2 * M_PI * 12 / fps))), 1e-12);
-    std::vector<Quat> edited = track;
-    apply_device_roll({0.0, 0.5}, belt_board(), fps, &edited);
-    for (size_t k = 0; k < track.size(); ++k) EXPECT_LT((edited[k].coeffs() - track[k].coeffs()).norm(), 1e-9);
-    SensorMount top = belt_board();  // a mount whose skin faces up at rest: no horizontal tangent
-    top.skin_normal = Vector3d::UnitY();
-    edited = track;
-    apply_device_roll({0.0, 0.5}, top, fps, &edited);
-    for (size_t k = 0; k < track.size(); ++k) EXPECT_EQ(edited[k].coeffs(), track[k].coeffs());
 }

@@ -33,7 +33,7 @@ TEST(SignalStatistics, SinusoidsGiveTheirLevelFrequencyAndTilt) {
     EXPECT_NEAR(s.at("sd_z"), 0, 1e-3);  // a constant, but for the resampling filter's edges
     EXPECT_NEAR(s.at("dom_x_hz"), 0.9, 0.02);
     EXPECT_NEAR(s.at("dom_y_hz"), 1.8, 0.02);
-    EXPECT_NEAR(s.at("tilt_deg"), 16, 0.1);
+    EXPECT_NEAR(s.at("gravity_tilt_deg"), 16, 0.1);
     EXPECT_NEAR(s.at("mean_z"), -9.81 * std::sin(16 * M_PI / 180), 0.01);
     EXPECT_LT(s.at("hf_share"), 0.01);  // nothing above 3 Hz
     EXPECT_LT(s.at("hf_sd_x"), 0.05);
@@ -72,7 +72,7 @@ TEST(SignalStatistics, ComparesActivitiesBothSetsHoldWithRatios) {
     ASSERT_EQ(c.size(), 1u);  // only walking is in both
     EXPECT_EQ(c["walking"]["recordings"]["synthetic"], 2);
     EXPECT_NEAR(c["walking"]["sd_x"]["ratio"].get<double>(), 0.5, 0.01);
-    EXPECT_NEAR(c["walking"]["tilt_deg"]["real"].get<double>(), 16, 0.1);
+    EXPECT_NEAR(c["walking"]["gravity_tilt_deg"]["real"].get<double>(), 16, 0.1);
     EXPECT_THROW(compare_signal_statistics(real, synthetic, {"wrist", 20}), Error);  // a position neither holds: refused, not {}
     ImuRecording short_one = recording("walking", 0.9, 1.0, 0);
     short_one.samples.resize(60);

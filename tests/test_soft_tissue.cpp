@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "imu/realism.hpp"
 #include "imu/soft_tissue.hpp"
 
 using namespace t2imu;
@@ -58,7 +59,8 @@ TEST(SoftTissue, RigidAttachmentIsNoFilterAndBadValuesAreRefused) {
     const std::vector<Vector3d> base = {Vector3d(1, 2, 3), Vector3d(-4, 5, 6)};
     const SpringMassResponse r = spring_mass_response(base, 1e-3, {});
     EXPECT_EQ(r.acceleration[1].norm(), 0);
-    EXPECT_THROW(SoftTissue({0.5, 0.3}).validate("t.toml"), Error);
-    EXPECT_THROW(SoftTissue({10, 0}).validate("t.toml"), Error);
-    EXPECT_NO_THROW(SoftTissue({0, 0}).validate("t.toml"));
+    // Ranges live in the realism table (imu/realism.cpp).
+    EXPECT_THROW(parse_realism_toml("tissue_hz = 0.5\ntissue_damping = 0.3\n", "t.toml"), Error);
+    EXPECT_THROW(parse_realism_toml("tissue_hz = 10\n", "t.toml"), Error);  // no damping
+    EXPECT_NO_THROW(parse_realism_toml("tissue_hz = 0\n", "t.toml"));
 }

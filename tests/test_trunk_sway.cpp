@@ -1,4 +1,4 @@
-// The trunk-sway lever (imu/trunk_sway): a pelvis turning slowly and swaying about its three axes keeps its
+// The trunk-sway lever (body/trunk_sway): a pelvis turning slowly and swaying about its three axes keeps its
 // heading and its roll, while its pitch and yaw sway shrink by the gain plus what the slow part passes; limbs,
 // joint positions and gains of 1 are left alone.
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "imu/trunk_sway.hpp"
+#include "body/trunk_sway.hpp"
 #include "motion/quaternion.hpp"
 #include "motion/skeleton.hpp"
 

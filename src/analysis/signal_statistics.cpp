@@ -133,7 +133,7 @@ double dominant_frequency_hz(const std::vector<double>& x, double rate_hz, doubl
 }
 
 const std::vector<std::string>& signal_statistic_names() {
-    static const std::vector<std::string> names = {"mean_x", "mean_y", "mean_z", "tilt_deg", "sd_x", "sd_y", "sd_z", "mag_sd",
+    static const std::vector<std::string> names = {"mean_x", "mean_y", "mean_z", "gravity_tilt_deg", "sd_x", "sd_y", "sd_z", "mag_sd",
                                                    "mag_p05", "mag_p50", "mag_p95", "mag_rise", "mag_dip", "dom_x_hz", "dom_y_hz", "dom_z_hz", "jerk_rms", "hf_share",
                                                    "hf_sd_x", "hf_sd_y", "hf_sd_z", "gyr_sway_sd_x", "gyr_sway_sd_y", "gyr_sway_sd_z", "yaw_hz",
                                                    "grav_x_re", "grav_x_im", "grav_y_re", "grav_y_im", "grav_z_re", "grav_z_im"};
@@ -175,7 +175,7 @@ std::map<std::string, double> recording_signal_statistics(const ImuRecording& re
         total += axis_total;
     }
     const double largest = mean.cwiseAbs().maxCoeff();
-    s["tilt_deg"] = mean.norm() > 0 ? std::acos(std::min(1.0, largest / mean.norm())) * 180 / M_PI : 0;
+    s["gravity_tilt_deg"] = mean.norm() > 0 ? std::acos(std::min(1.0, largest / mean.norm())) * 180 / M_PI : 0;
     std::vector<double> magnitude(n);
     for (size_t i = 0; i < n; ++i) magnitude[i] = std::sqrt(axis[0][i] * axis[0][i] + axis[1][i] * axis[1][i] + axis[2][i] * axis[2][i]);
     s["mag_sd"] = standard_deviation(magnitude);

@@ -5,7 +5,7 @@
 // Per recording, after resampling to `rate_hz` (har/windowing.hpp's resample_channel, as HAR sees the data),
 // acceleration in the sensor frame (m/s^2, gravity included):
 //   mean_x/y/z        the mean: gravity's direction in the sensor frame while the activity goes on (m/s^2)
-//   tilt_deg          angle between the mean vector and the sensor axis nearest to it (degrees): a mounting
+//   gravity_tilt_deg  angle between the mean vector and the sensor axis nearest to it (degrees): a mounting
 //                     tilt, whatever the data set's axis convention
 //   sd_x/y/z, mag_sd  standard deviations of each axis and of the magnitude |a| (m/s^2)
 //   mag_p05/p50/p95   percentiles of |a| (m/s^2)

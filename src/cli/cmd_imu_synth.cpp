@@ -10,6 +10,7 @@
 #include "core/npy.hpp"
 #include "core/output_path.hpp"
 #include "imu/imu_dataset.hpp"
+#include "imu/realism.hpp"
 #include "imu/realworld_export.hpp"
 #include "imu/virtual_imu.hpp"
 
@@ -54,8 +55,8 @@ void run(const SynthArgs& a) {
     VirtualImuOptions options = a.options;
     check_usage([&] {
         check_motion_fps(a.fps, "--fps");
-        options.noise = parse_noise_model(a.noise);
         options.realism = parse_realism(a.realism);
+        fold_noise_option(a.noise, &options.realism);
         options.validate();
         check_replaceable_folder(a.out, "--out");
     });
@@ -81,8 +82,8 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--body", a.body, "preset:NAME | paper8 | population:N[,seed=S,female=F,height_m|height_f=CM:SD,bmi_m|bmi_f=MEAN:SD] | height=CM,mass=KG,sex=m|f | smpl:FILE.npz[,betas=..] | none; join with +");
     cmd->add_option("--sensors", a.sensors, "placement sets: realworld, sisfall, umafall, hugadb, FILE.toml (comma-separated)");
     cmd->add_option("--rate", a.options.rate_hz, "output sample rate, Hz");
-    cmd->add_option("--noise", a.noise, "sensor error model: none | smartphone | hugadb | sisfall | umafall [,key=value...]");
-    cmd->add_option("--realism", a.realism, "realism model: none | sisfall | umafall | hugadb | smartphone | FILE.toml (tilt, soft tissue, strap, landings, tempo, device)");
+    cmd->add_option("--noise", a.noise, "the device's errors alone (the realism model's device key): none | smartphone | hugadb | sisfall | umafall [,key=value...]");
+    cmd->add_option("--realism", a.realism, realism_help());
     cmd->add_option("--mount-jitter", a.options.mount_jitter_deg, "random mounting rotation up to DEG degrees (seeded)");
     cmd->add_option("--twist-smoothing", a.options.twist_smoothing_frames, "Gaussian smoothing of the segment twist over time, sigma in frames");
     cmd->add_option("--seed", a.options.seed, "seed of mounting errors, realism draws and noise");

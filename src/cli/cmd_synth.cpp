@@ -7,6 +7,7 @@
 #include "cli/usage.hpp"
 #include "core/error.hpp"
 #include "core/output_path.hpp"
+#include "imu/realism.hpp"
 #include "pipeline/synth.hpp"
 
 namespace t2imu::cli {
@@ -75,8 +76,8 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--bodies", o.bodies, "body shapes (as imu synth --body)");
     cmd->add_option("--sensors", o.sensors, "placement sets (as imu synth --sensors)");
     cmd->add_option("--rate", o.rate_hz, "sensor sample rate, Hz");
-    cmd->add_option("--noise", o.noise, "sensor error model: none (default), smartphone, hugadb, sisfall, umafall [,key=value...]");
-    cmd->add_option("--realism", o.realism, "realism model: none (default), sisfall, umafall, hugadb, smartphone or FILE.toml");
+    cmd->add_option("--noise", o.noise, "the device's errors alone (the realism model's device key): none (default), smartphone, hugadb, sisfall, umafall [,key=value...]");
+    cmd->add_option("--realism", o.realism, realism_help());
     cmd->add_flag("--no-capture-rate{false}", o.capture_rate,
                   "the sensors see a retrieved captured clip at 20 fps, not at its capture rate (the dataset's capture_joints/)");
     cmd->add_flag("--no-filter", a.no_filter, "keep every motion (the quality filter is on by default)");

@@ -12,13 +12,6 @@ namespace t2imu {
 
 using Eigen::Vector3d;
 
-void BodyVibration::validate(const std::string& source) const {
-    if (!(gain >= 0 && gain <= 1)) throw Error(source, "vibration_gain", "0 (off) to 1", std::to_string(gain));
-    if (!(low_hz >= 0.1 && low_hz <= 100)) throw Error(source, "vibration_low_hz", "0.1 to 100 Hz", std::to_string(low_hz));
-    if (!(high_hz > low_hz && high_hz <= 200))
-        throw Error(source, "vibration_high_hz", "above vibration_low_hz, at most 200 Hz", std::to_string(high_hz));
-}
-
 namespace {
 
 // Centred moving mean over `width` samples, the edge samples repeated beyond the ends.

@@ -1,10 +1,10 @@
-// Body vibration (realism.hpp's vibration_gain, vibration_low_hz, vibration_high_hz): the broadband shaking a
+// Body vibration (realism.hpp's vibration lever): the broadband shaking a
 // worn device picks up and motion capture does not: the device rattling in its belt clip or strap, skin and fat
 // wobbling under it, footfalls travelling up the body. Captured markers are rigid clusters smoothed to 20-60 fps,
 // so a virtual sensor on them is smoother than any real one above a few Hz.
 //
 // Why this form: on the shared SisFall subjects (waist, 20 Hz, median per recording of each axis's sd in 5-10
-// Hz; README "Body vibration") the real board carries more there than the same retrieved motions through our
+// Hz; docs/realism.md, "Body vibration") the real board carries more there than the same retrieved motions through our
 // sensor with the `sisfall` preset in every class: walking lateral 1.03 against 0.63 m/s^2, stairs 0.58 / 0.31
 // (lateral) and 0.44 / 0.19 (forward), sitting down and standing up 0.10 / 0.03; and the missing amount grows
 // with how hard the body moves (on the lateral axis walking's about eight times sitting's). A stationary noise
@@ -33,9 +33,7 @@ struct BodyVibration {
     double gain = 0;        // vibration sd per m/s^2 of the motion's local rms level; 0 = off
     double low_hz = 5;      // band edges (Hz): the band where the real board exceeds ours most
     double high_hz = 12;
-    bool enabled() const { return gain > 0; }
-    // Throws Error naming `source` and the key (vibration_gain, ...) for a value out of range.
-    void validate(const std::string& source) const;
+    bool enabled() const { return gain > 0; }  // ranges: realism.cpp's table
 };
 
 // Adds the vibration to s->acc (sampled at s->rate_hz). Deterministic in `seed`.

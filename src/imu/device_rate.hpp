@@ -1,4 +1,4 @@
-// The device's own sample rate (realism.hpp's device_rate_hz). A real sensor samples at its rate, and whatever
+// The device's own sample rate (realism.hpp's rate lever). A real sensor samples at its rate, and whatever
 // its signal holds above half that rate folds into the band: UMAFall's SensorTags log at 20 Hz, so a jog's
 // footfalls (much of their power at 10-30 Hz at the waist) reach its recordings between 0 and 10 Hz. The virtual
 // sensor is sampled at the device's rate (imu_synthesis.hpp: point samples, or box means over each interval with

@@ -11,30 +11,14 @@
 // unchanged; only the sharpness of the landing comes back. It is what sets a sensor's attachment ringing
 // (soft_tissue.hpp).
 //
-// Landings: per foot, the first frame of a run of at least two frames in which the ankle moves slower than
-// kLandingSpeed (3-D, central difference), after a frame at which it moved faster: level walking, running and
-// stairs alike (no floor height is assumed). delta_v = gain x the segment's transmissibility, the same for every
-// landing: the size of a landing is not read from the motion, because a 20 fps foot path does not carry it.
-// Scaled by the ankle's landing speed, derived stair descents landed 3-4 times harder than level walks (waist
-// jerk 90-100 against 40-45 m/s^3), against real SisFall stair trials that are gentler than their walks (40
-// against 47 m/s^3, median per recording).
 #pragma once
 #include <Eigen/Core>
 #include <cstdint>
 #include <vector>
 
-#include "motion/joint_sequence.hpp"
+#include "motion/foot_landings.hpp"
 
 namespace t2imu {
-
-constexpr double kLandingSpeed = 1.0;  // m/s: a swinging foot moves at 2-6 m/s, a planted ankle rolls below this
-
-struct Landing {
-    double time_s;  // the moment of contact: half a frame before the first slow frame
-};
-
-// Every landing of either foot in a SMPL-22 motion, in time order.
-std::vector<Landing> detect_landings(const JointSequence& motion);
 
 // The share of the shank's landing transient that reaches a sensor on the segment of proximal joint `segment`
 // (SMPL-22): 1 foot and shank, 0.6 thigh, 0.4 pelvis, 0.35 spine, 0.3 chest and shoulders, 0.2 neck and head,

@@ -173,7 +173,7 @@ std::vector<SensorPlacement> parse_sensor_sets(const std::string& text) {
     return out;
 }
 
-SensorMount mount_sensor(const BodyModel& body, const SensorPlacement& placement, const Matrix3d& mounting_error, double tilt_deg) {
+SensorMount mount_sensor(const BodyModel& body, const SensorPlacement& placement, const Matrix3d& mounting_error, double tilt_down_deg) {
     SensorMount m;
     m.placement = placement;
     SurfacePoint surface;
@@ -205,8 +205,8 @@ SensorMount mount_sensor(const BodyModel& body, const SensorPlacement& placement
     // Tilt: about up x normal, which turns the normal towards -up (rest frame: Y up).
     const Vector3d tangent = Vector3d::UnitY().cross(surface.normal);
     if (tangent.norm() > 0.1) m.horizontal_tangent = tangent.normalized();
-    if (tilt_deg != 0 && m.horizontal_tangent.squaredNorm() > 0)
-        m.rest_from_sensor = Eigen::AngleAxisd(tilt_deg * M_PI / 180, m.horizontal_tangent).toRotationMatrix() * m.rest_from_sensor;
+    if (tilt_down_deg != 0 && m.horizontal_tangent.squaredNorm() > 0)
+        m.rest_from_sensor = Eigen::AngleAxisd(tilt_down_deg * M_PI / 180, m.horizontal_tangent).toRotationMatrix() * m.rest_from_sensor;
     return m;
 }
 

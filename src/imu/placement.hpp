@@ -56,7 +56,7 @@ std::vector<SensorPlacement> parse_sensor_sets(const std::string& text);
 
 // A placement resolved on one body: its anchor on the skin and the sensor's axes in rest body coordinates
 // (columns x, y, z), optionally turned by a mounting error (in the sensor frame) and tilted (realism.hpp: the
-// skin normal turned down by tilt_deg about the skin's horizontal tangent; none where the normal is vertical).
+// skin normal turned down by tilt_down_deg about the skin's horizontal tangent; none where the normal is vertical).
 struct SensorMount {
     SensorPlacement placement;
     BodyAnchor anchor;
@@ -68,7 +68,7 @@ struct SensorMount {
     Eigen::Vector3d horizontal_tangent_in_sensor() const { return rest_from_sensor.transpose() * horizontal_tangent; }
 };
 SensorMount mount_sensor(const BodyModel& body, const SensorPlacement& placement,
-                         const Eigen::Matrix3d& mounting_error = Eigen::Matrix3d::Identity(), double tilt_deg = 0);
+                         const Eigen::Matrix3d& mounting_error = Eigen::Matrix3d::Identity(), double tilt_down_deg = 0);
 
 // A random rotation about a uniformly distributed axis by an angle uniform in [-max_deg, max_deg].
 Eigen::Matrix3d random_mounting_error(double max_deg, uint64_t seed);

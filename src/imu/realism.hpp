@@ -1,89 +1,111 @@
-// The realism model: what stands between an ideal sensor bolted to a moving skeleton and a real recording,
-// in levers that are each seeded, switchable and measured on their own (README, "Sensor realism").
+// The realism model: what stands between an ideal sensor bolted to a moving skeleton and a real recording, in
+// levers that are each seeded, switchable and measured on their own (docs/realism.md).
 //
-//   tilt_deg, tilt_sd_deg  mounting tilt: the sensor turned about the skin's horizontal tangent so that its
-//                          outward normal points down by tilt_deg (a belt below a belly, a strap on a tapering
-//                          limb), drawn per recording from a normal distribution (mean, sd; degrees). No tilt
-//                          where the skin faces up or down.
-//   tissue_hz, tissue_damping
-//                          the attachment's spring-mass (soft_tissue.hpp); 0 Hz = bolted to the bone
-//   strap_hz, strap_damping
-//                          the device sliding along its belt or strap (the skin's horizontal tangent at the
-//                          sensor: across the belly for a belt at the front): a spring-mass in that direction
-//                          only, on top of the soft tissue (imu_synthesis.hpp); 0 Hz = none
-//   impact_gain, impact_ms landing transients (heel_strike.hpp): the velocity change of a landing at the shank
-//                          (m/s; transmissibility scales it to the sensor's segment) and the duration of a
-//                          landing (ms); gain 0 = none
-//   impact_size_sd, impact_horizontal_sd
-//                          how landings differ (heel_strike.hpp, LandingSpread): sd of the log of each one's
-//                          size, and of its horizontal components over its vertical one; 0 = all alike, upright
-//   tempo_sd               motion tempo: the motion is played at its frame rate times exp(N(0, tempo_sd)) per
-//                          recording: a uniform time warp, which keeps the path and scales every speed by the
-//                          same factor (1.0 leaves the motion as it is)
-//   roll_gain, roll_sigma_s
-//                          device roll (device_roll.hpp): the share of its segment's frontal-plane sway the device
-//                          rolls with (1 = bolted; 0 = level; negative = against it) and the Gaussian sd (s)
-//                          that separates sway from posture
-//   trunk_pitch_gain, trunk_yaw_gain, trunk_sigma_s
-//                          a device on the trunk (trunk_sway.hpp): the share of its segment's sway about the
-//                          left-right axis and the long axis the device turns with (1 = bolted; 0 = the slow part
-//                          only) and the Gaussian sd (s) that separates sway from heading and posture
-//   vibration_gain, vibration_low_hz, vibration_high_hz
-//                          body vibration (body_vibration.hpp): band-limited noise whose sd is gain x the
-//                          motion's local rms level, in [low_hz, high_hz]; gain 0 = none
-//   device                 the sensor's own errors: a sensor_noise.hpp model ("none", a preset, overrides)
-//   device_rate_hz         the device's own sample rate (device_rate.hpp): the sensor is sampled at it, what lies
-//                          above its Nyquist frequency folding into the band, and the recording is resampled to
-//                          the output rate; 0 = sampled at the output rate
+// One table holds the levers (realism.cpp, realism_levers()): per lever its name, the stage of
+// synthesize_body_imu it acts in (virtual_imu.hpp), its one-line physics, and its keys with unit, range, the
+// value that turns it off and the value it was calibrated or measured with. Reading a TOML file, validation, the
+// JSON record, the CLI help (realism_help) and the ablation's variants (`PRESET+LEVER-LEVER`) are all made from
+// that table, so a key's name is written there and nowhere else in the library.
 //
-// Presets (realism.cpp gives the figures each value rests on). The ablation on the shared SisFall subjects
-// (README, "Sensor realism") chose the levers: mounting tilt and the device model raised synthetic-only HAR,
-// landings (and their spread), soft tissue, the strap mode, the trunk sway, body vibration, tempo and device roll
-// lowered it or left it within its spread, so those are off in every preset:
+// Presets (realism.cpp gives the figures each value rests on). The ablations on the shared SisFall subjects
+// (docs/realism.md) chose the levers: mounting tilt and the device model raised synthetic-only HAR, the others
+// lowered it or left it within its spread, so they are off in every preset:
 //   none        everything off: the ideal sensor of the paper's pipeline
 //   sisfall     the SisFall belt board at the waist: tilt calibrated on the shared SisFall subjects, device sisfall
 //   umafall     UMAFall's SensorTags: tilt spread calibrated on the shared UMAFall subjects, device umafall
 //   hugadb      HuGaDB's leg straps: not calibrated (the shared copy has no waist sensor), device hugadb
 //   smartphone  RealWorld's phones: not calibrated (no RealWorld data), device smartphone
-// A TOML file (`--realism my.toml`) names the same keys, with `base = "PRESET"` to start from a preset; an
-// unknown key is refused.
+//
+// Spelling a model (`--realism`, the `realism` of an experiment's [synth] and [[real]]):
+//   PRESET                       a preset above
+//   PRESET+LEVER-LEVER...        the preset with each +LEVER at its calibrated values and each -LEVER off
+//                                (e.g. sisfall+strap+vibration, sisfall-device: the tilt alone)
+//   FILE.toml                    `base = "PRESET"` (default none) and any keys of the table; an unknown key is
+//                                refused
 #pragma once
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "body/trunk_sway.hpp"
 #include "imu/body_vibration.hpp"
-#include "imu/device_roll.hpp"
 #include "imu/heel_strike.hpp"
 #include "imu/soft_tissue.hpp"
-#include "imu/trunk_sway.hpp"
 
 namespace t2imu {
 
+// The mounting tilt: the sensor turned about the skin's horizontal tangent so that its outward normal points
+// down (a belt below a belly, a strap on a tapering limb), drawn per recording from a normal distribution.
+struct MountingTilt {
+    double mean_deg = 0, sd_deg = 0;
+};
+
+// Landing transients (heel_strike.hpp): the velocity change of a landing at the shank (m/s) and its duration.
+struct LandingTransients {
+    double gain_m_s = 0;  // 0 = off
+    double duration_ms = 40;
+    LandingSpread spread;
+    bool enabled() const { return gain_m_s > 0; }
+};
+
 struct RealismModel {
     std::string name = "none";
-    double tilt_deg = 0, tilt_sd_deg = 0;
+    double tempo_log_sd = 0;  // sd of the log of the per-recording time warp; 0 = the motion as captured
+    TrunkSway trunk;
+    MountingTilt tilt;
     SoftTissue tissue;
     SoftTissue strap;
-    double impact_gain = 0, impact_ms = 40;
-    LandingSpread impact_spread;
-    double tempo_sd = 0;
-    DeviceRoll roll;
-    TrunkSway trunk;
+    LandingTransients landings;
     BodyVibration vibration;
-    std::string device = "none";
-    double device_rate_hz = 0;
+    std::string device = "none";   // a sensor_noise.hpp model: "none", a preset, overrides
+    double device_sample_rate_hz = 0;  // 0 = sampled at the output rate (device_rate.hpp)
 
     // Throws Error naming `source` and the key for a value out of range.
     void validate(const std::string& source) const;
     nlohmann::json to_json() const;
 };
 
+// The stages of synthesize_body_imu, in the order they run (virtual_imu.hpp).
+enum class RealismStage { motion, body, mount, attachment, signal, device };
+const char* realism_stage_name(RealismStage stage);
+
+struct RealismKey {
+    const char* key;   // the TOML / JSON key
+    const char* unit;  // "" for a ratio or a name
+    double lo, hi;     // the valid range (numbers)
+    bool zero_is_off;  // 0 is valid besides [lo, hi]
+    bool whole;        // a whole number
+    double off, on;    // the value that turns the lever off; the value it was calibrated or measured with
+    double& (*number)(RealismModel&);       // null for the device model's name
+    std::string& (*text)(RealismModel&);    // the device model's name (off "none", on `text_on`)
+    const char* text_on;
+};
+
+struct RealismLever {
+    const char* name;
+    RealismStage stage;
+    const char* physics;  // one line
+    std::vector<RealismKey> keys;
+    bool (*enabled)(const RealismModel&);
+    // Checks that tie its keys together (beyond each key's range), naming `source`; may be null.
+    void (*check)(const RealismModel&, const std::string& source);
+};
+
+const std::vector<RealismLever>& realism_levers();
+// The lever of that name (a name of the table; a programming error otherwise).
+const RealismLever& realism_lever(const std::string& name);
+// The --realism help: how to spell a model, the presets, and every lever with its stage, keys, units and ranges.
+std::string realism_help();
+
 const std::vector<std::string>& realism_preset_names();
 RealismModel realism_preset(const std::string& name);  // errors name --realism
 RealismModel parse_realism_toml(const std::string& text, const std::string& source);
-// A preset name or a .toml file's path (errors name --realism or the file).
+// PRESET, PRESET+LEVER-LEVER or a .toml file's path (errors name --realism or the file).
 RealismModel parse_realism(const std::string& text);
+// A model's JSON record (to_json) with the keys a record made before a lever was added or retired would lack or
+// hold: added keys read as their lever off, a retired lever's keys are dropped when they record it off (a record
+// of a retired lever on is returned as it is, so it compares unequal to any model of today).
+nlohmann::json realism_record_as_today(const nlohmann::json& recorded);
 
 // Per recording draws, deterministic in the seed.
 double draw_tilt_deg(const RealismModel& model, uint64_t seed);

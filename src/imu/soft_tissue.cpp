@@ -2,18 +2,9 @@
 
 #include <cmath>
 
-#include "core/error.hpp"
-
 namespace t2imu {
 
 using Eigen::Vector3d;
-
-void SoftTissue::validate(const std::string& source, const std::string& key) const {
-    if (!(frequency_hz == 0 || (frequency_hz >= 1 && frequency_hz <= 200)))
-        throw Error(source, key + "_hz", "0 (rigid) or 1 to 200 Hz", std::to_string(frequency_hz));
-    if (enabled() && !(damping_ratio > 0 && damping_ratio <= 2))
-        throw Error(source, key + "_damping", "a damping ratio in (0, 2]", std::to_string(damping_ratio));
-}
 
 SpringMassResponse spring_mass_response(const std::vector<Vector3d>& base, double dt, const SoftTissue& tissue) {
     const size_t n = base.size();

@@ -11,7 +11,6 @@
 // frequency_hz sqrt(1 - zeta^2), decaying by exp(-zeta omega t).
 #pragma once
 #include <Eigen/Core>
-#include <string>
 #include <vector>
 
 namespace t2imu {
@@ -19,10 +18,7 @@ namespace t2imu {
 struct SoftTissue {
     double frequency_hz = 0;   // natural frequency of the attachment (Hz); 0 = rigid (bolted to the bone)
     double damping_ratio = 0;  // zeta, 0 < zeta < 1 for an attachment that rings
-    bool enabled() const { return frequency_hz > 0; }
-    // Throws Error naming `source` and the field (`key`_hz, `key`_damping): frequency 0 or 1-200 Hz, damping in
-    // (0, 2].
-    void validate(const std::string& source, const std::string& key = "tissue") const;
+    bool enabled() const { return frequency_hz > 0; }  // ranges: realism.cpp's table
 };
 
 // The relative motion of the mass for a base acceleration sampled every dt seconds (input linear between

@@ -4,9 +4,12 @@
 #include <cmath>
 
 #include "body/procedural_body.hpp"
+#include "body/trunk_sway.hpp"
 #include "core/error.hpp"
 #include "core/hash.hpp"
+#include "imu/body_vibration.hpp"
 #include "imu/device_rate.hpp"
+#include "motion/foot_landings.hpp"
 
 namespace t2imu {
 
@@ -49,7 +52,7 @@ void sensor_track(const BodyModel& body, const FittedMotion& motion, const Senso
     }
 }
 
-SensorNoiseModel VirtualImuOptions::device() const { return noise.enabled() ? noise : parse_noise_model(realism.device); }
+SensorNoiseModel VirtualImuOptions::device() const { return parse_noise_model(realism.device); }
 
 void VirtualImuOptions::validate() const {
     if (!(rate_hz > 0 && rate_hz <= 2000)) throw Error("--rate", "rate", "0 < HZ <= 2000", std::to_string(rate_hz));
@@ -58,11 +61,58 @@ void VirtualImuOptions::validate() const {
     if (!(twist_smoothing_frames >= 0 && twist_smoothing_frames <= 1000))
         throw Error("--twist-smoothing", "sigma", "0 to 1000 frames", std::to_string(twist_smoothing_frames));
     realism.validate("--realism " + realism.name);
-    if (realism.device_rate_hz > 0 && rate_hz != std::round(rate_hz))
-        throw Error("--rate", "rate", "a whole number of Hz with a realism model's device_rate_hz", std::to_string(rate_hz));
-    if (noise.enabled() && realism.device != "none")
-        throw Error("--noise", "model", "--noise none with --realism " + realism.name + " (its device model is " + realism.device + ")", noise.name);
+    if (realism.device_sample_rate_hz > 0 && rate_hz != std::round(rate_hz))
+        throw Error("--rate", "rate", "a whole number of Hz with a realism model's device rate", std::to_string(rate_hz));
 }
+
+void fold_noise_option(const std::string& noise, RealismModel* realism) {
+    const SensorNoiseModel model = parse_noise_model(noise);  // errors name --noise
+    if (!model.enabled()) return;
+    if (realism->device != "none")
+        throw Error("--noise", "model", "--noise none with --realism " + realism->name + " (its device model is " + realism->device + ")", noise);
+    realism->device = noise;
+}
+
+namespace {
+
+// The stages of the realism chain (realism.hpp's RealismStage), each a function, in the order they run.
+
+// motion: the realism model's edits of the motion itself, before any body: the tempo's uniform time warp (the same
+// path at tempo x the speed) and the foot landings the attachment stage sharpens.
+struct MotionStage {
+    JointSequence timed;
+    double tempo = 1;
+    std::vector<Landing> landings;
+};
+MotionStage motion_stage(const JointSequence& motion, const RealismModel& realism, uint64_t seed) {
+    MotionStage m{motion, draw_tempo(realism, seed), {}};
+    m.timed.fps = motion.fps * m.tempo;
+    if (realism.landings.enabled()) m.landings = detect_landings(m.timed);
+    return m;
+}
+
+// body: the fitted frames a sensor on `segment` rides on: its own re-posed copy when the trunk sway turns its
+// segment, else the body's fit.
+const FittedMotion& body_stage(const FittedMotion& fitted, const RealismModel& realism, int segment, double fps, FittedMotion* own) {
+    if (!realism.trunk.enabled() || !is_trunk_segment(segment)) return fitted;
+    *own = fitted;
+    apply_trunk_sway(realism.trunk, segment, fps, &own->frames);
+    return *own;
+}
+
+// attachment: what lies between the body point and the sensor (soft tissue, the strap's run, landing pulses).
+AttachmentDynamics attachment_stage(const RealismModel& realism, const MotionStage& motion, const SensorMount& mount, uint64_t seed) {
+    AttachmentDynamics d;
+    d.tissue = realism.tissue;
+    d.strap = realism.strap;
+    d.strap_axis = mount.horizontal_tangent_in_sensor();
+    if (!motion.landings.empty())
+        d.impacts = impact_pulses(motion.landings, realism.landings.gain_m_s, realism.landings.duration_ms / 1000, mount.placement.segment,
+                                  motion.timed.fps, realism.landings.spread, seed);
+    return d;
+}
+
+}  // namespace
 
 BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& spec, const std::vector<SensorPlacement>& sensors,
                             const VirtualImuOptions& options) {
@@ -74,43 +124,32 @@ BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& spec, c
     if (none) build.kind = BodySpec::Kind::procedural;
     const std::unique_ptr<BodyModel> body = make_body(build);
     const RealismModel& realism = options.realism;
-    out.tempo = draw_tempo(realism, derived_seed(options.seed, {out.body.name, "", "tempo"}));
-    JointSequence timed = motion;
-    timed.fps = motion.fps * out.tempo;  // a uniform time warp: the same path at tempo x the speed
+    const auto seed = [&](const std::string& position, const char* draw) { return derived_seed(options.seed, {out.body.name, position, draw}); };
+    const MotionStage timed = motion_stage(motion, realism, seed("", "tempo"));
+    out.tempo = timed.tempo;
     FitOptions fit;
     fit.keep_input_joints = none;
     fit.twist_smoothing_frames = options.twist_smoothing_frames;
-    const FittedMotion fitted = fit_body(timed, *body, fit);
+    const FittedMotion fitted = fit_body(timed.timed, *body, fit);
     out.leg_scale = fitted.leg_scale;
     out.mean_error_mm = fitted.mean_error_mm;
     out.max_error_mm = fitted.max_error_mm;
-    const std::vector<Landing> landings = realism.impact_gain > 0 ? detect_landings(timed) : std::vector<Landing>();
     const SensorNoiseModel device = options.device();
+    const double sample_rate = realism.device_sample_rate_hz > 0 ? realism.device_sample_rate_hz : options.rate_hz;
     std::vector<Vector3d> p;
     std::vector<Quat> q;
     for (const SensorPlacement& placement : sensors) {
-        const Matrix3d jitter = random_mounting_error(options.mount_jitter_deg, derived_seed(options.seed, {out.body.name, placement.position, "mount"}));
-        const double tilt = draw_tilt_deg(realism, derived_seed(options.seed, {out.body.name, placement.position, "tilt"}));
-        out.mounts.push_back(mount_sensor(*body, placement, jitter, tilt));
-        out.tilt_deg.push_back(tilt);
-        FittedMotion swayed;  // a trunk sensor's own copy of the frames when the trunk sway is on
-        if (realism.trunk.enabled() && is_trunk_segment(placement.segment)) {
-            swayed = fitted;
-            apply_trunk_sway(realism.trunk, placement.segment, timed.fps, &swayed.frames);
-        }
-        sensor_track(*body, swayed.frames.empty() ? fitted : swayed, out.mounts.back(), &p, &q);
-        apply_device_roll(realism.roll, out.mounts.back(), timed.fps, &q);
-        AttachmentDynamics dynamics;
-        dynamics.tissue = realism.tissue;
-        dynamics.strap = realism.strap;
-        dynamics.strap_axis = out.mounts.back().horizontal_tangent_in_sensor();
-        if (!landings.empty())
-            dynamics.impacts = impact_pulses(landings, realism.impact_gain, realism.impact_ms / 1000, placement.segment, timed.fps,
-                                             realism.impact_spread, derived_seed(options.seed, {out.body.name, placement.position, "landings"}));
-        const double sample_rate = realism.device_rate_hz > 0 ? realism.device_rate_hz : options.rate_hz;
-        ImuSignals s = synthesize_imu(p, q, timed.fps, sample_rate, dynamics);
-        add_body_vibration(realism.vibration, derived_seed(options.seed, {out.body.name, placement.position, "vibration"}), &s);
-        apply_sensor_noise(device, derived_seed(options.seed, {out.body.name, placement.position, "noise"}), &s);
+        FittedMotion own;
+        const FittedMotion& frames = body_stage(fitted, realism, placement.segment, timed.timed.fps, &own);
+        // mount: on the skin, with the mounting error and the realism model's tilt.
+        const Matrix3d jitter = random_mounting_error(options.mount_jitter_deg, seed(placement.position, "mount"));
+        out.mount_tilts_deg.push_back(draw_tilt_deg(realism, seed(placement.position, "tilt")));
+        out.mounts.push_back(mount_sensor(*body, placement, jitter, out.mount_tilts_deg.back()));
+        sensor_track(*body, frames, out.mounts.back(), &p, &q);
+        const AttachmentDynamics dynamics = attachment_stage(realism, timed, out.mounts.back(), seed(placement.position, "landings"));
+        ImuSignals s = synthesize_imu(p, q, timed.timed.fps, sample_rate, dynamics);
+        add_body_vibration(realism.vibration, seed(placement.position, "vibration"), &s);  // signal
+        apply_sensor_noise(device, seed(placement.position, "noise"), &s);                 // device
         out.signals.push_back(resample_imu_signals(s, options.rate_hz));
     }
     return out;
@@ -160,7 +199,7 @@ nlohmann::json virtual_imu_meta(const std::vector<BodyImu>& bodies, const JointS
                                  {"rest_axes", {{"x", vec(m.rest_from_sensor.col(0))}, {"y", vec(m.rest_from_sensor.col(1))},
                                                 {"z", vec(m.rest_from_sensor.col(2))}}}};
             if (m.anchor.vertex >= 0) pj["vertex"] = m.anchor.vertex;
-            if (k < b.tilt_deg.size()) pj["tilt_deg"] = b.tilt_deg[k];
+            if (k < b.mount_tilts_deg.size()) pj[realism_lever("tilt").keys[0].key] = b.mount_tilts_deg[k];  // the drawn tilt_deg
             placements.push_back(pj);
         }
         body["placements"] = placements;

@@ -3,13 +3,14 @@
 // For each body: fit the body to the joints (fitting.hpp), mount every placement on its skin
 // (placement.hpp), follow each sensor's position and orientation through the motion, and turn those into
 // accelerometer and gyroscope signals at the output rate (imu_synthesis.hpp), optionally corrupted by the
-// sensor error model (sensor_noise.hpp) and the realism model (realism.hpp). The realism chain, in order: tempo
-// (a time warp of the joints, before fitting); per sensor, the mounting tilt; the trunk sway (trunk_sway.hpp, on a
-// copy of the fitted frames) and the device roll (device_roll.hpp) on the sensor's track; the attachment's
-// dynamics and landing transients while the signals are computed (imu_synthesis.hpp) at the device's rate;
-// body vibration (body_vibration.hpp); the device's errors (sensor_noise.hpp); resampling to the output rate
-// (device_rate.hpp). Random parts (mounting errors, tilt, tempo, landings, vibration, noise) are seeded per body
-// (and sensor) from one seed, so the output does not depend on which other bodies or sensors were asked for.
+// device's errors and the realism model (realism.hpp). The realism chain runs in stages (realism.hpp's
+// RealismStage), each a function of virtual_imu.cpp: motion (the tempo's time warp, the foot landings, before
+// fitting), body (the trunk sway re-poses a trunk sensor's copy of the fitted frames), mount (the mounting error and
+// tilt), attachment (soft tissue, the strap, landing pulses, while the signals are computed at the device's rate,
+// imu_synthesis.hpp), signal (body vibration), device (the device's errors, sensor_noise.hpp, and resampling to
+// the output rate, device_rate.hpp). Random parts (mounting errors, tilt, tempo, landings, vibration, noise) are
+// seeded per body (and sensor) from one seed, so the output does not depend on which other bodies or sensors were
+// asked for.
 #pragma once
 #include <nlohmann/json.hpp>
 #include <string>
@@ -26,22 +27,25 @@ struct VirtualImuOptions {
     double rate_hz = 50;
     double mount_jitter_deg = 0;
     uint64_t seed = 0;
-    SensorNoiseModel noise;          // --noise; the realism model's device when that is "none"
     RealismModel realism;            // --realism (realism.hpp); "none" = the ideal sensor
     double twist_smoothing_frames = 0;
 
-    // The device error model in effect: --noise, or else the realism model's device.
+    // The device error model in effect: the realism model's device.
     SensorNoiseModel device() const;
     // Throws Error naming the option (--rate, --mount-jitter, --twist-smoothing, --realism) for a value out of
-    // range, and for a device error model given both by --noise and by the realism model.
+    // range.
     void validate() const;
 };
+
+// `--noise MODEL`: the realism model's device, given on its own (sensor_noise.hpp). "none" leaves `realism` as it
+// is; a model where the realism model already names a device is refused (errors name --noise).
+void fold_noise_option(const std::string& noise, RealismModel* realism);
 
 struct BodyImu {
     BodySpec body;  // as used: --body none is given the height and mass it was sized to
     double leg_scale = 1;
     double tempo = 1;  // the realism model's time warp of this recording (1 = as captured)
-    std::vector<double> tilt_deg;  // per mount: the realism model's tilt
+    std::vector<double> mount_tilts_deg;  // per mount: the realism model's tilt (degrees)
     std::array<double, smpl22::kNumJoints> mean_error_mm{}, max_error_mm{};
     std::vector<SensorMount> mounts;
     std::vector<ImuSignals> signals;  // one per mount

@@ -191,7 +191,7 @@ void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt&
                 write_imu_recording(o.out + "/" + path, r.signals[s]);
                 marker["recordings"].push_back({{"path", path}, {"body", r.body.name}, {"position", r.mounts[s].placement.position},
                                                 {"n_samples", r.signals[s].t.size()}, {"bytes", fs::file_size(o.out + "/" + path)},
-                                                {"tempo", r.tempo}, {"tilt_deg", r.tilt_deg[s]}});
+                                                {"tempo", r.tempo}, {realism_lever("tilt").keys[0].key, r.mount_tilts_deg[s]}});
             }
         }
     }
@@ -253,9 +253,7 @@ json settings_json(const SynthOptions& o, const std::vector<Prompt>& prompts, co
 json recorded_setting(const json& before, const std::string& key) {
     json recorded = before.value(key, json());
     if (key != "realism" || !recorded.is_object()) return recorded;
-    json filled = RealismModel().to_json();
-    filled.update(recorded);
-    return filled;
+    return realism_record_as_today(recorded);
 }
 
 void check_or_write_settings(const std::string& out, const json& settings) {
@@ -291,8 +289,8 @@ void SynthOptions::validate() const {
     if (max_retries < 0) throw Error("synth", "--retries", "0 or more", std::to_string(max_retries));
     VirtualImuOptions imu;
     imu.rate_hz = rate_hz;
-    imu.noise = parse_noise_model(noise);
     imu.realism = parse_realism(realism);
+    fold_noise_option(noise, &imu.realism);
     imu.validate();
     if (!(min_activity_agreement >= 0 && min_activity_agreement <= 1))
         throw Error("synth", "--min-activity-agreement", "0 to 1", std::to_string(min_activity_agreement));
@@ -386,8 +384,8 @@ json run_synth(const SynthOptions& o) {
     const std::vector<Prompt> prompts = read_prompt_set(o.prompts, PromptActivity::required);
     Stage stage{parse_body_specs(o.bodies), parse_sensor_sets(o.sensors), {}};
     stage.imu.rate_hz = o.rate_hz;
-    stage.imu.noise = parse_noise_model(o.noise);
     stage.imu.realism = parse_realism(o.realism);
+    fold_noise_option(o.noise, &stage.imu.realism);
     stage.imu.seed = o.sampling.seed;
     auto t0 = Clock::now();
     std::unique_ptr<MotionSource> source = open_motion_source(o.model, o.sampling, o.device, o.vocab, o.activity_reference);

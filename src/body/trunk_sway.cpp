@@ -1,4 +1,4 @@
-#include "imu/trunk_sway.hpp"
+#include "body/trunk_sway.hpp"
 
 #include <Eigen/Geometry>
 

@@ -5,7 +5,7 @@
 // spine counter-rotates against the pelvis in the transverse plane and damps its tilt in the sagittal one
 // (Crosbie, Vachalathiti & Smith 1997, Gait & Posture 5:6-12), while the pelvis segment of a capture carries
 // the full rotation of the hip line. Measured on the shared SisFall walking trials (`t2imu analysis signal-stats`,
-// gyr_sway_sd: median per recording of each gyroscope axis's sd in 0.5-3 Hz; README, "The trunk's sway"): the
+// gyr_sway_sd: median per recording of each gyroscope axis's sd in 0.5-3 Hz; docs/realism.md, "The trunk's sway"): the
 // real board turns 0.14 rad/s about its lateral axis and 0.38 about the vertical one, ours on the captured
 // pelvis 0.30 and 0.54 (preset sisfall); pitch 0.35 and yaw 0.6 give 0.11 and 0.32. The gain is no constant of
 // the belt: the captured running turns less than the real one (yaw 0.52 against 0.67) and UMAFall's waist tag
@@ -15,7 +15,8 @@
 // The edit: the segment's rotation (world from rest) R is split into its slow part S (a Gaussian low-pass of
 // the sign-continuous quaternion, sd `sigma_s`: heading, posture, lying down) and its sway W = S^T R, a
 // rotation in the segment's rest axes (X left, Y up along the trunk, Z front); W's rotation vector is scaled
-// by pitch_gain about X and yaw_gain about Y (Z, the frontal-plane roll, is device_roll.hpp's). The sensor
+// by pitch_gain about X and yaw_gain about Y (Z, the frontal-plane roll, is left as it is: a lever scaling it lowered HAR and raised the two-sample
+// accuracy, docs/realism.md, and was retired). The sensor
 // then rides on S W': its orientation and its position about the segment's proximal joint both follow, so the
 // lever arm's tangential acceleration shrinks with the turn. Gains 1 leave the segment as it is.
 #pragma once
