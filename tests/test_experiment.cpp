@@ -98,6 +98,11 @@ TEST(Experiment, RunsEveryStepAndResumesWithMoreRepeats) {
         }
         const nlohmann::json gap = nlohmann::json::parse(read_file_text(out + "/gap/" + id + ".json"));
         EXPECT_EQ(row["two_sample_balanced_accuracy"], gap["classifier_two_sample_test"]["balanced_accuracy"]);
+        // Signal statistics of the set's one position, synthetic beside real, for the classes both hold.
+        const nlohmann::json stats = nlohmann::json::parse(read_file_text(out + "/signal-stats/" + id + "-waist.json"));
+        EXPECT_TRUE(stats.contains("walking")) << id;
+        EXPECT_GT(stats["walking"]["mag_sd"]["real"].get<double>(), 0) << id;
+        EXPECT_GT(stats["walking"]["mag_sd"]["synthetic"].get<double>(), 0) << id;
     }
     // Two sources are the same model with the same seeds: the same synthetic set, byte for byte.
     EXPECT_EQ(read_file_text(out + "/features/tiny-fake.csv"), read_file_text(out + "/features/same-fake.csv"));

@@ -6,6 +6,7 @@
 // them refused.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 
 #include "core/atomic_file.hpp"
@@ -14,6 +15,7 @@
 #include "test_util.hpp"
 
 using namespace t2imu;
+namespace fs = std::filesystem;
 
 namespace {
 const char* kMinimal =
@@ -175,6 +177,16 @@ TEST(ExperimentConfig, ShippedConfigsReadAndEditsAreRefused) {
     EXPECT_EQ(c.synth.realism, "none");  // the paper's pipeline: the ideal sensor
     const ExperimentConfig coverage = read_experiment_config(std::string(T2IMU_SOURCE_DIR) + "/experiments/coverage.toml");
     EXPECT_EQ(coverage.real_sets[0].realism, "sisfall");
+    // The realism ablation: one [[real]] variant per lever, each spelled from the realism table.
+    const ExperimentConfig ablation = read_experiment_config(std::string(T2IMU_SOURCE_DIR) + "/experiments/realism-ablation.toml");
+    ASSERT_EQ(ablation.real_sets.size(), 11u);
+    EXPECT_EQ(ablation.real_sets[1].realism, "sisfall-device");
+    for (const ExperimentRealSet& set : ablation.real_sets) EXPECT_EQ(set.dataset, "cache/imu/sisfall") << set.name;
+    // Every experiment configuration in experiments/ reads (the training configs hold no [[real]]).
+    for (const auto& e : fs::directory_iterator(std::string(T2IMU_SOURCE_DIR) + "/experiments")) {
+        if (e.path().extension() != ".toml" || read_file_text(e.path().string()).find("[[real]]") == std::string::npos) continue;
+        EXPECT_NO_THROW(read_experiment_config(e.path().string())) << e.path();
+    }
 
     const std::string dir = test::scratch_dir("experiment_config");
     const std::string base = read_file_text(std::string(T2IMU_SOURCE_DIR) + "/experiments/paper.toml");

@@ -12,6 +12,7 @@
 #include "analysis/catch22_table.hpp"
 #include "analysis/domain_gap.hpp"
 #include "analysis/lacc_analysis.hpp"
+#include "analysis/signal_statistics.hpp"
 #include "analysis/tsne_table.hpp"
 #include "core/atomic_file.hpp"
 #include "core/csv.hpp"
@@ -52,6 +53,7 @@ public:
                 if (r.set == &set) {
                     features(path("features/" + r.id() + ".csv"), path("synth/" + r.id()), set);
                     domain_gap_of(r);
+                    signal_statistics_of(r);
                 }
             tsne_of(set);
         }
@@ -115,6 +117,20 @@ private:
                                               read_csv(path("features/" + r.id() + ".csv")), c_.feature_seed);
         write_file_atomic(file, gap.dump(2) + "\n");
         say("two-sample test " + r.id() + ": balanced accuracy " + std::to_string(gap["classifier_two_sample_test"]["balanced_accuracy"].get<double>()));
+    }
+
+    // The level and texture statistics of each position, synthetic beside real, per activity (HAR's rate).
+    void signal_statistics_of(const Row& r) {
+        for (const std::string& position : r.set->positions) {
+            const std::string file = path("signal-stats/" + r.id() + "-" + position + ".json");
+            if (fs::exists(file)) continue;
+            SignalStatisticsOptions o;
+            o.position = position;
+            o.rate_hz = c_.windows.rate_hz;
+            const nlohmann::json stats = compare_signal_statistics(read_imu_dataset(r.set->dataset), read_imu_dataset(path("synth/" + r.id())), o);
+            write_file_atomic(file, stats.dump(2) + "\n");
+            say("signal statistics " + r.id() + " at " + position + ": " + file);
+        }
     }
 
     // At most tsne_points windows per group (real, then each source in config order), drawn with a seeded shuffle.

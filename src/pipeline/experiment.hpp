@@ -4,6 +4,8 @@
 //     t2imu synth on that data set's prompt set and sensor placement        -> synth/<source>-<set>/
 //     catch22 of every real and synthetic window                            -> features/{real,<source>}-<set>.csv
 //     real vs synthetic: classifier two-sample test, per-feature distances  -> gap/<source>-<set>.json
+//     level and texture statistics per activity, real beside synthetic,
+//     at each of the set's positions (analysis/signal_statistics.hpp)       -> signal-stats/<source>-<set>-<position>.json
 //     DeepConvLSTM trained only on the synthetic set, tested on the real one,
 //     one training per seed (har.repeats of them)                           -> runs/<source>-<set>/seed-<k>.jsonl
 //                                                                              merged: har/<source>-<set>.json
