@@ -5,7 +5,6 @@
 #include <complex>
 #include <random>
 
-#include "core/error.hpp"
 #include "core/signal/fft.hpp"
 
 namespace t2imu {

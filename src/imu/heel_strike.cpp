@@ -1,6 +1,5 @@
 #include "imu/heel_strike.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <random>
 

@@ -3,8 +3,9 @@
 //
 // Landings: per foot, the first frame of a run of at least two frames in which the ankle moves slower than
 // kLandingSpeed (3-D, central difference), after a frame at which it moved faster: level walking, running and
-// stairs alike (no floor height is assumed). The transients' size (heel_strike.hpp): delta_v = gain x the segment's transmissibility, the same for every
-// landing: the size of a landing is not read from the motion, because a 20 fps foot path does not carry it.
+// stairs alike (no floor height is assumed). The transients' size (heel_strike.hpp) is gain x the segment's
+// transmissibility, the same for every landing: the size of a landing is not read from the motion, because a
+// 20 fps foot path does not carry it.
 // Scaled by the ankle's landing speed, derived stair descents landed 3-4 times harder than level walks (waist
 // jerk 90-100 against 40-45 m/s^3), against real SisFall stair trials that are gentler than their walks (40
 // against 47 m/s^3, median per recording).
