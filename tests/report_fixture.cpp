@@ -79,7 +79,7 @@ ImuRecording sine_recording(const std::string& path, const std::string& activity
 
 namespace {
 
-// A job marker's recordings list (report/job_marker.hpp's schema): 4 s at 64 Hz each.
+// A job marker's recordings list (report/synth_folder.hpp's schema): 4 s at 64 Hz each.
 nlohmann::json recordings(const std::string& job, const std::vector<std::pair<std::string, std::string>>& body_positions) {
     nlohmann::json list = nlohmann::json::array();
     for (const auto& [body, position] : body_positions)
@@ -107,7 +107,7 @@ void write_synth_fixture(const std::string& dir) {
                             sine_recording("recordings/j00000/b0/chest.csv", "walking", "chest", 1, 2),
                             sine_recording("recordings/j00001/b0/waist.csv", "running", "waist", 4, 3)});
     write_file_atomic(dir + "/synth_report.json",
-                      R"({"jobs":3,"jobs_done":3,"motions_kept":2,"jobs_regenerated":1,"recordings":4,)"
+                      R"({"jobs":3,"jobs_done":3,"motions_kept":2,"motions_dropped":1,"jobs_regenerated":1,"recordings":4,"failed_attempts_by_score":{},"quality_median":{},)"
                       R"("per_activity":{"running":{"kept":1,"kept_below_activity_agreement":1,"dropped":0,"shown":{"walking":1}},)"
                       R"("walking":{"kept":1,"kept_below_activity_agreement":0,"dropped":1,"shown":{"walking":1}}},)"
                       R"("this_run":{"jobs_run":3,"total_s":2.5,"motion_generation_s":2.0,"bodies_imu_write_s":0.4,"device":"cpu"}})");

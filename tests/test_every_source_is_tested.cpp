@@ -42,7 +42,6 @@ const std::map<std::string, Coverage> kCoveredBy = {
     {"motion/skeleton", {"test_foot_contacts.cpp", "#include \"motion/skeleton.hpp\""}},
     {"report/html_page", {"test_report.cpp", "#include \"report/html_page.hpp\""}},
     {"report/html_report", {"test_report.cpp", "#include \"report/html_report.hpp\""}},
-    {"report/job_marker", {"test_synth.cpp", "a marker cut short"}},
     {"report/pose_strip", {"test_report.cpp", "#include \"report/pose_strip.hpp\""}},
     {"report/signal_stats", {"test_report.cpp", "#include \"report/signal_stats.hpp\""}},
     {"text/clip_bpe", {"test_clip.cpp", "#include \"text/clip_bpe.hpp\""}},

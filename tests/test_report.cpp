@@ -140,7 +140,7 @@ TEST(Report, DrawsEveryRecognisedResultIntoOnePage) {
     write_file_atomic(in + "/imu/chest.csv", trace);
     write_file_atomic(in + "/notes.json", "not json");  // ignored
     write_file_atomic(in + "/synth/synth_report.json",
-                      R"({"jobs":10,"jobs_done":10,"motions_kept":9,"jobs_regenerated":2,"recordings":63,)"
+                      R"({"jobs":10,"jobs_done":10,"motions_kept":9,"motions_dropped":1,"jobs_regenerated":2,"recordings":63,"failed_attempts_by_score":{},"quality_median":{},)"
                       R"("per_activity":{"walking":{"kept":9,"kept_below_activity_agreement":2,"dropped":1}},)"
                       R"("this_run":{"jobs_run":10,"total_s":7.5,"motion_generation_s":6.0,"bodies_imu_write_s":1.2,"device":"cpu"}})");
     const auto r = test::run_cli("report --in " + in + " --out " + dir + "/report");

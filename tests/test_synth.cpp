@@ -84,7 +84,7 @@ double max_difference(const std::string& a, const std::string& b) {
 
 TEST(Synth, WritesAnImuDatasetWithItsMotions) {
     const std::string out = test::scratch_dir("synth_full");
-    const nlohmann::json r = run_synth(tiny_options(out));
+    const nlohmann::json r = synth_report_json(run_synth(tiny_options(out)));
     EXPECT_EQ(r["jobs"], 4);
     EXPECT_EQ(r["motions_kept"], 4);
     const std::vector<ImuRecording> recs = read_imu_dataset(out);  // loads and checks every CSV
@@ -121,7 +121,7 @@ TEST(Synth, ResumeRedoesOnlyUnfinishedJobs) {
     fs::remove(csv_of(out, "j00002", "female_short"));
     const std::string temporary = fs::path(csv_of(out, "j00002", "male_average")).parent_path().string() + "/.waist.csv.tmp999999999";
     std::ofstream(temporary) << "t,acc_x\n0,";  // a write the kill cut short
-    const nlohmann::json r = run_synth(tiny_options(out));
+    const nlohmann::json r = synth_report_json(run_synth(tiny_options(out)));
     EXPECT_EQ(r["this_run"]["jobs_run"], 1);
     // Redone in its own batch (jobs 0-2, drawn whole), so with the very bytes of the uninterrupted run.
     EXPECT_EQ(read_file_text(csv_of(out, "j00002", "female_short")), read_file_text(before));
@@ -141,7 +141,7 @@ TEST(Synth, ResumeRedoesFinishedJobsWhoseFilesWentMissingOrWereCut) {
     fs::resize_file(cut, fs::file_size(cut) / 2);       // a copy that broke off
     fs::remove(csv_of(out, "j00002", "male_average"));  // a lost file
     const auto untouched = fs::last_write_time(csv_of(out, "j00003", "male_average"));
-    const nlohmann::json r = run_synth(o);
+    const nlohmann::json r = synth_report_json(run_synth(o));
     EXPECT_EQ(r["this_run"]["jobs_run"], 2);
     EXPECT_EQ(read_file_text(cut), read_file_text(before));  // redone in its own batch: the same bytes
     EXPECT_TRUE(fs::exists(csv_of(out, "j00002", "male_average")));
@@ -158,7 +158,7 @@ TEST(Synth, ResumeRedoesJobsWhoseMotionOrMarkerWasDamagedAndNamesABadSettingsFil
     fs::resize_file(out + "/motions/j00001_joints.npy", fs::file_size(out + "/motions/j00001_joints.npy") - 8);  // cut short
     std::ofstream(out + "/jobs/j00002.json") << "{\"job\": \"j00002\", \"kept";                   // a marker cut short
     const auto untouched = fs::last_write_time(out + "/motions/j00003.bvh");
-    EXPECT_EQ(run_synth(o)["this_run"]["jobs_run"], 3);
+    EXPECT_EQ(run_synth(o).this_run.jobs_run, 3);
     EXPECT_TRUE(fs::exists(out + "/motions/j00000.bvh"));
     EXPECT_EQ(read_npy(out + "/motions/j00001_joints.npy").shape[1], 22);
     EXPECT_EQ(fs::last_write_time(out + "/motions/j00003.bvh"), untouched);
@@ -187,9 +187,9 @@ TEST(Synth, ShardsAddUpToTheWholeRun) {
         SynthOptions o = tiny_options(sharded);
         o.shard = i;
         o.shards = 2;
-        EXPECT_EQ(run_synth(o)["this_run"]["jobs_run"], 2);
+        EXPECT_EQ(run_synth(o).this_run.jobs_run, 2);
     }
-    const nlohmann::json merged = run_synth(tiny_options(sharded));  // nothing left to do: rebuilds the manifest
+    const nlohmann::json merged = synth_report_json(run_synth(tiny_options(sharded)));  // nothing left to do: rebuilds the manifest
     EXPECT_EQ(merged["this_run"]["jobs_run"], 0);
     EXPECT_EQ(read_file_text(sharded + "/manifest.csv"), read_file_text(whole + "/manifest.csv"));
     for (const char* job : {"j00000", "j00003"})
@@ -227,7 +227,7 @@ TEST(Synth, RecordsTheRealismModelAndEachRecordingsDraws) {
     o.samples_per_prompt = 1;
     o.filter = false;  // every motion kept, so every job has recordings
     o.realism = "sisfall";
-    const nlohmann::json report = run_synth(o);
+    const nlohmann::json report = synth_report_json(run_synth(o));
     EXPECT_EQ(report["realism"]["name"], "sisfall");
     EXPECT_EQ(report["realism"]["tilt_deg"], 7.5);
     size_t recordings = 0;
@@ -272,7 +272,7 @@ TEST(Synth, RetrievalGivesCapturedMotionThatPassesTheFilter) {
     o.model = "retrieval:" + tiny().data;
     o.vocab = tiny().data + "/vocab.safetensors";
     o.filter = true;
-    const nlohmann::json r = run_synth(o);
+    const nlohmann::json r = synth_report_json(run_synth(o));
     EXPECT_EQ(r["motions_kept"], 4);
     EXPECT_EQ(r["jobs_regenerated"], 0);
     // A slow captured walk: its fastest joint and worst skating are far inside the thresholds.
@@ -330,7 +330,7 @@ TEST(Synth, FilterRegeneratesThenDropsWhatNeverPasses) {
     o.filter = true;
     o.max_retries = 1;
     o.thresholds = {0, 0, 0, 0, 0, 0};  // every motion moves, so every attempt fails
-    const nlohmann::json r = run_synth(o);
+    const nlohmann::json r = synth_report_json(run_synth(o));
     EXPECT_EQ(r["motions_dropped"], 2);
     EXPECT_EQ(r["jobs_regenerated"], 2);
     const nlohmann::json j = nlohmann::json::parse(read_file_text(out + "/jobs/j00001.json"));
@@ -375,7 +375,7 @@ TEST(Synth, ActivityCheckKeepsTheBestDrawOrDropsMotionsThatShowAnotherActivity) 
     write_csv(o.activity_reference, MotionActivityClassifier(reference).reference_table());
 
     o.out = dir + "/kept";
-    const nlohmann::json kept = run_synth(o);
+    const nlohmann::json kept = synth_report_json(run_synth(o));
     EXPECT_EQ(kept["motions_kept"], 4);
     EXPECT_EQ(kept["motions_kept_below_activity_agreement"], 2);
     EXPECT_EQ(kept["per_activity"]["walking"]["shown"], nlohmann::json({{"walking", 2}}));
@@ -406,7 +406,7 @@ TEST(Synth, ActivityCheckKeepsTheBestDrawOrDropsMotionsThatShowAnotherActivity) 
 
     o.out = dir + "/dropped";
     o.drop_activity_failures = true;
-    const nlohmann::json dropped = run_synth(o);
+    const nlohmann::json dropped = synth_report_json(run_synth(o));
     EXPECT_EQ(dropped["motions_kept"], 2);
     EXPECT_EQ(dropped["motions_dropped"], 2);
     EXPECT_EQ(dropped["motions_kept_below_activity_agreement"], 0);

@@ -25,7 +25,7 @@ size_t occurrences(const std::string& s, const std::string& part) {
     return n;
 }
 SynthFolder folder(const std::string& dir, const std::string& title) {
-    return {dir, title, nlohmann::json::parse(read_file_text(dir + "/synth_report.json"))};
+    return {dir, title, read_synth_report(dir)};
 }
 }  // namespace
 
@@ -95,14 +95,14 @@ TEST(SynthSection, WithoutRealDataOnlySyntheticColumns) {
 TEST(SynthSection, ABrokenJobMarkerIsRefusedByName) {
     const std::string dir = test::scratch_dir("synth_section_marker"), synth = dir + "/synth";
     test::write_synth_fixture(synth);
-    write_file_atomic(synth + "/jobs/j00001.json", "{\"job\": \"j00001\"}");  // no "kept"
+    write_file_atomic(synth + "/jobs/j00001.json", "{\"job\": \"j00001\"}");  // no prompt, activity, seed, kept, ...
     Page page;
     page.out_dir = dir;
     try {
         synth_section({folder(synth, "x")}, {}, "", page);
-        ADD_FAILURE() << "a marker without `kept` accepted";
+        ADD_FAILURE() << "a marker without its fields accepted";
     } catch (const Error& e) {
         EXPECT_TRUE(test::contains(e.what(), synth + "/jobs/j00001.json")) << e.what();
-        EXPECT_TRUE(test::contains(e.what(), "job marker")) << e.what();
+        EXPECT_TRUE(test::contains(e.what(), "prompt: expected a string (missing)")) << e.what();
     }
 }

@@ -47,14 +47,12 @@ void run(SynthArgs a) {
     }
     o.device = global_options().device;
     o.threads = worker_threads();
-    const nlohmann::json r = run_synth(o);
-    const auto& t = r["this_run"];
+    const SynthReport r = run_synth(o);
+    const SynthRunTiming& t = r.this_run;
     std::printf("%s: %d of %d jobs done (%d motions kept, %d of them below the activity agreement, %d dropped, %d regenerated), %d recordings; this run: %d jobs in %.1f s "
                 "(motions %.1f s, quality %.1f s, bodies+IMU+write %.1f s)\n",
-                o.out.c_str(), r["jobs_done"].get<int>(), r["jobs"].get<int>(), r["motions_kept"].get<int>(),
-                r["motions_kept_below_activity_agreement"].get<int>(), r["motions_dropped"].get<int>(),
-                r["jobs_regenerated"].get<int>(), r["recordings"].get<int>(), t["jobs_run"].get<int>(), t["total_s"].get<double>(),
-                t["motion_generation_s"].get<double>(), t["quality_scoring_s"].get<double>(), t["bodies_imu_write_s"].get<double>());
+                o.out.c_str(), r.jobs_done, r.jobs, r.motions_kept, r.motions_kept_below_activity_agreement, r.motions_dropped,
+                r.jobs_regenerated, r.recordings, t.jobs_run, t.total_s, t.motion_generation_s, t.quality_scoring_s, t.bodies_imu_write_s);
 }
 
 }  // namespace

@@ -199,7 +199,7 @@ nlohmann::json virtual_imu_meta(const std::vector<BodyImu>& bodies, const JointS
                                  {"rest_axes", {{"x", vec(m.rest_from_sensor.col(0))}, {"y", vec(m.rest_from_sensor.col(1))},
                                                 {"z", vec(m.rest_from_sensor.col(2))}}}};
             if (m.anchor.vertex >= 0) pj["vertex"] = m.anchor.vertex;
-            if (k < b.mount_tilts_deg.size()) pj[realism_lever("tilt").keys[0].key] = b.mount_tilts_deg[k];  // the drawn tilt_deg
+            if (k < b.mount_tilts_deg.size()) pj[realism_lever("tilt").keys[0].key] = b.mount_tilts_deg[k];  // the drawn tilt
             placements.push_back(pj);
         }
         body["placements"] = placements;

@@ -98,9 +98,8 @@ private:
         o.sensors = r.set->sensors;
         if (!r.set->realism.empty()) o.realism = r.set->realism;
         o.out = path("synth/" + r.id());
-        const nlohmann::json report = run_synth(o);
-        say("synth " + r.id() + ": " + std::to_string(report["motions_kept"].get<int>()) + " motions kept, " +
-            std::to_string(report["recordings"].get<int>()) + " recordings");
+        const SynthReport report = run_synth(o);
+        say("synth " + r.id() + ": " + std::to_string(report.motions_kept) + " motions kept, " + std::to_string(report.recordings) + " recordings");
     }
 
     void features(const std::string& file, const std::string& dataset, const ExperimentRealSet& set) {

@@ -18,11 +18,11 @@
 #include "imu/imu_dataset.hpp"
 #include "imu/virtual_imu.hpp"
 #include "motion/bvh_export.hpp"
-#include "report/job_marker.hpp"
 #include "motion/activity_names.hpp"
 #include "motion/motion_activity.hpp"
 #include "motion/normalization.hpp"
 #include "pipeline/motion_source.hpp"
+#include "report/synth_folder.hpp"
 #include "text/prompt_set.hpp"
 
 namespace t2imu {
@@ -50,7 +50,7 @@ struct Drawn {
     std::vector<std::string> failures;  // of the kept (or last) attempt
     std::string activity_shown;         // the activity classifier's answer ("" without a check)
     double activity_agreement = 1;
-    json attempts = json::array();      // seed and failures of every attempt
+    std::vector<MarkerAttempt> attempts;  // seed and failures of every attempt
     json source;                        // the source's record of the draw (retrieval: the clip), or null
     bool kept = true;
 };
@@ -114,8 +114,7 @@ std::vector<Drawn> draw_filtered(MotionSource& source, const std::vector<int>& j
             d.quality = score_motion(d.joints);
             d.failures = quality_failures(d.quality, o.thresholds);
             if (classifier) check_activity(*classifier, expected[pending[p]], o.min_activity_agreement, d);
-            d.attempts.push_back({{"seed", d.seed}, {"failures", d.failures}});
-            if (classifier) d.attempts.back()["activity_agreement"] = d.activity_agreement;
+            d.attempts.push_back({d.seed, d.failures, classifier ? std::optional<double>(d.activity_agreement) : std::nullopt});
             d.kept = !o.filter || d.failures.empty();
             std::optional<Drawn>& best = best_activity[pending[p]];
             if (!d.kept && fails_only_activity(d) && (!best || d.activity_agreement > best->activity_agreement)) best = d;
@@ -142,9 +141,9 @@ std::vector<std::vector<int>> job_groups(int first, int last, int batch) {
     return out;
 }
 
-json quality_json(const MotionQuality& q) {
+std::map<std::string, double> quality_map(const MotionQuality& q) {
     const auto scores = quality_scores(q);
-    json out;
+    std::map<std::string, double> out;
     for (size_t i = 0; i < kNumQualityScores; ++i) out[kQualityScoreNames[i]] = scores[i];
     return out;
 }
@@ -169,19 +168,20 @@ void clear_job_outputs(const std::string& out, const std::string& name) {
 void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt& prompt, int sample, const Drawn& d) {
     const std::string name = job_name(job);
     clear_job_outputs(o.out, name);
-    json marker = {{"job", name}, {"index", job}, {"prompt", prompt.text}, {"activity", prompt.activity}, {"sample", sample},
-                   {"seed", d.seed}, {"attempts", d.attempts}, {"quality", quality_json(d.quality)}, {"kept", d.kept},
-                   {"frames", d.joints.num_frames}, {"recordings", json::array()}};
-    if (d.sensor_joints) marker["sensor_motion_fps"] = d.sensor_joints->fps;
-    if (!d.source.is_null()) marker["source_draw"] = d.source;
+    JobMarker marker;
+    marker.job = name, marker.index = job, marker.sample = sample, marker.frames = d.joints.num_frames;
+    marker.prompt = prompt.text, marker.activity = prompt.activity;
+    marker.seed = d.seed, marker.attempts = d.attempts, marker.quality = quality_map(d.quality), marker.kept = d.kept;
+    if (d.sensor_joints) marker.sensor_motion_fps = d.sensor_joints->fps;
+    marker.source_draw = d.source;
     if (!d.activity_shown.empty())
-        marker["activity_check"] = {{"shown", d.activity_shown}, {"agreement", d.activity_agreement}, {"passed", d.activity_agreement >= o.min_activity_agreement}};
+        marker.activity_check = ActivityCheck{d.activity_shown, d.activity_agreement, d.activity_agreement >= o.min_activity_agreement};
     if (d.kept) {
         write_npy(o.out + "/motions/" + name + "_joints.npy", joint_sequence_to_array(d.joints));
         write_bvh(o.out + "/motions/" + name + ".bvh", smpl22_to_bvh(d.joints));
-        marker["motions"] = json::array();
+        marker.motions.emplace();
         for (const std::string& file : {name + "_joints.npy", name + ".bvh"})
-            marker["motions"].push_back({{"path", "motions/" + file}, {"bytes", fs::file_size(o.out + "/motions/" + file)}});
+            marker.motions->push_back({"motions/" + file, static_cast<int64_t>(fs::file_size(o.out + "/motions/" + file))});
         VirtualImuOptions imu = stage.imu;
         imu.seed = stage.imu.seed + static_cast<uint64_t>(job);
         for (const BodySpec& b : stage.bodies) {
@@ -189,13 +189,12 @@ void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt&
             for (size_t s = 0; s < r.mounts.size(); ++s) {
                 const std::string path = "recordings/" + name + "/" + r.body.name + "/" + r.mounts[s].placement.position + ".csv";
                 write_imu_recording(o.out + "/" + path, r.signals[s]);
-                marker["recordings"].push_back({{"path", path}, {"body", r.body.name}, {"position", r.mounts[s].placement.position},
-                                                {"n_samples", r.signals[s].t.size()}, {"bytes", fs::file_size(o.out + "/" + path)},
-                                                {"tempo", r.tempo}, {realism_lever("tilt").keys[0].key, r.mount_tilts_deg[s]}});
+                marker.recordings.push_back({path, r.body.name, r.mounts[s].placement.position, r.signals[s].t.size(),
+                                             static_cast<int64_t>(fs::file_size(o.out + "/" + path)), r.tempo, r.mount_tilts_deg[s]});
             }
         }
     }
-    write_file_atomic(o.out + "/jobs/" + name + ".json", marker.dump(1) + "\n");
+    write_job_marker(o.out, marker);
 }
 
 // Whether the file `out`/`relative` exists with `bytes` bytes (any size when the marker predates sizes: -1).
@@ -210,21 +209,20 @@ bool file_whole(const std::string& out, const std::string& relative, int64_t byt
 // motion lists were recorded: the files exist). A resume redoes a job whose marker is damaged or whose files
 // went missing or were cut short (a full disk, a copy that broke off, a motion deleted by hand).
 bool job_intact(const std::string& out, int job) {
-    const std::string path = out + "/jobs/" + job_name(job) + ".json";
+    const std::string path = job_marker_path(out, job_name(job));
     if (!fs::exists(path)) return false;
-    json marker;
+    JobMarker marker;
     try {
-        marker = read_json_file(path);
-        check_job_marker(marker, path);
+        marker = read_job_marker(path);
     } catch (const Error&) {
         return false;  // damaged: the job is redone and its marker rewritten
     }
-    for (const json& r : marker["recordings"])
-        if (!file_whole(out, r["path"].get<std::string>(), r.contains("bytes") ? r["bytes"].get<int64_t>() : -1)) return false;
-    if (!marker["kept"].get<bool>()) return true;
-    if (marker.contains("motions")) {
-        for (const json& m : marker["motions"])
-            if (!file_whole(out, m["path"].get<std::string>(), m["bytes"].get<int64_t>())) return false;
+    for (const MarkerRecording& r : marker.recordings)
+        if (!file_whole(out, r.path, r.bytes)) return false;
+    if (!marker.kept) return true;
+    if (marker.motions) {
+        for (const MarkerFile& m : *marker.motions)
+            if (!file_whole(out, m.path, m.bytes)) return false;
         return true;
     }
     const std::string name = job_name(job);
@@ -300,34 +298,21 @@ void SynthOptions::validate() const {
 
 namespace {
 
-std::vector<json> read_markers(const std::string& out) {
-    std::vector<json> markers;
-    if (!fs::exists(out + "/jobs")) return markers;
-    std::vector<fs::path> files;
-    for (const auto& e : fs::directory_iterator(out + "/jobs"))
-        if (e.path().extension() == ".json") files.push_back(e.path());
-    std::sort(files.begin(), files.end());
-    for (const fs::path& p : files) {
-        markers.push_back(read_json_file(p.string()));  // other shards' markers too: checked like this run's
-        check_job_marker(markers.back(), p.string());
-    }
-    return markers;
-}
-
-// Rows for every recording of every marker; `source` is the model folder or retrieval:DATASET as given.
-void write_manifest(const SynthOptions& o, const std::vector<json>& markers) {
+// Rows for every recording of every marker (other shards' too); `source` is the model folder or retrieval:DATASET
+// as given.
+void write_manifest(const SynthOptions& o, const std::vector<JobMarker>& markers) {
     std::vector<ImuRecording> rows;
-    for (const json& j : markers)
-        for (const json& r : j["recordings"]) {
+    for (const JobMarker& j : markers)
+        for (const MarkerRecording& r : j.recordings) {
             ImuRecording row;
-            row.path = r["path"];
+            row.path = r.path;
             row.dataset = "t2imu";
-            row.subject = r["body"];
-            row.activity = j["activity"];
-            row.position = r["position"];
+            row.subject = r.body;
+            row.activity = j.activity;
+            row.position = r.position;
             row.rate_hz = o.rate_hz;
-            row.n_samples = r["n_samples"].get<size_t>();
-            row.extra = {{"source", o.model}, {"prompt", j["prompt"]}, {"body", r["body"]}, {"seed", std::to_string(j["seed"].get<uint64_t>())}, {"job", j["job"]}};
+            row.n_samples = r.n_samples;
+            row.extra = {{"source", o.model}, {"prompt", j.prompt}, {"body", r.body}, {"seed", std::to_string(j.seed)}, {"job", j.job}};
             rows.push_back(std::move(row));
         }
     write_imu_manifest(o.out, rows, {"source", "prompt", "body", "seed", "job"});
@@ -339,46 +324,38 @@ double median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
-json report_json(const std::vector<json>& markers, int total_jobs, const json& timing) {
-    json per_activity = json::object();
-    std::map<std::string, int> failures;
+SynthReport synth_report(const std::vector<JobMarker>& markers, int total_jobs, const SynthRunTiming& timing) {
+    SynthReport r;
     std::map<std::string, std::vector<double>> scores;
-    int kept = 0, regenerated = 0, recordings = 0, below_agreement = 0;
-    for (const json& j : markers) {
-        json& a = per_activity[j["activity"].get<std::string>()];
-        if (a.is_null()) a = {{"kept", 0}, {"kept_below_activity_agreement", 0}, {"dropped", 0}};
-        const bool k = j["kept"];
-        a[k ? "kept" : "dropped"] = a[k ? "kept" : "dropped"].get<int>() + 1;
-        if (j.contains("activity_check")) {  // what the last draw showed, kept or dropped
-            const std::string shown_name = j["activity_check"]["shown"].get<std::string>();
-            json& shown = a["shown"][shown_name];
-            shown = shown.is_null() ? 1 : shown.get<int>() + 1;
-            const bool shows = shows_activity(shown_name, canonical_activity(j["activity"].get<std::string>()));
-            a["shows_activity_by_classifier"] = a.value("shows_activity_by_classifier", 0) + shows;
+    for (const JobMarker& j : markers) {
+        ActivityCounts& a = r.per_activity[j.activity];
+        (j.kept ? a.kept : a.dropped) += 1;
+        if (j.activity_check) {  // what the last draw showed, kept or dropped
+            a.shown[j.activity_check->shown] += 1;
+            a.shows_activity_by_classifier = a.shows_activity_by_classifier.value_or(0) +
+                                             shows_activity(j.activity_check->shown, canonical_activity(j.activity));
         }
-        if (j.contains("source_draw"))  // retrieval: whether the retrieved clip's tags name the activity
-            a["shows_activity_by_tags"] = a.value("shows_activity_by_tags", 0) + j["source_draw"].value("tags_show_activity", false);
-        const bool below = k && !j.value("activity_check", json::object()).value("passed", true);
-        a["kept_below_activity_agreement"] = a["kept_below_activity_agreement"].get<int>() + below;
-        kept += k;
-        below_agreement += below;
-        regenerated += j["attempts"].size() > 1;
-        recordings += static_cast<int>(j["recordings"].size());
-        for (const json& at : j["attempts"])
-            for (const json& f : at["failures"]) failures[f.get<std::string>()] += 1;
-        for (const auto& [name, v] : j["quality"].items()) scores[name].push_back(v.get<double>());
+        if (!j.source_draw.is_null())  // retrieval: whether the retrieved clip's tags name the activity
+            a.shows_activity_by_tags = a.shows_activity_by_tags.value_or(0) + j.source_draw.value("tags_show_activity", false);
+        const bool below = j.kept && j.activity_check && !j.activity_check->passed;
+        a.kept_below_activity_agreement += below;
+        r.motions_kept += j.kept;
+        r.motions_kept_below_activity_agreement += below;
+        r.jobs_regenerated += j.attempts.size() > 1;
+        r.recordings += static_cast<int>(j.recordings.size());
+        for (const MarkerAttempt& at : j.attempts)
+            for (const std::string& f : at.failures) r.failed_attempts_by_score[f] += 1;
+        for (const auto& [name, v] : j.quality) scores[name].push_back(v);
     }
-    json medians;
-    for (const auto& [name, v] : scores) medians[name] = median(v);
-    return {{"jobs", total_jobs}, {"jobs_done", markers.size()}, {"motions_kept", kept}, {"motions_dropped", static_cast<int>(markers.size()) - kept},
-            {"motions_kept_below_activity_agreement", below_agreement},
-            {"jobs_regenerated", regenerated}, {"recordings", recordings}, {"per_activity", per_activity},
-            {"failed_attempts_by_score", failures}, {"quality_median", medians}, {"this_run", timing}};
+    for (const auto& [name, v] : scores) r.quality_median[name] = median(v);
+    r.jobs = total_jobs, r.jobs_done = static_cast<int>(markers.size()), r.motions_dropped = r.jobs_done - r.motions_kept;
+    r.this_run = timing;
+    return r;
 }
 
 }  // namespace
 
-json run_synth(const SynthOptions& o) {
+SynthReport run_synth(const SynthOptions& o) {
     o.validate();
     const auto start = Clock::now();
     const std::vector<Prompt> prompts = read_prompt_set(o.prompts, PromptActivity::required);
@@ -425,14 +402,11 @@ json run_synth(const SynthOptions& o) {
     }
     progress.finish();
     t0 = Clock::now();
-    const std::vector<json> markers = read_markers(o.out);
+    const std::vector<JobMarker> markers = read_job_markers(o.out);
     write_manifest(o, markers);
-    const json timing = {{"jobs_run", jobs_to_run}, {"load_s", load_s}, {"motion_generation_s", generate_s}, {"quality_scoring_s", score_s},
-                         {"bodies_imu_write_s", imu_s}, {"manifest_s", since(t0)}, {"total_s", since(start)}, {"device", o.device},
-                         {"threads", o.threads}};
-    json report = report_json(markers, total, timing);
-    report["realism"] = stage.imu.realism.to_json();  // the model in effect; each recording's draws are in its job's marker
-    write_file_atomic(o.out + "/synth_report.json", report.dump(1) + "\n");
+    SynthReport report = synth_report(markers, total, {jobs_to_run, o.threads, load_s, generate_s, score_s, imu_s, since(t0), since(start), o.device});
+    report.realism = stage.imu.realism.to_json();  // the model in effect; each recording's draws are in its job's marker
+    write_synth_report(o.out, report);
     return report;
 }
 

@@ -32,6 +32,7 @@
 
 #include "diffusion/sample_options.hpp"
 #include "motion/motion_quality.hpp"
+#include "report/synth_folder.hpp"
 
 namespace t2imu {
 
@@ -80,6 +81,6 @@ struct SynthOptions {
 
 // Runs (or resumes) the jobs of this shard, then rebuilds the manifest and the report from every marker in the
 // folder. Returns the report (synth_report.json). Progress over this run's jobs: core/progress.hpp.
-nlohmann::json run_synth(const SynthOptions& options);
+SynthReport run_synth(const SynthOptions& options);
 
 }  // namespace t2imu

@@ -10,7 +10,7 @@
 #include "core/npy.hpp"
 #include "motion/joint_sequence.hpp"
 #include "motion/motion_descriptors.hpp"
-#include "report/job_marker.hpp"
+#include "report/synth_folder.hpp"
 
 namespace t2imu {
 
@@ -67,15 +67,11 @@ ActivityConfusion reference_confusion(const MotionActivityClassifier& classifier
 
 ActivityConfusion synth_confusion(const MotionActivityClassifier& classifier, const std::string& dir) {
     std::map<std::string, std::map<std::string, long>> counts;  // prompted -> shown -> motions
-    for (const auto& e : std::filesystem::directory_iterator(dir + "/jobs")) {
-        if (e.path().extension() != ".json") continue;
-        const std::string marker = e.path().string();
-        const nlohmann::json job = read_json_file(marker);
-        check_job_marker(job, marker);
-        if (!job["kept"].get<bool>()) continue;
-        const std::string file = dir + "/motions/" + job["job"].get<std::string>() + "_joints.npy";
+    for (const JobMarker& job : read_job_markers(dir)) {
+        if (!job.kept) continue;
+        const std::string file = dir + "/motions/" + job.job + "_joints.npy";
         const std::string shown = classifier.classify(describe_motion(joint_sequence_from_array(read_npy(file), file))).best;
-        ++counts[job["activity"].get<std::string>()][shown];
+        ++counts[job.activity][shown];
     }
     if (counts.empty()) throw Error(dir + "/jobs", "jobs", "at least one kept motion");
     ActivityConfusion t;

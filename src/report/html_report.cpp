@@ -71,7 +71,7 @@ void classify_json(const fs::path& p, const std::string& results_dir, FoundResul
     if (j.contains("balanced_accuracy") && j.contains("confusion")) found->har.push_back({stem(p), j});
     else if (j.contains("classifier_two_sample_test")) found->gaps.push_back({stem(p), j});
     else if (j.contains("per_activity") && j.contains("motions_kept"))
-        found->synth.push_back({p.parent_path().string(), synth_title(p.parent_path(), results_dir), j});
+        found->synth.push_back({p.parent_path().string(), synth_title(p.parent_path(), results_dir), parse_synth_report(j, p.string())});
 }
 
 void classify_csv(const fs::path& p, const std::string& results_dir, FoundResults* found) {

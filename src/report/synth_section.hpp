@@ -13,13 +13,14 @@
 
 #include "imu/imu_dataset.hpp"
 #include "report/html_page.hpp"
+#include "report/synth_folder.hpp"
 
 namespace t2imu {
 
 struct SynthFolder {
     std::string dir;      // the folder holding synth_report.json
     std::string title;    // its heading: "Synthesis: <title>"
-    nlohmann::json report;  // synth_report.json as parsed
+    SynthReport report;   // its synth_report.json
 };
 
 // `real`: a real IMU data set (loaded), empty for none; `real_name` names it in the text.
