@@ -11,6 +11,7 @@
 #include "core/atomic_file.hpp"
 #include "core/csv.hpp"
 #include "core/error.hpp"
+#include "core/json_file.hpp"
 #include "diffusion/trainer.hpp"
 #include "pipeline/experiment.hpp"
 #include "test_util.hpp"
@@ -80,7 +81,8 @@ TEST(Experiment, RunsEveryStepAndResumesWithMoreRepeats) {
     const Fixture f = make_fixture(dir);
     ExperimentConfig c = tiny_config(f);
     const std::string out = dir + "/results";
-    const nlohmann::json s = run_experiment(c, out);
+    const nlohmann::json s = experiment_summary_json(run_experiment(c, out));
+    EXPECT_EQ(read_json_file(out + "/summary.json"), s);  // the table on disk is the one returned
 
     ASSERT_EQ(s["rows"].size(), 3u);
     for (const auto& row : s["rows"]) {
@@ -130,7 +132,7 @@ TEST(Experiment, RunsEveryStepAndResumesWithMoreRepeats) {
     const auto seed0 = modified(out + "/runs/tiny-fake/seed-0.jsonl"), features = modified(out + "/features/real-fake.csv"),
                ceiling = modified(out + "/har/ceiling-fake.json");
     c.har.repeats = 3;
-    const nlohmann::json again = run_experiment(c, out);
+    const nlohmann::json again = experiment_summary_json(run_experiment(c, out));
     EXPECT_EQ(modified(out + "/runs/tiny-fake/seed-0.jsonl"), seed0);
     EXPECT_EQ(modified(out + "/features/real-fake.csv"), features);
     EXPECT_EQ(modified(out + "/har/ceiling-fake.json"), ceiling);

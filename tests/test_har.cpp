@@ -161,6 +161,19 @@ TEST(HarTraining, SeparatesSinesOfDifferentFrequencyAcrossDataSets) {
     HarResult other = parts[1];
     other.classes.pop_back();
     EXPECT_THROW(merge_har_results({parts[0], other}), Error);
+    // A damaged result is one Error naming the file and the key, not a JSON library exception.
+    const std::string damaged = test::scratch_dir("har_damaged") + "/result.json";
+    nlohmann::json doc = nlohmann::json::parse(har_result_json(parts[0], "one seed"));
+    for (const auto& [key, spoil] : std::vector<std::pair<std::string, nlohmann::json>>{
+             {"run_records.0.macro_f1", "high"}, {"run_records.0.confusion", nlohmann::json::array({1, 2})}, {"classes", 3}}) {
+        nlohmann::json bad = doc;
+        const size_t dot = key.find(".0.");
+        if (dot == std::string::npos) bad[key] = spoil;
+        else bad["run_records"][0][key.substr(dot + 3)] = spoil;
+        write_file_atomic(damaged, bad.dump());
+        const std::string e = test::error_message([&] { read_har_result(damaged); });
+        EXPECT_TRUE(test::contains(e, damaged + ": " + key)) << key << ": " << e;
+    }
 }
 
 TEST(HarTraining, CliLeaveOneSubjectOut) {

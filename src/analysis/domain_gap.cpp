@@ -7,6 +7,7 @@
 
 #include "analysis/two_sample.hpp"
 #include "core/error.hpp"
+#include "core/json_file.hpp"
 
 namespace t2imu {
 
@@ -86,6 +87,10 @@ CsvTable rows_of_activities(const CsvTable& table, const std::vector<std::string
     for (const std::string& a : activities)
         if (!seen.count(a)) throw Error(option, a, "a class " + table.source + " holds windows of");
     return kept;
+}
+
+double two_sample_balanced_accuracy(const nlohmann::json& gap, const std::string& path) {
+    return json_number(json_object(gap, "classifier_two_sample_test", path), "balanced_accuracy", path, "classifier_two_sample_test");
 }
 
 }  // namespace t2imu

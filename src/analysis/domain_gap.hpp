@@ -12,6 +12,9 @@
 namespace t2imu {
 
 nlohmann::json domain_gap(const CsvTable& real, const CsvTable& synthetic, uint64_t seed = 0);
+// The pooled classifier two-sample balanced accuracy of a domain_gap document read from `path` (Error naming
+// `path` and the key when it is missing).
+double two_sample_balanced_accuracy(const nlohmann::json& gap, const std::string& path);
 
 // The rows of `table` whose activity is one of `activities`: the pooled test over the classes two data sets
 // share. Throws Error naming `option` for a class the table holds no row of.

@@ -31,7 +31,7 @@ static void add_domain_gap(CLI::App& analysis) {
         const nlohmann::json gap = domain_gap(r, s, seed);
         write_file_atomic(out, gap.dump(2) + "\n");
         std::printf("%s: two-sample balanced accuracy %.3f (0.5 = indistinguishable) over %d features\n", out.c_str(),
-                    gap["classifier_two_sample_test"]["balanced_accuracy"].get<double>(), gap["features"].get<int>());
+                    two_sample_balanced_accuracy(gap, out), gap["features"].get<int>());
     });
 }
 

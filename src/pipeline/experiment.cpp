@@ -17,6 +17,7 @@
 #include "core/atomic_file.hpp"
 #include "core/csv.hpp"
 #include "core/error.hpp"
+#include "core/json_file.hpp"
 #include "diffusion/lacc_evaluation.hpp"
 #include "diffusion/text_to_motion.hpp"
 #include "imu/imu_dataset.hpp"
@@ -45,7 +46,7 @@ public:
             for (const ExperimentSource& source : c_.sources) rows_.push_back({&source, &set});
     }
 
-    nlohmann::json run() {
+    ExperimentSummary run() {
         for (const Row& r : rows_) synthesise(r);
         for (const ExperimentRealSet& set : c_.real_sets) {
             features(path("features/real-" + set.name + ".csv"), set.dataset, set);
@@ -58,13 +59,13 @@ public:
             tsne_of(set);
         }
         lacc();
-        nlohmann::json summary;
+        ExperimentSummary summary;
         for (int k = 0; k < c_.har.repeats; ++k) {
             for (const Row& r : rows_) har_run(r, k);
             if (k == 0)
                 for (const ExperimentRealSet& set : c_.real_sets) ceiling(set);
             summary = summarise(k + 1);
-            write_file_atomic(path("summary.json"), summary.dump(2) + "\n");
+            write_file_atomic(path("summary.json"), experiment_summary_json(summary).dump(2) + "\n");
             write_file_atomic(path("summary.md"), experiment_summary_markdown(summary));
             write_report(out_, path("report"));
             say("round " + std::to_string(k + 1) + "/" + std::to_string(c_.har.repeats) + " of HAR trainings done: " + path("summary.md"));
@@ -115,7 +116,7 @@ private:
         const nlohmann::json gap = domain_gap(read_csv(path("features/real-" + r.set->name + ".csv")),
                                               read_csv(path("features/" + r.id() + ".csv")), c_.feature_seed);
         write_file_atomic(file, gap.dump(2) + "\n");
-        say("two-sample test " + r.id() + ": balanced accuracy " + std::to_string(gap["classifier_two_sample_test"]["balanced_accuracy"].get<double>()));
+        say("two-sample test " + r.id() + ": balanced accuracy " + std::to_string(two_sample_balanced_accuracy(gap, file)));
     }
 
     // The level and texture statistics of each position, synthetic beside real, per activity (HAR's rate).
@@ -218,6 +219,11 @@ private:
                           har_result_json(merge_har_results(parts), "trained on " + r.source->name + "'s synthetic " + r.set->name + ", tested on " + r.set->dataset));
     }
 
+    static std::string ceiling_description(const ExperimentRealSet& set) {
+        const std::string how = set.ceiling_folds > 0 ? std::to_string(set.ceiling_folds) + "-fold leave-subjects-out" : "leave-one-subject-out";
+        return how + " on " + set.dataset + " (real-to-real ceiling)";
+    }
+
     // Real-to-real on the classes the first source's comparison kept, so the ceiling and the rows score the same task.
     void ceiling(const ExperimentRealSet& set) {
         const std::string file = path("har/ceiling-" + set.name + ".json");
@@ -227,38 +233,32 @@ private:
         for (const std::string& c : read_har_result(path("har/" + first.id() + ".json")).classes) keep[c] = c;
         const WindowSet real = relabel(windows(set.dataset, set), keep);
         const HarResult result = leave_one_subject_out(real, one_training(c_.har.seed), set.ceiling_folds);
-        const std::string how = set.ceiling_folds > 0 ? std::to_string(set.ceiling_folds) + "-fold leave-subjects-out" : "leave-one-subject-out";
-        write_file_atomic(file, har_result_json(result, how + " on " + set.dataset + " (real-to-real ceiling)"));
+        write_file_atomic(file, har_result_json(result, ceiling_description(set)));
         say("ceiling " + set.name + ": " + file);
     }
 
-    nlohmann::json summarise(int rounds) const {
-        nlohmann::json s = {{"har_repeats", c_.har.repeats}, {"har_rounds_done", rounds}, {"rows", nlohmann::json::array()},
-                            {"ceilings", nlohmann::json::array()}};
+    ExperimentSummary summarise(int rounds) const {
+        ExperimentSummary s;
+        s.har_repeats = c_.har.repeats, s.har_rounds_done = rounds;
         for (const Row& r : rows_) {
-            const nlohmann::json har = nlohmann::json::parse(read_file_text(path("har/" + r.id() + ".json")));
-            const nlohmann::json gap = nlohmann::json::parse(read_file_text(path("gap/" + r.id() + ".json")));
-            s["rows"].push_back({{"source", r.source->name}, {"model", r.source->model}, {"real_set", r.set->name},
-                                 {"classes", har["classes"]}, {"chance", 1.0 / static_cast<double>(har["classes"].size())},
-                                 {"balanced_accuracy", har["balanced_accuracy"]}, {"macro_f1", har["macro_f1"]},
-                                 {"train_windows", har["train_windows"]}, {"test_windows", har["test_windows"]},
-                                 {"two_sample_balanced_accuracy", gap["classifier_two_sample_test"]["balanced_accuracy"]}});
+            const HarResult har = read_har_result(path("har/" + r.id() + ".json"));
+            const std::string gap = path("gap/" + r.id() + ".json");
+            s.rows.push_back({r.source->name, r.source->model, r.set->name, har.classes, 1.0 / static_cast<double>(har.classes.size()),
+                              score_summary(har, &HarRun::balanced_accuracy), score_summary(har, &HarRun::macro_f1), har.train_windows,
+                              har.test_windows, two_sample_balanced_accuracy(read_json_file(gap), gap)});
         }
         for (const ExperimentRealSet& set : c_.real_sets) {
             const std::string file = path("har/ceiling-" + set.name + ".json");
             if (!fs::exists(file)) continue;
-            const nlohmann::json har = nlohmann::json::parse(read_file_text(file));
-            s["ceilings"].push_back({{"real_set", set.name}, {"description", har["description"]}, {"classes", har["classes"]},
-                                     {"balanced_accuracy", har["balanced_accuracy"]}});
+            const HarResult har = read_har_result(file);
+            s.ceilings.push_back({set.name, ceiling_description(set), har.classes, score_summary(har, &HarRun::balanced_accuracy)});
         }
         const std::string change = path("lacc/change.csv");
         if (fs::exists(change)) {
             const CsvTable t = read_csv(change);
-            nlohmann::json groups;
+            s.lacc_before = c_.lacc.before, s.lacc_after = c_.lacc.after;
             for (size_t i = 0; i < t.rows.size(); ++i)
-                groups[t.rows[i][t.column("group")]] = {{"samples", t.number(i, t.column("samples"))},
-                                                         {"change_percent", t.number(i, t.column("change_percent"))}};
-            s["lacc"] = {{"before", c_.lacc.before}, {"after", c_.lacc.after}, {"groups", groups}};
+                s.lacc_groups[t.rows[i][t.column("group")]] = {t.number(i, t.column("samples")), t.number(i, t.column("change_percent"))};
         }
         return s;
     }
@@ -272,7 +272,7 @@ private:
 
 }  // namespace
 
-nlohmann::json run_experiment(const ExperimentConfig& config, const std::string& out, const std::function<void(const std::string&)>& log) {
+ExperimentSummary run_experiment(const ExperimentConfig& config, const std::string& out, const std::function<void(const std::string&)>& log) {
     fs::create_directories(out);
     return Experiment(config, out, log).run();
 }

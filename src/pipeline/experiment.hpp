@@ -25,6 +25,7 @@
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -73,12 +74,43 @@ struct ExperimentConfig {
 // Reads experiments/*.toml (see experiments/paper.toml for every key); unknown keys are refused.
 ExperimentConfig read_experiment_config(const std::string& path);
 
-// Runs or resumes the experiment into `out`; `log` receives one line per step done. Returns summary.json.
-nlohmann::json run_experiment(const ExperimentConfig& config, const std::string& out,
-                              const std::function<void(const std::string&)>& log = {});
+// summary.json: the experiment folder's table, made from its har/, gap/ and lacc/ files (each read through its
+// own reader: read_har_result, two_sample_balanced_accuracy, read_lacc_csv).
+struct ExperimentRow {
+    std::string source, model, real_set;
+    std::vector<std::string> classes;  // those the HAR trainings scored
+    double chance = 0;                 // 1 / classes
+    ScoreSummary balanced_accuracy, macro_f1;
+    size_t train_windows = 0, test_windows = 0;
+    double two_sample_balanced_accuracy = 0;
+};
+
+struct ExperimentCeiling {
+    std::string real_set, description;
+    std::vector<std::string> classes;
+    ScoreSummary balanced_accuracy;
+};
+
+struct LaccGroupChange {
+    double samples = 0, change_percent = 0;
+};
+
+struct ExperimentSummary {
+    int har_repeats = 0, har_rounds_done = 0;
+    std::vector<ExperimentRow> rows;          // per source and real set, real sets in config order
+    std::vector<ExperimentCeiling> ceilings;  // per real set that has one
+    std::string lacc_before, lacc_after;      // empty: no L_acc step
+    std::map<std::string, LaccGroupChange> lacc_groups;
+};
+
+nlohmann::json experiment_summary_json(const ExperimentSummary& s);
+
+// Runs or resumes the experiment into `out`; `log` receives one line per step done. Returns summary.json's table.
+ExperimentSummary run_experiment(const ExperimentConfig& config, const std::string& out,
+                                 const std::function<void(const std::string&)>& log = {});
 
 // summary.md: balanced accuracy per source and real set (mean ± sd over the runs, with the paper's figures
 // beside them), the real-to-real ceilings, chance, the two-sample test and the L_acc change.
-std::string experiment_summary_markdown(const nlohmann::json& summary);
+std::string experiment_summary_markdown(const ExperimentSummary& summary);
 
 }  // namespace t2imu

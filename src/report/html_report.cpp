@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "analysis/domain_gap.hpp"
 #include "core/atomic_file.hpp"
 #include "core/csv.hpp"
 #include "core/error.hpp"
@@ -134,7 +135,7 @@ void gap_section(const std::vector<std::pair<std::string, nlohmann::json>>& gaps
     for (const auto& [name, g] : gaps) {
         const auto& top = g["per_feature"].empty() ? nlohmann::json::object() : g["per_feature"][0];
         std::snprintf(buf, sizeof buf, "<tr><td>%s</td><td>%.3f</td><td>%s (%.3f)</td></tr>\n", html_escape(name).c_str(),
-                      g["classifier_two_sample_test"]["balanced_accuracy"].get<double>(),
+                      two_sample_balanced_accuracy(g, name),
                       html_escape(top.value("feature", std::string("-"))).c_str(), top.value("ks", 0.0));
         page.body += buf;
     }

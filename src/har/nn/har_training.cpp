@@ -10,6 +10,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/json_file.hpp"
 #include "core/progress.hpp"
 #include "har/class_map.hpp"
 #include "har/nn/deepconvlstm.hpp"
@@ -249,16 +250,20 @@ HarResult leave_one_subject_out(const WindowSet& data, const HarOptions& o, int 
     return r;
 }
 
+ScoreSummary score_summary(const HarResult& r, double HarRun::*score) {
+    ScoreSummary s;
+    for (const HarRun& run : r.runs) s.runs.push_back(run.*score);
+    double var = 0;
+    for (double x : s.runs) s.mean += x / static_cast<double>(s.runs.size());
+    for (double x : s.runs) var += (x - s.mean) * (x - s.mean);
+    s.sd = s.runs.size() > 1 ? std::sqrt(var / static_cast<double>(s.runs.size() - 1)) : 0.0;
+    return s;
+}
+
+nlohmann::json score_summary_json(const ScoreSummary& s) { return {{"mean", s.mean}, {"sd", s.sd}, {"runs", s.runs}}; }
+
 std::string har_result_json(const HarResult& r, const std::string& description) {
-    const auto summary = [&](double HarRun::*field) {
-        std::vector<double> v;
-        for (const HarRun& run : r.runs) v.push_back(run.*field);
-        double mean = 0, var = 0;
-        for (double x : v) mean += x / static_cast<double>(v.size());
-        for (double x : v) var += (x - mean) * (x - mean);
-        const double sd = v.size() > 1 ? std::sqrt(var / static_cast<double>(v.size() - 1)) : 0.0;
-        return nlohmann::json{{"mean", mean}, {"sd", sd}, {"runs", v}};
-    };
+    const auto summary = [&](double HarRun::*score) { return score_summary_json(score_summary(r, score)); };
     const size_t K = r.classes.size();
     Confusion total(K, std::vector<long>(K, 0));
     std::vector<double> recall(K, 0.0);
@@ -290,28 +295,33 @@ std::string har_result_json(const HarResult& r, const std::string& description) 
 }
 
 HarResult read_har_result(const std::string& path) {
-    nlohmann::json j;
-    try {
-        j = nlohmann::json::parse(read_file_text(path));
-    } catch (const nlohmann::json::exception& e) {
-        throw Error(path, "json", "a HAR result (t2imu har run)", e.what());
-    }
-    if (!j.is_object() || !j.contains("run_records") || !j.contains("classes"))
-        throw Error(path, "run_records", "a HAR result with its run records (t2imu har run)");
+    const nlohmann::json j = read_json_file(path);
     HarResult r;
-    r.classes = j["classes"].get<std::vector<std::string>>();
-    r.train_windows = j.value("train_windows", size_t{0});
-    r.test_windows = j.value("test_windows", size_t{0});
-    for (const nlohmann::json& rec : j["run_records"]) {
+    for (const nlohmann::json& c : json_array(j, "classes", path)) {
+        if (!c.is_string()) throw Error(path, "classes", "class names", c.dump());
+        r.classes.push_back(c.get<std::string>());
+    }
+    r.train_windows = j.contains("train_windows") ? json_count(j, "train_windows", path) : 0;
+    r.test_windows = j.contains("test_windows") ? json_count(j, "test_windows", path) : 0;
+    const nlohmann::json& records = json_array(j, "run_records", path);
+    for (size_t k = 0; k < records.size(); ++k) {
+        const std::string where = "run_records." + std::to_string(k);
         HarRun run;
-        run.balanced_accuracy = rec.at("balanced_accuracy").get<double>();
-        run.macro_f1 = rec.at("macro_f1").get<double>();
-        run.epochs = rec.at("epochs").get<int>();
-        run.seconds_per_epoch = rec.at("seconds_per_epoch").get<double>();
-        run.confusion = rec.at("confusion").get<Confusion>();
-        if (run.confusion.size() != r.classes.size()) throw Error(path, "confusion", std::to_string(r.classes.size()) + " rows, one per class");
+        run.balanced_accuracy = json_number(records[k], "balanced_accuracy", path, where);
+        run.macro_f1 = json_number(records[k], "macro_f1", path, where);
+        run.epochs = static_cast<int>(json_count(records[k], "epochs", path, where));
+        run.seconds_per_epoch = json_number(records[k], "seconds_per_epoch", path, where);
+        for (const nlohmann::json& row : json_array(records[k], "confusion", path, where)) {
+            if (!row.is_array() || row.size() != r.classes.size()) throw Error(path, where + ".confusion", std::to_string(r.classes.size()) + " counts per row");
+            run.confusion.emplace_back();
+            for (const nlohmann::json& n : row) {
+                if (!n.is_number_integer() || n.get<long>() < 0) throw Error(path, where + ".confusion", "whole counts from 0", n.dump());
+                run.confusion.back().push_back(n.get<long>());
+            }
+        }
+        if (run.confusion.size() != r.classes.size()) throw Error(path, where + ".confusion", std::to_string(r.classes.size()) + " rows, one per class");
         r.runs.push_back(run);
-        r.run_names.push_back(rec.at("name").get<std::string>());
+        r.run_names.push_back(json_string(records[k], "name", path, where));
     }
     return r;
 }

@@ -9,6 +9,7 @@
 // and the default of HAR re-implementations; the choice changes results by less than run-to-run variation.
 #pragma once
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,14 @@ HarResult train_and_test(const WindowSet& train, const WindowSet& test, const Ha
 // subjects are dealt (sorted by name, round robin) into that many folds instead: leave-k-subjects-out, for
 // data sets with many subjects where one training per subject costs too much.
 HarResult leave_one_subject_out(const WindowSet& data, const HarOptions& options, int folds = 0);
+
+// One score over a result's runs: mean, sample sd (n - 1; 0 for one run) and the runs themselves.
+struct ScoreSummary {
+    double mean = 0, sd = 0;
+    std::vector<double> runs;
+};
+ScoreSummary score_summary(const HarResult& r, double HarRun::*score);
+nlohmann::json score_summary_json(const ScoreSummary& s);  // {mean, sd, runs}
 
 // RESULT.json: classes, balanced_accuracy {mean, sd, runs}, macro_f1 {...}, per_class_recall (mean over runs),
 // confusion (summed over runs, rows = true class), plus counts and timings, and `run_records`: each run's name,
