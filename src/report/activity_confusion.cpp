@@ -2,11 +2,9 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
 #include <map>
 
 #include "core/error.hpp"
-#include "core/json_file.hpp"
 #include "core/npy.hpp"
 #include "motion/joint_sequence.hpp"
 #include "motion/motion_descriptors.hpp"
