@@ -39,13 +39,10 @@ void write_outputs(const SynthArgs& a, const std::vector<BodyImu>& bodies, const
     const fs::path tmp = partial_path_for(a.out);
     fs::remove_all(tmp);
     for (const BodyImu& b : bodies) {
-        const fs::path dir = tmp / b.body.name;
-        make_directories(dir.string(), "body folder");
-        for (size_t i = 0; i < b.mounts.size(); ++i) {
-            const std::string& position = b.mounts[i].placement.position;
-            write_imu_recording((dir / (position + ".csv")).string(), b.signals[i]);
-            if (a.format == "realworld") write_realworld_csv(dir.string(), a.activity, without_side(position), b.signals[i]);
-        }
+        write_body_imu(tmp.string(), b);
+        if (a.format != "realworld") continue;
+        for (size_t i = 0; i < b.mounts.size(); ++i)
+            write_realworld_csv((tmp / b.body.name).string(), a.activity, without_side(b.mounts[i].placement.position), b.signals[i]);
     }
     write_file_atomic((tmp / "meta.json").string(), meta.dump(2) + "\n");
     publish_partial(tmp.string(), a.out);

@@ -9,6 +9,7 @@
 #include "core/hash.hpp"
 #include "imu/body_vibration.hpp"
 #include "imu/device_rate.hpp"
+#include "imu/imu_dataset.hpp"
 #include "motion/foot_landings.hpp"
 
 namespace t2imu {
@@ -153,6 +154,15 @@ BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& spec, c
         out.signals.push_back(resample_imu_signals(s, options.rate_hz));
     }
     return out;
+}
+
+std::vector<std::string> write_body_imu(const std::string& dir, const BodyImu& imu) {
+    std::vector<std::string> paths;
+    for (size_t i = 0; i < imu.mounts.size(); ++i) {
+        paths.push_back(imu.body.name + "/" + imu.mounts[i].placement.position + ".csv");
+        write_imu_recording(dir + "/" + paths.back(), imu.signals[i]);
+    }
+    return paths;
 }
 
 nlohmann::json virtual_imu_meta(const std::vector<BodyImu>& bodies, const JointSequence& motion, const VirtualImuOptions& options,

@@ -65,6 +65,11 @@ BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& body, c
 void sensor_track(const BodyModel& body, const FittedMotion& motion, const SensorMount& mount,
                   std::vector<Eigen::Vector3d>* position, std::vector<Quat>* orientation);
 
+// The recordings of one body under `dir`, one per mount: dir/<body>/<position>.csv (imu_dataset.hpp's recording
+// format). Returns their paths relative to `dir`, in mount order. t2imu imu synth writes its folder so, and t2imu
+// synth each job's recordings/<job>/.
+std::vector<std::string> write_body_imu(const std::string& dir, const BodyImu& imu);
+
 // meta.json: bodies (height, mass, sex, fit error), placements with mountings, frames and rates, noise, seed.
 nlohmann::json virtual_imu_meta(const std::vector<BodyImu>& bodies, const JointSequence& motion, const VirtualImuOptions& options,
                                 const std::string& input);

@@ -186,9 +186,9 @@ void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt&
         imu.seed = stage.imu.seed + static_cast<uint64_t>(job);
         for (const BodySpec& b : stage.bodies) {
             const BodyImu r = synthesize_body_imu(d.sensor_joints ? *d.sensor_joints : d.joints, b, stage.sensors, imu);
+            const std::vector<std::string> files = write_body_imu(o.out + "/recordings/" + name, r);
             for (size_t s = 0; s < r.mounts.size(); ++s) {
-                const std::string path = "recordings/" + name + "/" + r.body.name + "/" + r.mounts[s].placement.position + ".csv";
-                write_imu_recording(o.out + "/" + path, r.signals[s]);
+                const std::string path = "recordings/" + name + "/" + files[s];
                 marker.recordings.push_back({path, r.body.name, r.mounts[s].placement.position, r.signals[s].t.size(),
                                              static_cast<int64_t>(fs::file_size(o.out + "/" + path)), r.tempo, r.mount_tilts_deg[s]});
             }
