@@ -250,8 +250,9 @@ TEST(Realism, PresetsTurnOnOnlyTiltAndTheirOwnDevice) {
         EXPECT_EQ(m.device, name);
         EXPECT_FALSE(m.tissue.enabled()) << name;
         EXPECT_FALSE(m.strap.enabled()) << name;
-        for (const RealismLever& lever : realism_levers())
+        for (const RealismLever& lever : realism_levers()) {
             if (std::string(lever.name) != "tilt" && std::string(lever.name) != "device") EXPECT_FALSE(lever.enabled(m)) << name << " " << lever.name;
+        }
         EXPECT_NO_THROW(parse_noise_model(m.device)) << name;
     }
     EXPECT_GT(realism_preset("sisfall").tilt.sd_deg, 0);
@@ -341,12 +342,14 @@ TEST(RealismTable, OffValuesAreTheDefaultsAndCalibratedValuesTurnEachLeverOn) {
     for (const RealismLever& lever : realism_levers()) {
         RealismModel m;
         EXPECT_FALSE(lever.enabled(m)) << lever.name;
-        for (const RealismKey& k : lever.keys)
+        for (const RealismKey& k : lever.keys) {
             if (k.number) EXPECT_EQ(k.number(m), k.off) << k.key;
+        }
         const RealismModel on = parse_realism(std::string("none+") + lever.name);  // validated
         EXPECT_TRUE(lever.enabled(on)) << lever.name;
-        for (const RealismLever& other : realism_levers())  // and nothing else
+        for (const RealismLever& other : realism_levers()) {  // and nothing else
             if (&other != &lever) EXPECT_FALSE(other.enabled(on)) << lever.name << " turned on " << other.name;
+        }
     }
 }
 
