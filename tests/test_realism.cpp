@@ -251,7 +251,9 @@ TEST(Realism, PresetsTurnOnOnlyTiltAndTheirOwnDevice) {
         EXPECT_FALSE(m.tissue.enabled()) << name;
         EXPECT_FALSE(m.strap.enabled()) << name;
         for (const RealismLever& lever : realism_levers()) {
-            if (std::string(lever.name) != "tilt" && std::string(lever.name) != "device") EXPECT_FALSE(lever.enabled(m)) << name << " " << lever.name;
+            if (std::string(lever.name) != "tilt" && std::string(lever.name) != "device") {
+                EXPECT_FALSE(lever.enabled(m)) << name << " " << lever.name;
+            }
         }
         EXPECT_NO_THROW(parse_noise_model(m.device)) << name;
     }
@@ -343,12 +345,16 @@ TEST(RealismTable, OffValuesAreTheDefaultsAndCalibratedValuesTurnEachLeverOn) {
         RealismModel m;
         EXPECT_FALSE(lever.enabled(m)) << lever.name;
         for (const RealismKey& k : lever.keys) {
-            if (k.number) EXPECT_EQ(k.number(m), k.off) << k.key;
+            if (k.number) {
+                EXPECT_EQ(k.number(m), k.off) << k.key;
+            }
         }
         const RealismModel on = parse_realism(std::string("none+") + lever.name);  // validated
         EXPECT_TRUE(lever.enabled(on)) << lever.name;
         for (const RealismLever& other : realism_levers()) {  // and nothing else
-            if (&other != &lever) EXPECT_FALSE(other.enabled(on)) << lever.name << " turned on " << other.name;
+            if (&other != &lever) {
+                EXPECT_FALSE(other.enabled(on)) << lever.name << " turned on " << other.name;
+            }
         }
     }
 }
