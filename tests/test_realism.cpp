@@ -411,17 +411,19 @@ TEST(RealismTable, EveryKeyIsWrittenInAtMostTwoFilesOfTheLibrary) {
     // Its table entry (realism.cpp) and at most the stage that records its draw (virtual_imu.cpp). "device" is
     // also the word for libtorch's device, so it is not counted.
     namespace fs = std::filesystem;
+    std::vector<std::pair<std::string, std::string>> sources;  // file name, text: read once for every key
+    for (const auto& e : fs::recursive_directory_iterator(fs::path(T2IMU_SOURCE_DIR) / "src")) {
+        if (!e.is_regular_file()) continue;
+        std::ifstream in(e.path());
+        sources.emplace_back(e.path().filename().string(), std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()));
+    }
     for (const RealismLever& lever : realism_levers())
         for (const RealismKey& k : lever.keys) {
             if (std::string(k.key) == "device") continue;
             const std::regex word(std::string("\\b") + k.key + "\\b");
             std::vector<std::string> files;
-            for (const auto& e : fs::recursive_directory_iterator(fs::path(T2IMU_SOURCE_DIR) / "src")) {
-                if (!e.is_regular_file()) continue;
-                std::ifstream in(e.path());
-                const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-                if (std::regex_search(text, word)) files.push_back(e.path().filename().string());
-            }
+            for (const auto& [name, text] : sources)
+                if (std::regex_search(text, word)) files.push_back(name);
             EXPECT_LE(files.size(), 2u) << k.key << " in " << ::testing::PrintToString(files);
         }
 }

@@ -42,8 +42,9 @@ std::map<std::string, double> numbers(const json& doc, const char* key, const st
 
 std::map<std::string, int> counts(const json& doc, const char* key, const std::string& path, const std::string& where = "") {
     std::map<std::string, int> out;
-    for (const auto& [name, v] : json_object(doc, key, path, where).items())
-        out[name] = static_cast<int>(json_count(json_object(doc, key, path, where), name, path, (where.empty() ? "" : where + ".") + key));
+    const json& object = json_object(doc, key, path, where);
+    for (const auto& [name, v] : object.items())
+        out[name] = static_cast<int>(json_count(object, name, path, (where.empty() ? "" : where + ".") + key));
     return out;
 }
 
