@@ -119,6 +119,14 @@ private:
         say("two-sample test " + r.id() + ": balanced accuracy " + std::to_string(two_sample_balanced_accuracy(gap, file)));
     }
 
+    // A real data set's recordings, read once per run (every source's row and every variant of an ablation compares
+    // with them).
+    const std::vector<ImuRecording>& real_recordings(const std::string& dataset) {
+        auto it = real_recordings_.find(dataset);
+        if (it == real_recordings_.end()) it = real_recordings_.emplace(dataset, read_imu_dataset(dataset)).first;
+        return it->second;
+    }
+
     // The level and texture statistics of each position, synthetic beside real, per activity (HAR's rate).
     void signal_statistics_of(const Row& r) {
         for (const std::string& position : r.set->positions) {
@@ -127,7 +135,7 @@ private:
             SignalStatisticsOptions o;
             o.position = position;
             o.rate_hz = c_.windows.rate_hz;
-            const nlohmann::json stats = compare_signal_statistics(read_imu_dataset(r.set->dataset), read_imu_dataset(path("synth/" + r.id())), o);
+            const nlohmann::json stats = compare_signal_statistics(real_recordings(r.set->dataset), read_imu_dataset(path("synth/" + r.id())), o);
             write_file_atomic(file, stats.dump(2) + "\n");
             say("signal statistics " + r.id() + " at " + position + ": " + file);
         }
@@ -268,6 +276,7 @@ private:
     std::function<void(const std::string&)> log_;
     std::vector<Row> rows_;
     std::map<std::string, WindowSet> windows_;
+    std::map<std::string, std::vector<ImuRecording>> real_recordings_;
 };
 
 }  // namespace
