@@ -24,7 +24,7 @@ const char* kMinimal =
 
 const char* kFull =
     "[synth]\nsamples_per_prompt = 3\nbodies = \"preset:male_tall\"\nnoise = \"smartphone\"\nrealism = \"sisfall\"\n"
-    "vocab = \"v.txt\"\nsampler = \"ddim\"\nsteps = 25\nguidance = 2.5\nbatch = 8\nseed = 42\nseconds = 4.5\nrate_hz = 64\n"
+    "vocab = \"v.txt\"\nsampler = \"ddim\"\nsteps = 25\nguidance = 2.5\ncaption_anchor = 0.5\nbatch = 8\nseed = 42\nseconds = 4.5\nrate_hz = 64\n"
     "filter = false\nmax_retries = 4\nactivity_reference = \"ref.csv\"\nmin_activity_agreement = 0.6\ndrop_activity_failures = true\n"
     "[[source]]\nname = \"mdm\"\nmodel = \"models/default\"\n"
     "[[source]]\nname = \"mdm_lacc\"\nmodel = \"models/default-lacc\"\n"
@@ -64,6 +64,7 @@ TEST(ExperimentConfig, EveryKeyLandsInItsField) {
     EXPECT_EQ(c.synth.sampling.sampler, Sampler::ddim);
     EXPECT_EQ(c.synth.sampling.steps, 25);
     EXPECT_DOUBLE_EQ(c.synth.sampling.guidance, 2.5);
+    EXPECT_EQ(c.synth.sampling.caption_anchor, 0.5);
     EXPECT_EQ(c.synth.sampling.batch, 8);
     EXPECT_EQ(c.synth.sampling.seed, 42u);
     EXPECT_DOUBLE_EQ(c.synth.seconds, 4.5);
@@ -114,6 +115,7 @@ TEST(ExperimentConfig, AbsentKeysKeepTheDefaults) {
     EXPECT_EQ(c.synth.sampling.sampler, synth.sampling.sampler);
     EXPECT_EQ(c.synth.sampling.steps, synth.sampling.steps);
     EXPECT_EQ(c.synth.realism, "none");
+    EXPECT_FALSE(c.synth.sampling.caption_anchor.has_value());  // each model folder's own weight
     EXPECT_EQ(c.har.repeats, HarOptions().repeats);
     EXPECT_DOUBLE_EQ(c.windows.rate_hz, WindowOptions().rate_hz);
     EXPECT_EQ(c.tsne_points, defaults.tsne_points);
@@ -140,7 +142,8 @@ TEST(ExperimentConfig, RefusesEachRuleNamingTheField) {
         {base + "[lacc]\nseed = -2\n", "lacc.seed"},
         {base + "[synth]\nsampler = \"euler\"\n", "synth.sampler"},                                // closed choices
         {base + "[synth]\nrealism = \"sisfal\"\n", "synth.realism"},
-        {base + "[synth]\nsteps = 2.5\n", "synth.steps"},                                          // types
+        {base + "[synth]\nsteps = 2.5\n", "synth.steps"},
+        {base + "[synth]\ncaption_anchor = 1.5\n", "synth.caption_anchor"},                                          // types
         {base + "[har]\nrepeats = 0\n", "har"},                                                    // validated ranges
         {base + "[har]\noverlap = 1.5\n", "har"},
         {base + "[[source]]\nname = \"mdm\"\nmodel = \"other\"\n", "source.name"},                 // duplicate

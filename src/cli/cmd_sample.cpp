@@ -13,6 +13,7 @@
 #include "core/output_path.hpp"
 #include "diffusion/lacc_evaluation.hpp"
 #include "diffusion/text_to_motion.hpp"
+#include "motion/activity_names.hpp"
 #include "motion/humanml3d.hpp"
 #include "text/prompt_set.hpp"
 
@@ -40,13 +41,17 @@ void run(SampleArgs a) {
     const std::vector<Prompt> prompts = a.prompt.empty() ? read_prompt_set(a.prompts) : std::vector<Prompt>{{"", a.prompt}};
     std::unique_ptr<MotionModel> model = load_motion_model(a.model, global_options().device);
     std::vector<std::string> texts;
-    for (const Prompt& p : prompts) texts.push_back(p.text);
+    for (const Prompt& p : prompts) {
+        texts.push_back(p.text);
+        a.options.activities.push_back(activity_asked(p.activity, p.text));
+    }
     const auto start = std::chrono::steady_clock::now();
     const std::vector<FeatureMatrix> motions = sample_motions(*model, texts, a.options);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     nlohmann::json record = {{"model", std::filesystem::absolute(a.model).string()}, {"model_training", model->meta.value("training", nlohmann::json{})},
                              {"sampler", sampler_name(a.options.sampler)}, {"steps", denoiser_calls(a.options.sampler, a.options.steps, model->schedule.steps)},
-                             {"guidance", a.options.guidance}, {"eta", a.options.eta}, {"frames", a.options.frames}, {"fps", 20},
+                             {"guidance", a.options.guidance}, {"eta", a.options.eta},
+                             {"caption_anchor", a.options.caption_anchor.value_or(model->anchor.weight)}, {"frames", a.options.frames}, {"fps", 20},
                              {"seed", a.options.seed}, {"device", global_options().device}, {"sampling_seconds", seconds},
                              {"samples", nlohmann::json::array()}};
     char name[32];
@@ -101,6 +106,8 @@ static CommandRegistrar registrar([](CLI::App& root) {
     add_sampler_option(*cmd, a.options.sampler, "ddpm (default), ddim or dpmpp");
     cmd->add_option("--steps", a.options.steps, "denoiser evaluations for ddim/dpmpp");
     cmd->add_option("--guidance", a.options.guidance, "classifier-free guidance scale");
+    cmd->add_option_function<double>("--caption-anchor", [](double w) { a.options.caption_anchor = w; },
+                                     "weight 0..1 of the training captions nearest the prompt in its text feature (default: the model folder's; 0 = the prompt alone)");
     cmd->add_option("--eta", a.options.eta, "ddim noise (0 = deterministic)");
     cmd->add_option("--seed", a.options.seed, "seed of sample 0; sample i uses seed + i");
     cmd->add_option("--batch", a.options.batch, "prompts per batch (does not change the samples)");

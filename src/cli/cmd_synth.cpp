@@ -68,6 +68,8 @@ static CommandRegistrar registrar([](CLI::App& root) {
     add_sampler_option(*cmd, o.sampling.sampler, "dpmpp (default), ddim or ddpm");
     cmd->add_option("--steps", o.sampling.steps, "denoiser evaluations for ddim/dpmpp");
     cmd->add_option("--guidance", o.sampling.guidance, "classifier-free guidance scale");
+    cmd->add_option_function<double>("--caption-anchor", [](double w) { a.options.sampling.caption_anchor = w; },
+                                     "weight 0..1 of the training captions nearest the prompt in its text feature (default: the model folder's; 0 = the prompt alone)");
     cmd->add_option("--seconds", o.seconds, "motion length, s (at most 9.8)");
     cmd->add_option("--seed", o.sampling.seed, "seed of job 0; job k draws from seed + k");
     cmd->add_option("--batch", o.sampling.batch, "motions per sampling batch (fixed groups of jobs; another size changes motions by float rounding only; default 16)");

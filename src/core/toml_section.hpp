@@ -40,6 +40,7 @@ public:
         if (!table_.get(key)) throw Error(path_, field(key), "a value (required)");
         read(key, value);
     }
+    bool has(const char* key) const { return table_.get(key) != nullptr; }
     // A sub-table (empty when absent) or an array of tables, read by the caller.
     TomlSection table(const char* key);
     std::vector<TomlSection> array_of_tables(const char* key);

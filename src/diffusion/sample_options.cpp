@@ -44,6 +44,8 @@ void SampleOptions::validate() const {
     if (!(eta >= 0 && eta <= 1)) throw Error("sampling", "--eta", "0 to 1", std::to_string(eta));
     if (batch < 1) throw Error("sampling", "--batch", "at least 1", std::to_string(batch));
     if (!(strength > 0 && strength <= 1)) throw Error("sampling", "--strength", "above 0 and at most 1", std::to_string(strength));
+    if (caption_anchor && !(*caption_anchor >= 0 && *caption_anchor <= 1))
+        throw Error("sampling", "--caption-anchor", "a weight from 0 to 1", std::to_string(*caption_anchor));
     for (const FeatureMatrix& m : start_motions)
         if (m.rows() != frames || m.cols() != 263)
             throw Error("sampling", "start motion", std::to_string(frames) + " x 263 features", std::to_string(m.rows()) + " x " + std::to_string(m.cols()));

@@ -4,6 +4,7 @@
 // text_to_motion.hpp.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,11 @@ struct SampleOptions {
     // evaluations over t_s .. 0; DDPM takes t_s + 1 steps.
     std::vector<FeatureMatrix> start_motions;
     double strength = 1.0;
+    // The caption anchor (text_to_motion.hpp): its weight w in [0, 1], unset = the model folder's own
+    // (model.json caption_anchor.weight; 0 for a folder without one), 0 = the prompt alone; and, when given, one
+    // canonical activity per prompt ("" = unknown) that chooses the captions the prompt is anchored to.
+    std::optional<double> caption_anchor;
+    std::vector<std::string> activities;
 
     // Throws Error naming the option (--frames, --steps, --guidance, --strength...) for a value out of range or not finite.
     void validate() const;

@@ -101,7 +101,41 @@ void load_minilm_encoder(MotionModel& model, const std::string& dir, const nlohm
     model.minilm->set_tokenizer(std::make_shared<const WordPieceTokenizer>(WordPieceTokenizer::from_vocab_file(vocab)), static_cast<size_t>(max_tokens));
 }
 
+void load_caption_anchor(MotionModel& model, const std::string& dir, const nlohmann::json& a) {
+    const std::string file = dir + "/model.json";
+    if (!model.vocab) throw Error(file, "caption_anchor", "a glove_transformer text encoder (the anchor searches captions with its GloVe vocabulary)");
+    if (!a.is_object() || !a.contains("captions") || !a.at("captions").is_string()) throw Error(file, "caption_anchor.captions", "a caption file's name");
+    model.anchor.neighbours = static_cast<size_t>(model_integer(a, file, "caption_anchor", "neighbours", 1, 1000));
+    const nlohmann::json w = a.value("weight", nlohmann::json());
+    if (!w.is_number() || !(w.get<double>() >= 0 && w.get<double>() <= 1)) throw Error(file, "caption_anchor.weight", "a number from 0 to 1", w.dump());
+    model.anchor.weight = w.get<double>();
+    const std::string captions = (std::filesystem::path(dir) / a.at("captions").get<std::string>()).string();
+    model.anchor.index = std::make_unique<CaptionIndex>(*model.vocab, read_prompt_set(captions, PromptActivity::required), captions);
+}
+
 }  // namespace
+
+torch::Tensor MotionModel::condition(const std::vector<std::string>& prompts, const std::vector<std::string>& activities, double weight) {
+    const torch::Tensor own = encode_text(prompts);
+    if (weight == 0 || prompts.empty()) return own;
+    if (!anchor.index) throw Error("--caption-anchor", "model", "0 (the model folder has no caption anchor: model.json caption_anchor)", std::to_string(weight));
+    std::vector<std::string> neighbours;  // prompt-major: K per prompt, fewer when its activity has fewer captions
+    std::vector<int64_t> first{0};
+    for (size_t i = 0; i < prompts.size(); ++i) {
+        for (const CaptionNeighbour& n : anchor.index->nearest(prompts[i], anchor.neighbours, activities.empty() ? "" : activities[i]))
+            neighbours.push_back(anchor.index->captions()[n.index].text);
+        first.push_back(static_cast<int64_t>(neighbours.size()));
+    }
+    if (neighbours.empty()) return own;
+    const torch::Tensor encoded = encode_text(neighbours);
+    std::vector<torch::Tensor> rows;
+    for (size_t i = 0; i < prompts.size(); ++i) {
+        const torch::Tensor p = own[static_cast<int64_t>(i)];
+        // A prompt whose activity is unknown, or has no caption, keeps its own feature.
+        rows.push_back(first[i + 1] == first[i] ? p : (1 - weight) * p + weight * encoded.slice(0, first[i], first[i + 1]).mean(0));
+    }
+    return torch::stack(rows);
+}
 
 torch::Tensor MotionModel::encode_text(const std::vector<std::string>& captions) {
     if (clip) return clip->encode(captions);
@@ -128,6 +162,7 @@ std::unique_ptr<MotionModel> load_motion_model(const std::string& dir, const std
         else if (kind == "clip") clip_prefix = load_clip_encoder(*model, dir, t, mc.text_dim);
         else if (kind == "minilm") load_minilm_encoder(*model, dir, t, mc.text_dim);
         else throw Error(dir + "/model.json", "text_encoder.kind", "glove_transformer, clip or minilm", kind);
+        if (model->meta.contains("caption_anchor")) load_caption_anchor(*model, dir, model->meta.at("caption_anchor"));
         model->schedule = cosine_schedule(static_cast<int>(model_integer(model->meta.at("diffusion"), dir + "/model.json", "diffusion", "steps", 1, 100000)));
     } catch (const nlohmann::json::exception& e) {
         throw Error(dir + "/model.json", "json", "a t2imu model description", e.what());
@@ -145,6 +180,8 @@ std::unique_ptr<MotionModel> load_motion_model(const std::string& dir, const std
 std::vector<FeatureMatrix> sample_motions(MotionModel& model, const std::vector<std::string>& prompts, const SampleOptions& o) {
     o.validate();
     if (!o.seeds.empty() && o.seeds.size() != prompts.size()) throw Error("sample", "seeds", "one seed per prompt", std::to_string(o.seeds.size()));
+    if (!o.activities.empty() && o.activities.size() != prompts.size())
+        throw Error("sample", "activities", "one activity per prompt", std::to_string(o.activities.size()));
     if (!o.start_motions.empty() && o.start_motions.size() != prompts.size())
         throw Error("sample", "start motions", "one per prompt", std::to_string(o.start_motions.size()));
     torch::NoGradGuard no_grad;
@@ -175,7 +212,9 @@ std::vector<FeatureMatrix> sample_motions(MotionModel& model, const std::vector<
             const double abar = model.schedule.alphas_cumprod[static_cast<size_t>(t_start)];
             x_T = std::sqrt(abar) * x0.to(torch::kFloat32).permute({0, 2, 1}).unsqueeze(2).to(model.device) + std::sqrt(1 - abar) * x_T;
         }
-        const torch::Tensor text = model.encode_text(batch);
+        const std::vector<std::string> activities =
+            o.activities.empty() ? std::vector<std::string>{} : std::vector<std::string>(o.activities.begin() + static_cast<std::ptrdiff_t>(start), o.activities.begin() + static_cast<std::ptrdiff_t>(start + n));
+        const torch::Tensor text = model.condition(batch, activities, o.caption_anchor.value_or(model.anchor.weight));
         const torch::Tensor lengths = torch::full({static_cast<int64_t>(n)}, o.frames, torch::TensorOptions().dtype(torch::kInt64).device(model.device));
         const X0Predictor denoiser = [&](const torch::Tensor& x, const torch::Tensor& t) {
             return model.mdm->forward_guided(x, t, text, o.guidance, lengths);

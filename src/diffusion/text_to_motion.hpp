@@ -18,11 +18,31 @@
 #include "diffusion/samplers.hpp"
 #include "motion/joint_sequence.hpp"
 #include "motion/normalization.hpp"
+#include "text/caption_index.hpp"
 #include "text/nn/bert_encoder.hpp"
 #include "text/nn/clip_text_encoder.hpp"
 #include "text/nn/glove_text_encoder.hpp"
 
 namespace t2imu {
+
+// The caption anchor: a prompt's text feature blended with the features of the training captions nearest it
+// (caption_index.hpp: by SIF similarity, among the captions of the activity the prompt asks for), so that a
+// prompt in words the text encoder did not learn still conditions the denoiser like the captions it did:
+//   c = (1 - w) E(prompt) + w mean_j E(caption_j),   j over the K nearest captions of the prompt's activity,
+// E the model's text encoder; w = 0 is the prompt alone, and so is a prompt whose activity is unknown or has no
+// caption. The activity asked is the prompt set's label, else the one the prompt's words name (activity_asked).
+// The unconditional pass of classifier-free guidance is unchanged (the zero feature). A model folder holds its
+// training captions in captions.tsv (text/training_captions.hpp) and states K and its default w in model.json;
+// t2imu train writes both, with the defaults below (models/default, first draws on prompts/realworld.tsv and
+// prompts/paraphrase.tsv: 37 and 26 of 80 without the anchor, 64 and 63 at w = 1, 66 and 59 at w = 0.75, K = 5).
+constexpr size_t kCaptionAnchorNeighbours = 5;
+constexpr double kCaptionAnchorWeight = 1.0;
+
+struct CaptionAnchor {
+    std::unique_ptr<CaptionIndex> index;  // null: the folder has no caption anchor
+    size_t neighbours = 0;                // K
+    double weight = 0;                    // the folder's default w
+};
 
 struct MotionModel {
     std::unique_ptr<WordVectors> vocab;  // the text encoder keeps a reference: declared first, destroyed last
@@ -34,8 +54,13 @@ struct MotionModel {
     FeatureStats stats;
     nlohmann::json meta;  // model.json
     torch::Device device{torch::kCPU};
+    CaptionAnchor anchor;                // searched with the GloVe vocabulary: glove_transformer models only
 
     torch::Tensor encode_text(const std::vector<std::string>& captions);  // [B, text_dim] by whichever encoder is loaded
+    // The features [B, text_dim] the prompts condition the denoiser with: encode_text blended by the caption
+    // anchor at weight w; activities: empty, or one canonical name per prompt ("" = unknown). Error naming
+    // --caption-anchor for w > 0 on a folder without an anchor.
+    torch::Tensor condition(const std::vector<std::string>& prompts, const std::vector<std::string>& activities, double weight);
     torch::nn::Module& text_module();                                     // that encoder
 };
 
@@ -52,11 +77,14 @@ struct MotionModel {
 //     sentence encoder (text/nn/bert_encoder.hpp; all-MiniLM-L6-v2's model.safetensors and vocab.txt, mean
 //     pooled, unit length); sizes from the weights, the head count given; mdm.text_dim must equal its width
 //     (384 for MiniLM). Paths as for clip.
+// {"caption_anchor": {"captions": "captions.tsv", "neighbours": K, "weight": W}} (optional, glove_transformer
+// only): the caption anchor's captions (relative to the model folder), K of them blended at weight W by default.
 // `device` is cpu, cuda or cuda:N.
 std::unique_ptr<MotionModel> load_motion_model(const std::string& dir, const std::string& device = "cpu");
 
 
-// One de-normalised feature matrix [frames, 263] per prompt; validates `options` first.
+// One de-normalised feature matrix [frames, 263] per prompt; validates `options` first (and that activities, when
+// given, are one per prompt).
 std::vector<FeatureMatrix> sample_motions(MotionModel& model, const std::vector<std::string>& prompts, const SampleOptions& options);
 
 }  // namespace t2imu

@@ -19,9 +19,11 @@
 #include "diffusion/gaussian_diffusion.hpp"
 #include "diffusion/losses.hpp"
 #include "diffusion/recover_from_ric_torch.hpp"
+#include "diffusion/text_to_motion.hpp"
 #include "nn/autocast.hpp"
 #include "nn/state_dict.hpp"
 #include "nn/threads.hpp"
+#include "text/training_captions.hpp"
 
 namespace t2imu {
 
@@ -270,7 +272,9 @@ void write_model(const Training& tr, const TrainConfig& c, const Hml3dDataset& d
         {"training", {{"dataset", c.dataset}, {"step", tr.step}, {"ema", c.ema_decay > 0}, {"precision", c.precision}, {"lambda_pos", c.lambda_pos},
                       {"lambda_vel", c.lambda_vel}, {"lambda_foot", c.lambda_foot}, {"lambda_acc", c.lambda_acc}, {"acc_space", c.acc_space},
                       {"augment", {{"swap", c.augment.swap}, {"dropout", c.augment.dropout}, {"neighbours", c.augment.neighbours},
-                                   {"min_similarity", c.augment.min_similarity}, {"search_words", c.augment.search_words}}}}}};
+                                   {"min_similarity", c.augment.min_similarity}, {"search_words", c.augment.search_words}}}}},
+        {"caption_anchor", {{"captions", "captions.tsv"}, {"neighbours", kCaptionAnchorNeighbours}, {"weight", kCaptionAnchorWeight}}}};
+    write_training_captions(c.out + "/captions.tsv", training_captions(data, c.dataset));
     write_file_atomic(c.out + "/model.json", model.dump(2) + "\n");
 }
 

@@ -78,6 +78,10 @@ std::string activity_named_in(const std::string& sentence) {
     return "";
 }
 
+std::string activity_asked(const std::string& label, const std::string& prompt) {
+    return label.empty() ? activity_named_in(prompt) : canonical_activity(label);
+}
+
 bool shows_activity(const std::string& shown, const std::string& asked) {
     if (shown == asked) return true;
     return asked == "stairs" && (shown == "stairs_up" || shown == "stairs_down");

@@ -20,6 +20,10 @@ std::string canonical_activity(const std::string& label);
 // "stands up from the chair" is sitting.
 std::string activity_named_in(const std::string& sentence);
 
+// The activity a prompt asks for: its prompt set's label (canonical_activity) when it has one, else the one its
+// words name (activity_named_in), else "".
+std::string activity_asked(const std::string& label, const std::string& prompt);
+
 // Whether a motion of canonical activity `shown` shows the activity `asked` (canonical): the same name, or
 // either stair direction for "stairs".
 bool shows_activity(const std::string& shown, const std::string& asked);

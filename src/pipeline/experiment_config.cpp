@@ -34,6 +34,12 @@ void read_synth(TomlSection s, SynthOptions& o, const std::string& path) {
     }
     s.read("steps", o.sampling.steps);
     s.read("guidance", o.sampling.guidance);
+    if (s.has("caption_anchor")) {  // absent: each model folder's own weight
+        double anchor = 0;
+        s.read("caption_anchor", anchor);
+        if (!(anchor >= 0 && anchor <= 1)) throw Error(path, "synth.caption_anchor", "a weight from 0 to 1", std::to_string(anchor));
+        o.sampling.caption_anchor = anchor;
+    }
     s.read("batch", o.sampling.batch);
     o.sampling.seed = read_seed(s, "seed", o.sampling.seed, path, "synth.seed");
     s.read("seconds", o.seconds);

@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "core/npy.hpp"
 #include "core/parse.hpp"
+#include "data/clip_activities.hpp"
 #include "data/hml3d_dataset.hpp"
 #include "motion/activity_names.hpp"
 #include "motion/humanml3d.hpp"
@@ -29,17 +30,20 @@ public:
     DiffusionSource(const std::string& dir, const SampleOptions& sampling, const std::string& device)
         : dir_(dir), sampling_(sampling), model_(load_motion_model(dir, device)) {}
 
-    std::vector<JointSequence> generate(const std::vector<std::string>& prompts, const std::vector<std::string>&,
+    std::vector<JointSequence> generate(const std::vector<std::string>& prompts, const std::vector<std::string>& activities,
                                         const std::vector<uint64_t>& seeds, int frames) override {
-        return generate_from(prompts, seeds, frames, {}, 1.0);
+        return generate_from(prompts, activities, seeds, frames, {}, 1.0);
     }
 
-    // From noised start motions (the hybrid), or from pure noise when `starts` is empty.
-    std::vector<JointSequence> generate_from(const std::vector<std::string>& prompts, const std::vector<uint64_t>& seeds, int frames,
-                                             std::vector<FeatureMatrix> starts, double strength) {
+    // From noised start motions (the hybrid), or from pure noise when `starts` is empty. The activity asked
+    // (the label, else the prompt's words) chooses the captions of the model's caption anchor.
+    std::vector<JointSequence> generate_from(const std::vector<std::string>& prompts, const std::vector<std::string>& activities,
+                                             const std::vector<uint64_t>& seeds, int frames, std::vector<FeatureMatrix> starts, double strength) {
         SampleOptions o = sampling_;
         o.frames = frames;
         o.seeds = seeds;
+        o.activities.clear();
+        for (size_t i = 0; i < prompts.size(); ++i) o.activities.push_back(activity_asked(activities.empty() ? "" : activities[i], prompts[i]));
         o.start_motions = std::move(starts);
         o.strength = strength;
         std::vector<JointSequence> out;
@@ -50,7 +54,8 @@ public:
     nlohmann::json describe() const override {
         return {{"kind", "diffusion"}, {"model", dir_}, {"training_step", model_->meta.value("training", nlohmann::json::object()).value("step", 0)},
                 {"sampler", sampler_name(sampling_.sampler)}, {"steps", denoiser_calls(sampling_.sampler, sampling_.steps, model_->schedule.steps)},
-                {"guidance", sampling_.guidance}, {"eta", sampling_.eta}};
+                {"guidance", sampling_.guidance}, {"eta", sampling_.eta}, {"caption_anchor", sampling_.caption_anchor.value_or(model_->anchor.weight)},
+                {"caption_anchor_neighbours", model_->anchor.neighbours}};
     }
 
 private:
@@ -76,25 +81,6 @@ JointSequence time_warp(const JointSequence& m, double factor) {
 std::string default_vocab() {
     if (const char* env = std::getenv("T2IMU_VOCAB"); env && std::filesystem::exists(env)) return env;
     return "cache/text/glove-100k.safetensors";
-}
-
-// A clip id of Hml3dDataset without its caption span ("000123#0-40" -> "000123"): the row of clips.csv.
-std::string clip_file_id(const std::string& id) { return id.substr(0, id.find('#')); }
-
-// clips.csv's activity tags by clip id; empty for a dataset without clips.csv (the official release).
-std::map<std::string, std::vector<std::string>> clip_tags(const std::string& dataset) {
-    std::map<std::string, std::vector<std::string>> out;
-    const std::string path = dataset + "/clips.csv";
-    if (!std::filesystem::exists(path)) return out;
-    const CsvTable t = read_csv(path);
-    const size_t id = t.column("id"), tags = t.column("activity_tags");
-    for (const auto& row : t.rows) {
-        std::stringstream in(row[tags]);
-        std::string tag;
-        while (std::getline(in, tag, ';'))
-            if (!tag.empty()) out[row[id]].push_back(canonical_activity(tag));
-    }
-    return out;
 }
 
 // A captured clip's copy at its capture rate (dataset_builder.hpp: capture_joints/ and clips.csv).
@@ -158,7 +144,7 @@ public:
         : dataset_(dataset), vocab_(WordVectors::load(vocab.empty() ? default_vocab() : vocab)), sif_(vocab_, 1e-4),
           clips_(Hml3dDataset(dataset, "train").clips()), capture_(capture_copies(dataset)) {
         if (clips_.empty()) throw Error(dataset, "train split", "at least one clip to retrieve");
-        const auto tags = clip_tags(dataset);
+        const auto tags = read_clip_activities(dataset);
         std::optional<MotionActivityClassifier> classifier;
         if (!activity_reference.empty()) classifier = MotionActivityClassifier::load(activity_reference);
         for (const MotionClip& c : clips_) {
@@ -181,7 +167,7 @@ public:
         capture_rate_.clear();
         for (size_t i = 0; i < prompts.size(); ++i) {
             std::mt19937_64 rng(seeds[i]);
-            const std::string asked = activities[i].empty() ? activity_named_in(prompts[i]) : canonical_activity(activities[i]);
+            const std::string asked = activity_asked(activities[i], prompts[i]);
             Tier tier = Tier::any;
             const std::vector<size_t> best = nearest_clips(prompts[i], candidates(asked, &tier));
             const size_t pick = best[std::uniform_int_distribution<size_t>(0, best.size() - 1)(rng)];
@@ -293,7 +279,7 @@ public:
             for (int r = 0; r < frames; ++r) start.row(r) = f.row(std::min<Eigen::Index>(r, f.rows() - 1));
             starts.push_back(std::move(start));
         }
-        return diffusion_.generate_from(prompts, seeds, frames, starts, strength_);
+        return diffusion_.generate_from(prompts, activities, seeds, frames, starts, strength_);
     }
 
     nlohmann::json describe() const override {

@@ -39,7 +39,8 @@ public:
     virtual ~MotionSource() = default;
     // One motion per prompt: SMPL-22 joints (m, Y up, floor at y = 0) at 20 fps, `frames` long (retrieval: at
     // most). Prompt i draws only from seeds[i], so a motion does not depend on the other prompts of the call.
-    // activities[i]: the prompt set's label of prompt i ("" = unknown; the diffusion model reads only the text).
+    // activities[i]: the prompt set's label of prompt i ("" = unknown): the activity retrieval asks for, and the one
+    // whose captions a model's caption anchor blends in (text_to_motion.hpp).
     virtual std::vector<JointSequence> generate(const std::vector<std::string>& prompts, const std::vector<std::string>& activities,
                                                 const std::vector<uint64_t>& seeds, int frames) = 0;
     // What produced the motions, for the synthesis record (model folder, training step, sampler...).
