@@ -57,7 +57,7 @@ void run(SampleArgs a) {
     char name[32];
     for (size_t i = 0; i < motions.size(); ++i) {
         std::snprintf(name, sizeof name, "%04zu", i);
-        record["samples"].push_back({{"id", name}, {"prompt", prompts[i].text}, {"activity", prompts[i].activity}, {"seed", a.options.seed + i}});
+        record["samples"].push_back({{"id", name}, {"prompt", prompts[i].text}, {"activity", prompts[i].activity}, {"activity_asked", a.options.activities[i]}, {"seed", a.options.seed + i}});
     }
     // Serialised before the motions are written: samples.json is what says the folder is complete.
     const std::string samples_json = record.dump(2) + "\n";
