@@ -8,8 +8,8 @@
 // less (models/default, first draws that show their activity: 62-63 of 80 when the prompts are training captions
 // of the eight classes, 37 of 80 for prompts/realworld.tsv, 26 of 80 for its paraphrases). Nearness by words
 // alone is not enough: in GloVe "up" and "down", "stands" and "lies" are neighbours (the nearest caption of
-// "The person climbs up a flight of stairs." is "a person walks down a flight of stairs"), so the activity, when
-// known, chooses the candidates and the words choose among them.
+// "The person climbs up a flight of stairs." is "a person walks down a flight of stairs"), so the activity chooses
+// the candidates and the words choose among them.
 #pragma once
 #include <Eigen/Core>
 #include <string>
@@ -36,7 +36,8 @@ public:
     // The k captions of activity `activity` (canonical; shows_activity, so "stairs" takes either direction) most
     // similar to `prompt`, most similar first (ties: the earlier caption); fewer when the activity has fewer, none
     // when it is "" or has none. Across activities the nearest caption by words is too often another activity's
-    // (see above; as an anchor it cost first draws: 35 and 29 of 80 at weights 0.5 and 1, against 37 without).
+    // (see above; as an anchor it cost first draws: 35 and 29 of 80 at weights 0.5 and 1, against 37 without,
+    // seed 0).
     std::vector<CaptionNeighbour> nearest(const std::string& prompt, size_t k, const std::string& activity) const;
     const std::vector<Prompt>& captions() const { return captions_; }
 
