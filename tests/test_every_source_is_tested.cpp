@@ -28,6 +28,7 @@ const std::map<std::string, Coverage> kCoveredBy = {
     {"body/procedural_body", {"test_body.cpp", "#include \"body/procedural_body.hpp\""}},
     {"core/error", {"test_parse.cpp", "f.csv: line 3: expected a number (got 'nan')"}},  // Error's one-line form, exactly
     {"core/zip_archive", {"test_realworld.cpp", "#include \"core/zip_archive.hpp\""}},
+    {"data/clip_activities", {"test_caption_anchor.cpp", "running;jogging"}},  // clips.csv's tags, folded to canonical names
     {"diffusion/mdm_io", {"test_mdm.cpp", "model forward"}},
     {"diffusion/text_to_motion", {"test_clip.cpp", "#include \"diffusion/text_to_motion.hpp\""}},
     {"har/class_map", {"test_har.cpp", "#include \"har/class_map.hpp\""}},
@@ -44,10 +45,12 @@ const std::map<std::string, Coverage> kCoveredBy = {
     {"report/html_report", {"test_report.cpp", "#include \"report/html_report.hpp\""}},
     {"report/pose_strip", {"test_report.cpp", "#include \"report/pose_strip.hpp\""}},
     {"report/signal_stats", {"test_report.cpp", "#include \"report/signal_stats.hpp\""}},
+    {"text/caption_index", {"test_caption_anchor.cpp", "#include \"text/caption_index.hpp\""}},
     {"text/clip_bpe", {"test_clip.cpp", "#include \"text/clip_bpe.hpp\""}},
     {"text/nn/clip_text_encoder", {"test_clip.cpp", "#include \"text/nn/clip_text_encoder.hpp\""}},
     {"text/prompt_set", {"test_prompts.cpp", "#include \"text/prompt_set.hpp\""}},
     {"text/sentence_similarity", {"test_text.cpp", "#include \"text/sentence_similarity.hpp\""}},
+    {"text/training_captions", {"test_caption_anchor.cpp", "#include \"text/training_captions.hpp\""}},
     {"text/utf8", {"test_text.cpp", "#include \"text/utf8.hpp\""}},
     {"text/word_tokenizer", {"test_text.cpp", "#include \"text/word_tokenizer.hpp\""}},
     {"text/word_vectors", {"test_motion_source.cpp", "#include \"text/word_vectors.hpp\""}},
