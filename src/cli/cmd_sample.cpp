@@ -40,6 +40,7 @@ void run(SampleArgs a) {
     });
     const std::vector<Prompt> prompts = a.prompt.empty() ? read_prompt_set(a.prompts) : std::vector<Prompt>{{"", a.prompt}};
     std::unique_ptr<MotionModel> model = load_motion_model(a.model, global_options().device);
+    const double anchor_weight = model->caption_anchor_weight(a.options.caption_anchor);
     std::vector<std::string> texts;
     for (const Prompt& p : prompts) {
         texts.push_back(p.text);
@@ -51,7 +52,7 @@ void run(SampleArgs a) {
     nlohmann::json record = {{"model", std::filesystem::absolute(a.model).string()}, {"model_training", model->meta.value("training", nlohmann::json{})},
                              {"sampler", sampler_name(a.options.sampler)}, {"steps", denoiser_calls(a.options.sampler, a.options.steps, model->schedule.steps)},
                              {"guidance", a.options.guidance}, {"eta", a.options.eta},
-                             {"caption_anchor", a.options.caption_anchor.value_or(model->anchor.weight)}, {"frames", a.options.frames}, {"fps", 20},
+                             {"caption_anchor", anchor_weight}, {"frames", a.options.frames}, {"fps", 20},
                              {"seed", a.options.seed}, {"device", global_options().device}, {"sampling_seconds", seconds},
                              {"samples", nlohmann::json::array()}};
     char name[32];

@@ -115,10 +115,16 @@ void load_caption_anchor(MotionModel& model, const std::string& dir, const nlohm
 
 }  // namespace
 
+double MotionModel::caption_anchor_weight(std::optional<double> asked) const {
+    const double weight = asked.value_or(anchor.weight);
+    if (weight > 0 && !anchor.index)
+        throw Error("--caption-anchor", "model", "0 (the model folder has no caption anchor: model.json caption_anchor)", std::to_string(weight));
+    return weight;
+}
+
 torch::Tensor MotionModel::condition(const std::vector<std::string>& prompts, const std::vector<std::string>& activities, double weight) {
     const torch::Tensor own = encode_text(prompts);
-    if (weight == 0 || prompts.empty()) return own;
-    if (!anchor.index) throw Error("--caption-anchor", "model", "0 (the model folder has no caption anchor: model.json caption_anchor)", std::to_string(weight));
+    if (caption_anchor_weight(weight) == 0 || prompts.empty()) return own;
     std::vector<std::string> neighbours;  // prompt-major: K per prompt, fewer when its activity has fewer captions
     std::vector<int64_t> first{0};
     for (size_t i = 0; i < prompts.size(); ++i) {
@@ -214,7 +220,7 @@ std::vector<FeatureMatrix> sample_motions(MotionModel& model, const std::vector<
         }
         const std::vector<std::string> activities =
             o.activities.empty() ? std::vector<std::string>{} : std::vector<std::string>(o.activities.begin() + static_cast<std::ptrdiff_t>(start), o.activities.begin() + static_cast<std::ptrdiff_t>(start + n));
-        const torch::Tensor text = model.condition(batch, activities, o.caption_anchor.value_or(model.anchor.weight));
+        const torch::Tensor text = model.condition(batch, activities, model.caption_anchor_weight(o.caption_anchor));
         const torch::Tensor lengths = torch::full({static_cast<int64_t>(n)}, o.frames, torch::TensorOptions().dtype(torch::kInt64).device(model.device));
         const X0Predictor denoiser = [&](const torch::Tensor& x, const torch::Tensor& t) {
             return model.mdm->forward_guided(x, t, text, o.guidance, lengths);

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -58,9 +59,12 @@ struct MotionModel {
     CaptionAnchor anchor;                // searched with the GloVe vocabulary: glove_transformer models only
 
     torch::Tensor encode_text(const std::vector<std::string>& captions);  // [B, text_dim] by whichever encoder is loaded
+    // The caption anchor's weight a run samples with: `asked` when given, else the folder's. Error naming
+    // --caption-anchor for a weight above 0 on a folder without an anchor (callers ask before any output).
+    double caption_anchor_weight(std::optional<double> asked) const;
     // The features [B, text_dim] the prompts condition the denoiser with: encode_text blended by the caption
-    // anchor at weight w; activities: empty, or one canonical name per prompt ("" = unknown). Error naming
-    // --caption-anchor for w > 0 on a folder without an anchor.
+    // anchor at weight w (checked as caption_anchor_weight does); activities: empty, or one canonical name per
+    // prompt ("" = unknown).
     torch::Tensor condition(const std::vector<std::string>& prompts, const std::vector<std::string>& activities, double weight);
     torch::nn::Module& text_module();                                     // that encoder
 };

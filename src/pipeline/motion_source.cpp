@@ -28,7 +28,9 @@ namespace {
 class DiffusionSource : public MotionSource {
 public:
     DiffusionSource(const std::string& dir, const SampleOptions& sampling, const std::string& device)
-        : dir_(dir), sampling_(sampling), model_(load_motion_model(dir, device)) {}
+        : dir_(dir), sampling_(sampling), model_(load_motion_model(dir, device)) {
+        model_->caption_anchor_weight(sampling_.caption_anchor);  // refused here, before a synthesis writes anything
+    }
 
     std::vector<JointSequence> generate(const std::vector<std::string>& prompts, const std::vector<std::string>& activities,
                                         const std::vector<uint64_t>& seeds, int frames) override {
@@ -54,7 +56,7 @@ public:
     nlohmann::json describe() const override {
         return {{"kind", "diffusion"}, {"model", dir_}, {"training_step", model_->meta.value("training", nlohmann::json::object()).value("step", 0)},
                 {"sampler", sampler_name(sampling_.sampler)}, {"steps", denoiser_calls(sampling_.sampler, sampling_.steps, model_->schedule.steps)},
-                {"guidance", sampling_.guidance}, {"eta", sampling_.eta}, {"caption_anchor", sampling_.caption_anchor.value_or(model_->anchor.weight)},
+                {"guidance", sampling_.guidance}, {"eta", sampling_.eta}, {"caption_anchor", model_->caption_anchor_weight(sampling_.caption_anchor)},
                 {"caption_anchor_neighbours", model_->anchor.neighbours}};
     }
 
