@@ -299,3 +299,16 @@ TEST(DatasetBuilder, CapturedClipsKeepTheirCaptureRateWhereNew_jointsAre) {
     EXPECT_TRUE(fs::is_empty(o.out_dir + "/capture_joints"));
     for (const auto& row : read_csv(o.out_dir + "/clips.csv").rows) EXPECT_TRUE(row[clips.column("capture_fps")].empty());
 }
+
+// summary.json's train_draw_share counts what the loader draws: train clips of 40 to 199 frames, so a 13-frame hop
+// (HDM05's single hops, 0.65 s) and a test clip are not in it.
+TEST(DatasetBuilder, TrainDrawShareCountsOnlyClipsTheLoaderKeeps) {
+    CsvTable clips;
+    clips.header = {"activity_tags", "frames", "split"};
+    clips.rows = {{"walking", "84", "train"}, {"jumping", "13", "train"}, {"jumping", "60", "train"},
+                  {"jumping", "200", "train"}, {"walking", "40", "train"}, {"running", "90", "test"}};
+    const nlohmann::json share = train_draw_share(clips);
+    EXPECT_EQ(share.size(), 2u);
+    EXPECT_DOUBLE_EQ(share["walking"].get<double>(), 2.0 / 3.0);
+    EXPECT_DOUBLE_EQ(share["jumping"].get<double>(), 1.0 / 3.0);
+}

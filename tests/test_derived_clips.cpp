@@ -6,6 +6,8 @@
 #include <cmath>
 
 #include "data/derived_clips.hpp"
+#include "data/hml3d_dataset.hpp"
+#include "motion/foot_contacts.hpp"
 #include "motion/mocap_import.hpp"
 #include "motion/motion_edit.hpp"
 #include "motion/motion_quality.hpp"
@@ -153,13 +155,14 @@ double pelvis_height_range(const JointSequence& m) {
     return hi - lo;
 }
 
-TEST(DerivedClips, ACapturedJumpGivesOneJumpOfAnotherHeight) {
+TEST(DerivedClips, ACapturedJumpGivesOneJumpOfAnotherHeightAndAShortOneASeries) {
     std::string archive;
     SHARED_OR_SKIP(archive, "mocap/hdm05_amc_native.tar.xz");
     const JointSequence hop = shared_clip("mocap/hdm05_amc_native.tar.xz", kHop);
+    ASSERT_LT(hop.num_frames / hop.fps, 2.0);  // one hop: shorter than the training keeps
     DeriveReport report;
     const std::vector<DerivedClip> clips = derive_clips(hop, "jumping", kHop, report);
-    ASSERT_EQ(clips.size(), 1u) << "refused " << report.refused << ", failed quality " << report.failed_quality;
+    ASSERT_EQ(clips.size(), 2u) << "refused " << report.refused << ", failed quality " << report.failed_quality;
     const DerivedClip& c = clips[0];
     EXPECT_EQ(c.method, "jump_rescaled");
     EXPECT_EQ(c.activity, "jumping");
@@ -172,6 +175,26 @@ TEST(DerivedClips, ACapturedJumpGivesOneJumpOfAnotherHeight) {
     EXPECT_TRUE(quality_failures(score_motion(c.joints), default_quality_thresholds()).empty());
     EXPECT_LT(max_bone_change(c.joints), 1e-6);
     EXPECT_EQ(c.captions.size(), 3u);
+
+    // The series: kJumpsPerSeriesMin-Max rescaled hops in a row, long enough to train on, as many flights.
+    const DerivedClip& series = clips[1];
+    EXPECT_EQ(series.method, "jump_series");
+    EXPECT_EQ(series.activity, "jumping");
+    const int jumps = series.parameters["jumps"].get<int>();
+    EXPECT_GE(jumps, kJumpsPerSeriesMin);
+    EXPECT_LE(jumps, kJumpsPerSeriesMax);
+    ASSERT_EQ(series.parameters["time_scales"].size(), static_cast<size_t>(jumps));
+    EXPECT_GE(series.joints_20fps.num_frames, Hml3dDataset::kMinFrames);
+    EXPECT_LT(series.joints_20fps.num_frames, Hml3dDataset::kMaxFramesExclusive);
+    const std::vector<bool> left = stance_frames(series.joints, Foot::left), right = stance_frames(series.joints, Foot::right);
+    int flights = 0;
+    for (int f = 1; f < series.joints.num_frames; ++f)
+        flights += !left[static_cast<size_t>(f)] && !right[static_cast<size_t>(f)] &&
+                   (left[static_cast<size_t>(f - 1)] || right[static_cast<size_t>(f - 1)]);
+    EXPECT_EQ(flights, jumps);
+    EXPECT_TRUE(quality_failures(score_motion(series.joints_20fps), default_quality_thresholds()).empty());
+    EXPECT_LT(max_bone_change(series.joints), 1e-6);
+    EXPECT_EQ(series.captions.size(), 3u);
 }
 
 }  // namespace

@@ -40,6 +40,7 @@ const std::map<std::string, Coverage> kCoveredBy = {
     {"har/nn/har_training", {"test_har.cpp", "#include \"har/nn/har_training.hpp\""}},
     {"har/windowing", {"test_har.cpp", "#include \"har/windowing.hpp\""}},
     {"imu/realworld_export", {"test_cli_imu_synth.cpp", "--format realworld"}},
+    {"motion/jump_series", {"test_jump_rescale.cpp", "#include \"motion/jump_series.hpp\""}},
     {"motion/skeleton", {"test_foot_contacts.cpp", "#include \"motion/skeleton.hpp\""}},
     {"report/html_page", {"test_report.cpp", "#include \"report/html_page.hpp\""}},
     {"report/html_report", {"test_report.cpp", "#include \"report/html_report.hpp\""}},

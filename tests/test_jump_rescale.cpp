@@ -1,5 +1,6 @@
-// Jumps rescaled in height: a procedural jump whose flight is an exact projectile, so the derived flight's
-// acceleration, apex and duration have known answers (g, k^2 h, k T).
+// Jumps rescaled in height and chained into series: a procedural jump whose flight is an exact projectile, so the
+// derived flight's acceleration, apex and duration have known answers (g, k^2 h, k T), and a series of it travels
+// and turns by known amounts.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -10,6 +11,7 @@
 #include "imu/imu_synthesis.hpp"
 #include "motion/foot_contacts.hpp"
 #include "motion/jump_rescale.hpp"
+#include "motion/jump_series.hpp"
 #include "motion/motion_edit.hpp"
 #include "motion/skeleton.hpp"
 #include "motion/two_bone_ik.hpp"
@@ -148,6 +150,54 @@ TEST(JumpRescale, RefusesScalesOutOfRangeAndShortClips) {
     EXPECT_TRUE(test::contains(test::error_message([&] { rescale_jump(procedural_jump(), o); }), "time_scale"));
     o.time_scale = 1.1;
     EXPECT_TRUE(test::contains(test::error_message([&] { rescale_jump(slice_frames(procedural_jump(), 0, 5), o); }), "0.5 s"));
+}
+
+// The jump turned about the vertical through the origin by `angle` (rad, x towards z).
+JointSequence turned(JointSequence m, double angle) {
+    const double c = std::cos(angle), s = std::sin(angle);
+    for (Vector3d& p : m.positions) p = Vector3d(c * p.x() - s * p.z(), p.y(), s * p.x() + c * p.z());
+    return m;
+}
+
+TEST(JumpSeries, ChainedJumpsKeepEachFlightAndTravelOnFromEachLanding) {
+    const JointSequence jump = procedural_jump();
+    const JumpSeriesOptions o;  // 0.1 s: 2 frames at 20 fps
+    const int blend = 2, step = jump.num_frames - blend;
+    const JointSequence m = chain_jumps({jump, jump, jump}, o);
+    ASSERT_EQ(m.num_frames, 3 * jump.num_frames - 2 * blend);
+    for (int i = 0; i < 3; ++i) {
+        // Each jump's flight is the captured one: the blends fall where both feet stand.
+        const MeasuredFlight f = measure_jump_flight(slice_frames(m, i * step, i * step + jump.num_frames));
+        EXPECT_EQ(f.frames, kJumpFlightFrames - 1) << "jump " << i;
+        EXPECT_NEAR(f.acceleration, -kGravity, 1e-6) << "jump " << i;
+    }
+    // Each jump starts where the last landed: three jumps travel three times as far, straight on.
+    EXPECT_NEAR(m.at(m.num_frames - 1, pelvis).z() - m.at(0, pelvis).z(), 3 * kJumpTravel, 1e-6);
+    EXPECT_NEAR(m.at(m.num_frames - 1, pelvis).x(), m.at(0, pelvis).x(), 1e-6);
+    EXPECT_LT(max_bone_length_error(m, bone_lengths(jump, 0)), 1e-6);
+}
+
+TEST(JumpSeries, ANextJumpTurnsToFaceTheWayThePreviousOneEnds) {
+    const JointSequence jump = procedural_jump();                // faces and travels +Z
+    const JointSequence sideways = turned(jump, -M_PI / 2);      // faces and travels +X
+    const JointSequence m = chain_jumps({jump, sideways}, JumpSeriesOptions{});
+    const Vector3d facing = body_facing(m, m.num_frames - 1);
+    EXPECT_NEAR(facing.z(), 1.0, 1e-6);
+    EXPECT_NEAR(m.at(m.num_frames - 1, pelvis).z() - m.at(0, pelvis).z(), 2 * kJumpTravel, 1e-6);
+    EXPECT_NEAR(m.at(m.num_frames - 1, pelvis).x() - m.at(0, pelvis).x(), 0.0, 1e-6);
+}
+
+TEST(JumpSeries, RefusesOneJumpMixedRatesAndBlendsOutOfRange) {
+    const JointSequence jump = procedural_jump();
+    EXPECT_TRUE(test::contains(test::error_message([&] { chain_jumps({jump}, JumpSeriesOptions{}); }), "two jumps"));
+    JointSequence faster = jump;
+    faster.fps = 40;
+    EXPECT_TRUE(test::contains(test::error_message([&] { chain_jumps({jump, faster}, JumpSeriesOptions{}); }), "one frame rate"));
+    JumpSeriesOptions o;
+    o.blend_s = 0.5;
+    EXPECT_TRUE(test::contains(test::error_message([&] { chain_jumps({jump, jump}, o); }), "blend_s"));
+    EXPECT_TRUE(test::contains(test::error_message([&] { chain_jumps({jump, slice_frames(jump, 0, 5)}, JumpSeriesOptions{}); }),
+                               "three blend windows"));
 }
 
 }  // namespace

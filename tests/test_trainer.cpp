@@ -87,6 +87,18 @@ TEST(Trainer, ConfigIsStrict) {
     EXPECT_NE(replaced("[train]\n", "[train]\nprecision = \"fp16\"\n").find("train.precision"), std::string::npos);
 }
 
+// The training configurations under experiments/ (those asked of a GPU elsewhere among them) read: a typo there
+// would only show on the machine that runs them.
+TEST(Trainer, EveryShippedTrainingConfigReads) {
+    int read = 0;
+    for (const auto& e : fs::recursive_directory_iterator(std::string(T2IMU_SOURCE_DIR) + "/experiments")) {
+        if (e.path().extension() != ".toml" || read_file_text(e.path().string()).find("\n[train]") == std::string::npos) continue;
+        EXPECT_NO_THROW(read_train_config(e.path().string())) << e.path();
+        ++read;
+    }
+    EXPECT_GE(read, 13);  // train-default, -augmented, -long, lacc-sweep/ 4, lacc-sweep-gpu/ 3, paraphrase-finetune/ 2, continue/
+}
+
 TEST(Trainer, EmaDecayWarmsUpSoTheInitialisationIsForgotten) {
     EXPECT_DOUBLE_EQ(ema_decay_at(0.9999, 0), 0.1);
     EXPECT_DOUBLE_EQ(ema_decay_at(0.9999, 90), 91.0 / 100.0);

@@ -16,6 +16,7 @@
 #include "core/progress.hpp"
 #include "data/captions.hpp"
 #include "data/derived_clips.hpp"
+#include "data/hml3d_dataset.hpp"
 #include "data/mean_std.hpp"
 #include "data/splits.hpp"
 #include "motion/humanml3d.hpp"
@@ -293,18 +294,23 @@ void write_recording(const BuildOptions& o, const std::string& tmp, const ClipSo
     }
 }
 
-// Per activity tag set ("walking", "jumping;standing", ...), the share of the training loader's draws: it visits
-// every train-split clip once an epoch (hml3d_dataset.hpp), so the share of train clips.
+}  // namespace
+
 nlohmann::json train_draw_share(const CsvTable& clips) {
-    const size_t tags = clips.column("activity_tags"), split = clips.column("split");
+    const size_t tags = clips.column("activity_tags"), split = clips.column("split"), frames = clips.column("frames");
     std::map<std::string, double> count;
     double total = 0;
     for (const auto& row : clips.rows)
-        if (row[split] == "train") { count[row[tags].empty() ? "untagged" : row[tags]] += 1; total += 1; }
+        if (row[split] == "train" && Hml3dDataset::usable_length(std::stol(row[frames]))) {
+            count[row[tags].empty() ? "untagged" : row[tags]] += 1;
+            total += 1;
+        }
     nlohmann::json out = nlohmann::json::object();
     for (const auto& [tag, n] : count) out[tag] = n / total;
     return out;
 }
+
+namespace {
 
 BuildSummary build_into(const BuildOptions& o, const std::string& tmp) {
     const std::map<std::string, ClipSource> sources = read_sources(o);

@@ -24,8 +24,11 @@
 // by at least 2 s, its times made relative to the chunk. The set is built in a temporary folder and renamed into
 // place when complete.
 #pragma once
+#include <nlohmann/json.hpp>
 #include <set>
 #include <string>
+
+#include "core/csv.hpp"
 
 namespace t2imu {
 
@@ -68,5 +71,10 @@ struct BuildSummary {
 };
 
 BuildSummary build_dataset(const BuildOptions& options);
+
+// Per activity tag set of clips.csv ("walking", "jumping;standing", ...), the share of the training loader's draws
+// (summary.json's train_draw_share): it visits every train-split clip of a usable length once an epoch
+// (hml3d_dataset.hpp; a 0.65 s hop is never drawn), so the share of those clips.
+nlohmann::json train_draw_share(const CsvTable& clips);
 
 }  // namespace t2imu

@@ -8,7 +8,9 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "data/hml3d_dataset.hpp"
 #include "motion/jump_rescale.hpp"
+#include "motion/jump_series.hpp"
 #include "motion/lying_still.hpp"
 #include "motion/lying_turn.hpp"
 #include "motion/motion_quality.hpp"
@@ -67,7 +69,12 @@ const std::vector<std::string>& captions_for(const std::string& method) {
     static const std::vector<std::string> jump = {
         "a person jumps", "someone jumps up and lands again", "a person jumps off the ground with both feet",
         "the person makes a jump", "a man jumps and lands on his feet", "someone is jumping"};
+    static const std::vector<std::string> series = {
+        "a person jumps several times in a row", "someone keeps jumping, landing and taking off again",
+        "a person makes one jump after another", "the person jumps again and again", "a man does repeated jumps",
+        "someone jumps over and over with both feet"};
     if (method == "jump_rescaled") return jump;
+    if (method == "jump_series") return series;
     if (method == "lying_turn") return turn;
     return method == "stairs_up" ? up : method == "stairs_down" ? down : method == "lying_still" ? lie : sit;
 }
@@ -260,6 +267,38 @@ void derive_jump_clip(const JointSequence& jump, const std::string& file, Derive
     out.push_back(std::move(c));
 }
 
+// A single jump shorter than the training keeps (hml3d_dataset.hpp: 40 frames at 20 fps) also gives a series of
+// kJumpsPerSeries.. of it, each jump of its own height (time scale uniform in [0.9, 1.1]).
+void derive_jump_series(const JointSequence& jump, const std::string& file, DeriveReport& report, std::vector<DerivedClip>& out) {
+    if (jump.num_frames >= Hml3dDataset::kMinFrames / smpl22::kFps * jump.fps) return;
+    const uint64_t seed = file_seed(file) + 1;
+    std::mt19937_64 rng(seed);
+    const int count = std::uniform_int_distribution<int>(kJumpsPerSeriesMin, kJumpsPerSeriesMax)(rng);
+    std::vector<JointSequence> jumps;
+    std::vector<double> scales;
+    DerivedClip c;
+    try {
+        for (int i = 0; i < count; ++i) {
+            JumpRescaleOptions o;
+            o.time_scale = uniform(rng, 0.9, 1.1);
+            scales.push_back(o.time_scale);
+            jumps.push_back(rescale_jump(jump, o));
+        }
+        c.joints = chain_jumps(jumps, JumpSeriesOptions{});
+    } catch (const Error&) {
+        ++report.refused;  // too short, or never on both feet
+        return;
+    }
+    c.joints_20fps = at_dataset_rate(c.joints);
+    if (!passes(c.joints_20fps)) { ++report.failed_quality; return; }
+    c.method = "jump_series";
+    c.activity = "jumping";
+    c.parameters = {{"jumps", count}, {"time_scales", scales}, {"blend_s", JumpSeriesOptions{}.blend_s}};
+    c.seed = seed;
+    c.captions = pick_captions(captions_for(c.method), rng);
+    out.push_back(std::move(c));
+}
+
 }  // namespace
 
 std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::string& tags, const std::string& file,
@@ -273,7 +312,10 @@ std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::
         derive_lying_clips(captured, file, report, out);
         if (lying_turns) derive_lying_turn_clips(captured, file, report, out);
     }
-    if (t.count("jumping")) derive_jump_clip(captured, file, report, out);
+    if (t.count("jumping")) {
+        derive_jump_clip(captured, file, report, out);
+        derive_jump_series(captured, file, report, out);
+    }
     return out;
 }
 

@@ -36,7 +36,9 @@
 //             0.73, these 0.74 and 1.37.
 //   jumping   one clip of the jump rescaled, lower or higher by the seed's parity: time scale k uniform in
 //             [0.88, 0.95] or [1.05, 1.12], so flights 0.77-0.90 or 1.10-1.25 times as high: within the spread of
-//             jump heights between healthy adults, which is wider.
+//             jump heights between healthy adults, which is wider. A jump too short to train on (under 2 s) also
+//             gives kJumpsPerSeriesMin-Max of itself in a row (jump_series.hpp), each rescaled with k uniform in
+//             [0.9, 1.1]: a HAR data set's jumping is jumping over and over.
 // Every edit runs at the rate of the recording it is given (the builder gives the capture rate where that is over
 // 20 fps, so a derived clip keeps the texture the capture has: Bandai Namco walks 30 fps, ReActIdle 24, HDM05 60).
 // A clip is kept only when it passes motion_quality's default thresholds at 20 fps (the dataset's rate, what the
@@ -60,9 +62,14 @@ constexpr double kSitPaceFactorMin = 0.9;
 constexpr double kSitPaceFactorMax = 1.45;
 constexpr int kLyingPerRecording = 2;
 constexpr int kLyingTurnsPerRecording = 2;
+// Jumps in the series made from a single jump that is too short to train on (jump_series.hpp): 0.5-0.8 s each
+// after rescaling, so at least 2.1 s (the training's 2 s minimum) and at most 6 s in all.
+constexpr int kJumpsPerSeriesMin = 5;
+constexpr int kJumpsPerSeriesMax = 8;
 
 struct DerivedClip {
-    std::string method;                 // "stairs_up", "stairs_down", "sit_down_stand_up", "lying_still", "lying_turn", "jump_rescaled"
+    // "stairs_up", "stairs_down", "sit_down_stand_up", "lying_still", "lying_turn", "jump_rescaled", "jump_series"
+    std::string method;
     std::string activity;               // its activity tag: stairs_up, stairs_down, sitting, lying, jumping
     JointSequence joints;               // at the source recording's rate, floor at y = 0 under the lowest joint
     JointSequence joints_20fps;         // the same at 20 fps (Catmull-Rom), as quality-scored and as the dataset holds it

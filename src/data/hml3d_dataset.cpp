@@ -26,10 +26,6 @@ std::vector<std::string> read_ids(const std::string& path) {
     return ids;
 }
 
-bool usable_length(Eigen::Index frames) {
-    return frames >= Hml3dDataset::kMinFrames && frames < Hml3dDataset::kMaxFramesExclusive;
-}
-
 }  // namespace
 
 Hml3dDataset::Hml3dDataset(const std::string& dir, const std::string& split) {

@@ -40,6 +40,8 @@ public:
     static constexpr int kMinFrames = 40;
     static constexpr int kMaxFramesExclusive = 200;
     static constexpr int kUnitLength = 4;
+    // Whether a motion (or caption span) of `frames` frames at 20 fps is one the loader keeps.
+    static bool usable_length(long frames) { return frames >= kMinFrames && frames < kMaxFramesExclusive; }
 
     // split: "train", "val", "test" or "all" (the ids of DIR/<split>.txt).
     Hml3dDataset(const std::string& dir, const std::string& split);
