@@ -179,9 +179,17 @@ TEST(Trainer, LossFallsResumeContinuesExactlyAndFinetuneStartsFromTheWeights) {
     Mdm mdm(mc);
     EXPECT_NO_THROW(load_mdm_weights(mdm, dir + "/straight/weights.safetensors"));
 
-    // Fine-tuning with L_acc from the trained model: step count restarts, starting loss already low.
+    // Fine-tuning with L_acc from the trained model: step count restarts, starting loss already low. The dataset's
+    // Mean/Std moved since (a rebuild with more clips): the fine-tuning keeps the base's feature space.
+    const NdArray base_mean = read_npy(dir + "/straight/Mean.npy");
+    std::vector<float> moved = base_mean.to<float>();
+    for (float& m : moved) m += 0.5f;
+    write_npy(data + "/Mean.npy", NdArray::from(moved, base_mean.shape));
     const std::string tune = test::write_tiny_train_config(dir, data, dir + "/tuned", "[loss]\nlambda_acc = 1.0\n");
     train_mdm(read_train_config(tune), false, dir + "/straight", 5);
+    EXPECT_EQ(read_npy(dir + "/tuned/Mean.npy").to<float>(), base_mean.to<float>());
+    train_mdm(read_train_config(tune), true, "", 8);  // resumed: its own saved space, still the base's
+    EXPECT_EQ(read_npy(dir + "/tuned/Mean.npy").to<float>(), base_mean.to<float>());
     std::ifstream tuned(dir + "/tuned/metrics.jsonl");
     std::string first;
     std::getline(tuned, first);

@@ -48,6 +48,8 @@ public:
 
     const std::vector<MotionClip>& clips() const { return clips_; }
     const FeatureStats& stats() const { return stats_; }
+    // Normalise batches with these statistics instead of DIR's Mean/Std (a fine-tuning keeps its base model's).
+    void use_stats(const FeatureStats& stats) { stats_ = stats; }
     int skipped_ids() const { return skipped_; }  // listed ids with no usable motion or caption
 
     // The next batch of an endless sequence of seeded epochs: each epoch visits every clip once, shuffled.

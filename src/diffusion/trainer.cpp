@@ -498,6 +498,11 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
     if (c.threads > 0) set_torch_threads(c.threads);
     Hml3dDataset data(c.dataset, c.split);
     if (data.clips().empty()) throw Error(c.dataset, c.split, "at least one usable clip (40 to 199 frames with a caption)");
+    // The feature space a run trains in: a fine-tuning's base model's (its weights were fitted to it, and a dataset
+    // rebuilt with more clips has a slightly different Mean/Std), a resumed run's own as it saved it, else the
+    // dataset's. The model folder written holds the same.
+    const std::string stats_from = resume ? c.out : init_from;
+    if (!stats_from.empty()) data.use_stats(read_feature_stats(stats_from + "/Mean.npy", stats_from + "/Std.npy"));
     data.seed(c.seed);
     const WordVectors vocab = WordVectors::load(c.vocab);
     const torch::Device device = training_device(c.device, c.processes);
