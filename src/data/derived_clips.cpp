@@ -268,7 +268,7 @@ void derive_jump_clip(const JointSequence& jump, const std::string& file, Derive
 }
 
 // A single jump shorter than the training keeps (hml3d_dataset.hpp: 40 frames at 20 fps) also gives a series of
-// kJumpsPerSeries.. of it, each jump of its own height (time scale uniform in [0.9, 1.1]).
+// kJumpsPerSeriesMin to kJumpsPerSeriesMax of it, each jump of its own height (time scale uniform in [0.9, 1.1]).
 void derive_jump_series(const JointSequence& jump, const std::string& file, DeriveReport& report, std::vector<DerivedClip>& out) {
     if (jump.num_frames >= Hml3dDataset::kMinFrames / smpl22::kFps * jump.fps) return;
     const uint64_t seed = file_seed(file) + 1;
