@@ -1,4 +1,4 @@
-// Derived clips from shared captured recordings: stairs from a forward walk, sitting from idle standing; what
+// Derived clips from shared captured recordings: stairs (a flight, and a round trip) from a forward walk, sitting from idle standing; what
 // cannot be a source gives nothing; the draw is the same every time.
 #include <gtest/gtest.h>
 
@@ -31,13 +31,14 @@ JointSequence shared_clip(const std::string& archive, const std::string& file) {
 // Largest change of any bone's length from its length at frame 0 (m).
 double max_bone_change(const JointSequence& m) { return max_bone_length_error(m, bone_lengths(m, 0)); }
 
-TEST(DerivedClips, AForwardWalkGivesOneFlightOfStairs) {
+TEST(DerivedClips, AForwardWalkGivesAFlightOfStairsAndARoundTrip) {
     std::string archive;
     SHARED_OR_SKIP(archive, "mocap/bandai_bvh_native.tar.xz");
     const JointSequence walk = shared_clip("mocap/bandai_bvh_native.tar.xz", kWalk);
     DeriveReport report;
     const std::vector<DerivedClip> clips = derive_clips(walk, "walking", kWalk, report);
-    ASSERT_EQ(clips.size(), 1u) << "refused " << report.refused << ", failed quality " << report.failed_quality;
+    // This walk is one of every other that also gives a round trip.
+    ASSERT_EQ(clips.size(), 2u) << "refused " << report.refused << ", failed quality " << report.failed_quality;
     const DerivedClip& c = clips[0];
     EXPECT_TRUE(c.method == "stairs_up" || c.method == "stairs_down");
     EXPECT_EQ(c.activity, c.method);
@@ -52,9 +53,28 @@ TEST(DerivedClips, AForwardWalkGivesOneFlightOfStairs) {
     EXPECT_GT(std::fabs(climb), 0.5 * flight);
     EXPECT_EQ(climb > 0, c.method == "stairs_up");
     EXPECT_LT(max_bone_change(c.joints), 1e-6);
-    // The same recording gives the same clip.
+    // The same recording gives the same clips.
     DeriveReport again;
-    EXPECT_EQ(derive_clips(walk, "walking", kWalk, again)[0].joints.positions, c.joints.positions);
+    const std::vector<DerivedClip> redrawn = derive_clips(walk, "walking", kWalk, again);
+    EXPECT_EQ(redrawn[0].joints.positions, c.joints.positions);
+    EXPECT_EQ(redrawn[1].joints.positions, clips[1].joints.positions);
+
+    // The round trip climbs a flight and comes down the next: its pelvis rises at least 1 m above where it starts
+    // and falls at least 1 m below its top by the end; at 20 fps it is a clip the training keeps, passing quality.
+    const DerivedClip& trip = clips[1];
+    EXPECT_EQ(trip.method, "stairs_round_trip");
+    EXPECT_EQ(trip.activity, "stairs_up;stairs_down");
+    EXPECT_EQ(trip.captions.size(), 3u);
+    double top = -1e9;
+    for (int f = 0; f < trip.joints.num_frames; ++f) top = std::max(top, trip.joints.at(f, 0).y());
+    EXPECT_GT(top - trip.joints.at(0, 0).y(), 1.0);
+    EXPECT_GT(top - trip.joints.at(trip.joints.num_frames - 1, 0).y(), 1.0);
+    EXPECT_LE(trip.joints.num_frames, frames_of(kRoundTripMaxSeconds, walk.fps));
+    EXPECT_TRUE(Hml3dDataset::usable_length(trip.joints_20fps.num_frames)) << trip.joints_20fps.num_frames << " frames";
+    JointSequence scored = trip.joints_20fps;
+    place_on_floor(scored);
+    EXPECT_TRUE(quality_failures(score_motion(scored), default_quality_thresholds()).empty());
+    EXPECT_LT(max_bone_change(trip.joints), 1e-6);
 }
 
 TEST(DerivedClips, BackwardWalksAndMixedRecordingsGiveNothing) {
@@ -62,7 +82,7 @@ TEST(DerivedClips, BackwardWalksAndMixedRecordingsGiveNothing) {
     SHARED_OR_SKIP(archive, "mocap/bandai_bvh_native.tar.xz");
     DeriveReport report;
     EXPECT_TRUE(derive_clips(shared_clip("mocap/bandai_bvh_native.tar.xz", kWalkBack), "walking", kWalkBack, report).empty());
-    EXPECT_EQ(report.refused, 1);
+    EXPECT_EQ(report.refused, 2);  // the flight and the round trip
     const JointSequence walk = shared_clip("mocap/bandai_bvh_native.tar.xz", kWalk);
     EXPECT_TRUE(derive_clips(walk, "walking;dancing", kWalk, report).empty());  // not one activity: not a source
     EXPECT_TRUE(derive_clips(walk, "running", kWalk, report).empty());

@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "data/hml3d_dataset.hpp"
+#include "motion/gait_splice.hpp"
 #include "motion/jump_rescale.hpp"
 #include "motion/jump_series.hpp"
 #include "motion/lying_still.hpp"
@@ -54,6 +55,11 @@ const std::vector<std::string>& captions_for(const std::string& method) {
     static const std::vector<std::string> down = {
         "a person walks down a flight of stairs", "someone descends the stairs step by step", "a person goes downstairs at a steady pace",
         "the person descends a staircase", "a man walks down the steps one at a time", "someone walks downstairs"};
+    static const std::vector<std::string> round_trip = {
+        "a person climbs a flight of stairs and then descends a flight", "someone walks upstairs and then downstairs",
+        "the person goes up some steps, over the landing and down the steps on the other side",
+        "a person ascends a staircase, then walks down again", "a man walks up the steps and then down another set of steps",
+        "someone climbs up a few stairs and then goes down them"};
     static const std::vector<std::string> sit = {
         "a person sits down on a chair, stays seated for a moment and stands up again", "someone takes a seat on a chair and then gets up",
         "a person stands, sits down on a chair and rises again", "the person sits on a chair for a few seconds, then stands up",
@@ -76,6 +82,7 @@ const std::vector<std::string>& captions_for(const std::string& method) {
     if (method == "jump_rescaled") return jump;
     if (method == "jump_series") return series;
     if (method == "lying_turn") return turn;
+    if (method == "stairs_round_trip") return round_trip;
     return method == "stairs_up" ? up : method == "stairs_down" ? down : method == "lying_still" ? lie : sit;
 }
 
@@ -120,6 +127,46 @@ void derive_stairs_clip(const JointSequence& walk, const std::string& file, Deri
     c.joints_20fps = std::move(at_20);
     c.parameters = {{"rise_m", o.rise_m}, {"going_m", o.going_m}, {"ascend", o.ascend}, {"trunk_lean_rad", o.trunk_lean_rad},
                     {"cadence_factor", o.cadence_factor}, {"swing_clearance_m", o.swing_clearance_m}, {"steps", steps}};
+    c.seed = seed;
+    c.captions = pick_captions(captions_for(c.method), rng);
+    out.push_back(std::move(c));
+}
+
+// Up a flight and down the next (gait_splice.hpp), both derived from one walk on stairs of one rise and going, each
+// at its direction's pace and lean; cut to the longest clip the training keeps around the splice.
+void derive_stairs_round_trip(const JointSequence& walk, const std::string& file, DeriveReport& report, std::vector<DerivedClip>& out) {
+    const uint64_t seed = file_seed(file) + 2;  // its own stream: the single flights stay as they were
+    std::mt19937_64 rng(seed);
+    const double rise = uniform(rng, 0.15, 0.19), going = uniform(rng, 0.25, 0.32);
+    std::array<StairOptions, 2> o = {default_stair_options(true), default_stair_options(false)};
+    for (StairOptions& d : o) {
+        d.rise_m = rise;
+        d.going_m = going;
+        d.cadence_factor = std::clamp(d.cadence_factor + uniform(rng, -0.05, 0.05), 0.5, 1.0);
+        d.trunk_lean_rad = std::max(0.0, d.trunk_lean_rad + uniform(rng, -0.03, 0.03));
+    }
+    GaitSplice trip;
+    try {
+        trip = splice_at_stance(walk_to_stairs(walk, o[0]), walk_to_stairs(walk, o[1]), GaitSpliceOptions{});
+    } catch (const Error&) {
+        ++report.refused;  // no staircase fits the walk, or no stance to join the flights at
+        return;
+    }
+    const int keep = frames_of(kRoundTripMaxSeconds, walk.fps);
+    const int begin = std::clamp(trip.splice_frame - keep / 2, 0, std::max(0, trip.motion.num_frames - keep));
+    DerivedClip c;
+    c.joints = slice_frames(trip.motion, begin, std::min(trip.motion.num_frames, begin + keep));
+    place_on_floor(c.joints);
+    c.joints_20fps = at_dataset_rate(c.joints);
+    if (!passes(c.joints_20fps)) {
+        ++report.failed_quality;
+        return;
+    }
+    c.method = "stairs_round_trip";
+    c.activity = "stairs_up;stairs_down";
+    c.parameters = {{"rise_m", rise}, {"going_m", going}, {"cadence_factor_up", o[0].cadence_factor}, {"cadence_factor_down", o[1].cadence_factor},
+                    {"trunk_lean_rad_up", o[0].trunk_lean_rad}, {"trunk_lean_rad_down", o[1].trunk_lean_rad},
+                    {"swing_clearance_m", o[0].swing_clearance_m}, {"blend_s", GaitSpliceOptions{}.blend_s}, {"seconds", kRoundTripMaxSeconds}};
     c.seed = seed;
     c.captions = pick_captions(captions_for(c.method), rng);
     out.push_back(std::move(c));
@@ -306,7 +353,10 @@ std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::
     std::vector<DerivedClip> out;
     const std::set<std::string> t = tag_set(tags);
     if (t.size() != 1) return out;
-    if (t.count("walking")) derive_stairs_clip(captured, file, report, out);
+    if (t.count("walking")) {
+        derive_stairs_clip(captured, file, report, out);
+        if (file_seed(file) / 2 % 2 == 0) derive_stairs_round_trip(captured, file, report, out);  // every other walk
+    }
     if (t.count("standing")) derive_sit_clips(captured, file, report, out);
     if (t.count("lying")) {
         derive_lying_clips(captured, file, report, out);

@@ -11,7 +11,9 @@
 //             [0.15, 0.19] m and going in [0.25, 0.32] m (domestic and public stairs, see stair_gait.hpp); the
 //             cadence factor and trunk lean within +-0.05 and +-0.03 rad of the direction's defaults. Walks
 //             that the edit refuses (under 1.5 m of travel, backward or sideways, turning, fewer than four
-//             footholds) give nothing.
+//             footholds) give nothing. Every other walk (by a bit of its seed) also gives one round trip, up a flight and down the next (gait_splice.hpp: the
+//             two flights, on stairs of one rise and going, joined at a stance of one foot on the landing), cut
+//             to kRoundTripMaxSeconds around the join; tags stairs_up and stairs_down.
 //   standing  up to kSitsPerRecording sit-down/stand-up clips, from windows spread evenly over the recording:
 //             seat height uniform in [0.47, 0.57] x the standing hip-joint height (0.40-0.50 m for an adult's
 //             0.88 m: ordinary chairs; ReActIdle's rigs stand 0.66-0.95 m at the hip), sitting down 1.8-2.4 s and
@@ -60,6 +62,9 @@ constexpr int kSitsPerRecording = 6;
 // the self-paced trials of UMAFall to SisFall's slow ones (header above).
 constexpr double kSitPaceFactorMin = 0.9;
 constexpr double kSitPaceFactorMax = 1.45;
+// A stairs round trip (up a flight, down the next) is cut to at most this long around its splice: under the
+// 10 s (199 frames at 20 fps) that MDM's data rules keep.
+constexpr double kRoundTripMaxSeconds = 9.5;
 constexpr int kLyingPerRecording = 2;
 constexpr int kLyingTurnsPerRecording = 2;
 // Jumps in the series made from a single jump that is too short to train on (jump_series.hpp): 0.5-0.8 s each
@@ -68,9 +73,9 @@ constexpr int kJumpsPerSeriesMin = 5;
 constexpr int kJumpsPerSeriesMax = 8;
 
 struct DerivedClip {
-    // "stairs_up", "stairs_down", "sit_down_stand_up", "lying_still", "lying_turn", "jump_rescaled", "jump_series"
+    // "stairs_up", "stairs_down", "stairs_round_trip", "sit_down_stand_up", "lying_still", "lying_turn", "jump_rescaled", "jump_series"
     std::string method;
-    std::string activity;               // its activity tag: stairs_up, stairs_down, sitting, lying, jumping
+    std::string activity;               // its activity tags: stairs_up, stairs_down, both (';'), sitting, lying, jumping
     JointSequence joints;               // at the source recording's rate, floor at y = 0 under the lowest joint
     JointSequence joints_20fps;         // the same at 20 fps (Catmull-Rom), as quality-scored and as the dataset holds it
     nlohmann::json parameters;          // the edit's options
