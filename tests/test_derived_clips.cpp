@@ -31,13 +31,16 @@ JointSequence shared_clip(const std::string& archive, const std::string& file) {
 // Largest change of any bone's length from its length at frame 0 (m).
 double max_bone_change(const JointSequence& m) { return max_bone_length_error(m, bone_lengths(m, 0)); }
 
-TEST(DerivedClips, AForwardWalkGivesAFlightOfStairsAndARoundTrip) {
+TEST(DerivedClips, AForwardWalkGivesAFlightOfStairsAndOnRequestARoundTrip) {
     std::string archive;
     SHARED_OR_SKIP(archive, "mocap/bandai_bvh_native.tar.xz");
     const JointSequence walk = shared_clip("mocap/bandai_bvh_native.tar.xz", kWalk);
     DeriveReport report;
-    const std::vector<DerivedClip> clips = derive_clips(walk, "walking", kWalk, report);
-    // This walk is one of every other that also gives a round trip.
+    ASSERT_EQ(derive_clips(walk, "walking", kWalk, report).size(), 1u) << "refused " << report.refused;  // the flight
+    DeriveOptions trips;
+    trips.stairs_round_trips = true;
+    const std::vector<DerivedClip> clips = derive_clips(walk, "walking", kWalk, report, trips);
+    // This walk is one of every other that also gives a round trip on request.
     ASSERT_EQ(clips.size(), 2u) << "refused " << report.refused << ", failed quality " << report.failed_quality;
     const DerivedClip& c = clips[0];
     EXPECT_TRUE(c.method == "stairs_up" || c.method == "stairs_down");
@@ -55,7 +58,7 @@ TEST(DerivedClips, AForwardWalkGivesAFlightOfStairsAndARoundTrip) {
     EXPECT_LT(max_bone_change(c.joints), 1e-6);
     // The same recording gives the same clips.
     DeriveReport again;
-    const std::vector<DerivedClip> redrawn = derive_clips(walk, "walking", kWalk, again);
+    const std::vector<DerivedClip> redrawn = derive_clips(walk, "walking", kWalk, again, trips);
     EXPECT_EQ(redrawn[0].joints.positions, c.joints.positions);
     EXPECT_EQ(redrawn[1].joints.positions, clips[1].joints.positions);
 
@@ -82,7 +85,7 @@ TEST(DerivedClips, BackwardWalksAndMixedRecordingsGiveNothing) {
     SHARED_OR_SKIP(archive, "mocap/bandai_bvh_native.tar.xz");
     DeriveReport report;
     EXPECT_TRUE(derive_clips(shared_clip("mocap/bandai_bvh_native.tar.xz", kWalkBack), "walking", kWalkBack, report).empty());
-    EXPECT_EQ(report.refused, 2);  // the flight and the round trip
+    EXPECT_EQ(report.refused, 1);
     const JointSequence walk = shared_clip("mocap/bandai_bvh_native.tar.xz", kWalk);
     EXPECT_TRUE(derive_clips(walk, "walking;dancing", kWalk, report).empty());  // not one activity: not a source
     EXPECT_TRUE(derive_clips(walk, "running", kWalk, report).empty());
@@ -132,7 +135,9 @@ TEST(DerivedClips, ALieDownClipGivesLyingStillAndTurningClips) {
     std::vector<DerivedClip> clips = derive_clips(lie, "lying", kLieDown, report);
     ASSERT_EQ(static_cast<int>(clips.size()), kLyingPerRecording);
     for (const DerivedClip& c : clips) EXPECT_EQ(c.method, "lying_still");
-    clips = derive_clips(lie, "lying", kLieDown, report, true);
+    DeriveOptions with_turns;
+    with_turns.lying_turns = true;
+    clips = derive_clips(lie, "lying", kLieDown, report, with_turns);
     ASSERT_EQ(static_cast<int>(clips.size()), kLyingPerRecording + kLyingTurnsPerRecording);
     const Eigen::Vector3d end = lie.at(lie.num_frames - 1, 0);
     int still = 0, turns = 0, left = 0;

@@ -52,6 +52,8 @@ struct BuildOptions {
     // Among them, lying turning onto the side and back (derived_clips.hpp); off: README's measurement found it
     // brings the lying level to the real one but makes lying windows easier to tell from real ones.
     bool lying_turns = false;
+    // And the stairs round trips, up a flight and down the next (derived_clips.hpp, DeriveOptions: why off).
+    bool stairs_round_trips = false;
     // Keep each captured clip at its capture rate too (capture_joints/), and derive clips from the recording at
     // that rate (their copy is the derived clip at it; new_joints hold it at 20 fps, Catmull-Rom). false: every
     // clip, derived ones too, only at 20 fps.

@@ -349,18 +349,18 @@ void derive_jump_series(const JointSequence& jump, const std::string& file, Deri
 }  // namespace
 
 std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::string& tags, const std::string& file,
-                                      DeriveReport& report, bool lying_turns) {
+                                      DeriveReport& report, const DeriveOptions& options) {
     std::vector<DerivedClip> out;
     const std::set<std::string> t = tag_set(tags);
     if (t.size() != 1) return out;
     if (t.count("walking")) {
         derive_stairs_clip(captured, file, report, out);
-        if (file_seed(file) / 2 % 2 == 0) derive_stairs_round_trip(captured, file, report, out);  // every other walk
+        if (options.stairs_round_trips && file_seed(file) / 2 % 2 == 0) derive_stairs_round_trip(captured, file, report, out);
     }
     if (t.count("standing")) derive_sit_clips(captured, file, report, out);
     if (t.count("lying")) {
         derive_lying_clips(captured, file, report, out);
-        if (lying_turns) derive_lying_turn_clips(captured, file, report, out);
+        if (options.lying_turns) derive_lying_turn_clips(captured, file, report, out);
     }
     if (t.count("jumping")) {
         derive_jump_clip(captured, file, report, out);

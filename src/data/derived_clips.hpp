@@ -11,9 +11,10 @@
 //             [0.15, 0.19] m and going in [0.25, 0.32] m (domestic and public stairs, see stair_gait.hpp); the
 //             cadence factor and trunk lean within +-0.05 and +-0.03 rad of the direction's defaults. Walks
 //             that the edit refuses (under 1.5 m of travel, backward or sideways, turning, fewer than four
-//             footholds) give nothing. Every other walk (by a bit of its seed) also gives one round trip, up a flight and down the next (gait_splice.hpp: the
-//             two flights, on stairs of one rise and going, joined at a stance of one foot on the landing), cut
-//             to kRoundTripMaxSeconds around the join; tags stairs_up and stairs_down.
+//             footholds) give nothing. On request (stairs_round_trips), every other walk (by a bit of its seed)
+//             also gives one round trip, up a flight and down the next (gait_splice.hpp: the two flights, on
+//             stairs of one rise and going, joined at a stance of one foot on the landing), cut to
+//             kRoundTripMaxSeconds around the join; tags stairs_up and stairs_down.
 //   standing  up to kSitsPerRecording sit-down/stand-up clips, from windows spread evenly over the recording:
 //             seat height uniform in [0.47, 0.57] x the standing hip-joint height (0.40-0.50 m for an adult's
 //             0.88 m: ordinary chairs; ReActIdle's rigs stand 0.66-0.95 m at the hip), sitting down 1.8-2.4 s and
@@ -90,8 +91,17 @@ struct DeriveReport {
 
 // The derived clips of one captured recording (at any rate of at least 20 fps) whose activity tags are `tags`
 // (the mocap manifest's, ';' between several). `file` seeds the draw. Counts what was left out in `report`.
-// lying_turns: add the turning clips of a lie-down (off by default: README's measurement, "Lying turns").
+// The clip kinds that are off by default, each for a measured reason.
+struct DeriveOptions {
+    // The turning clips of a lie-down: README's measurement, "Lying turns" (retrieval's HAR within its spread, lying
+    // windows easier to tell from real); the learned default did not learn to turn from them in 1,500 CPU steps.
+    bool lying_turns = false;
+    // The stairs round trips: a 1,500-step CPU fine-tuning of the learned default on them drew SisFall's "up and
+    // back down" prompts as stairs (stairs recall 0.04 -> 0.35) but every "down the stairs" prompt as going up and
+    // no jumps (first draws stairs down 8 -> 0, jumping 5 -> 0 of 10; model card, 2026-12-05).
+    bool stairs_round_trips = false;
+};
 std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::string& tags, const std::string& file,
-                                      DeriveReport& report, bool lying_turns = false);
+                                      DeriveReport& report, const DeriveOptions& options = {});
 
 }  // namespace t2imu
