@@ -50,6 +50,23 @@ TEST(MotionEdit, RetimingHalvesTheSpeedWithoutOvershoot) {
     EXPECT_THROW(retime(m, 0.1), Error);
 }
 
+TEST(MotionEdit, TurnedToFaceTurnsAboutThePivotAndMovesItThere) {
+    const JointSequence m = rest_pose(3);
+    const Vector3d facing0 = body_facing(m, 0), pivot = m.at(1, left_foot), to(2, 7, -1);
+    // A quarter turn: the body faces its old facing turned 90 deg about the vertical (x towards z).
+    const Vector3d facing(-facing0.z(), 0, facing0.x());
+    const JointSequence t = turned_to_face(m, 1, facing, pivot, to);
+    EXPECT_LT((body_facing(t, 1) - facing).norm(), 1e-12);
+    for (int f = 0; f < m.num_frames; ++f)
+        for (int j = 0; j < kNumJoints; ++j) {
+            EXPECT_DOUBLE_EQ(t.at(f, j).y(), m.at(f, j).y());  // heights unchanged
+            const Vector3d a = m.at(f, j) - pivot, b = t.at(f, j) - to;  // horizontal distance to the pivot kept
+            EXPECT_NEAR(std::hypot(a.x(), a.z()), std::hypot(b.x(), b.z()), 1e-12);
+        }
+    EXPECT_NEAR(t.at(1, left_foot).x(), 2, 1e-12);  // the pivot stands at `to` horizontally
+    EXPECT_NEAR(t.at(1, left_foot).z(), -1, 1e-12);
+}
+
 TEST(MotionEdit, MinimumJerkStartsAndEndsAtRest) {
     EXPECT_DOUBLE_EQ(min_jerk(0.0), 0.0);
     EXPECT_DOUBLE_EQ(min_jerk(0.5), 0.5);

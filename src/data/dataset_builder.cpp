@@ -384,7 +384,8 @@ BuildSummary build_into(const BuildOptions& o, const std::string& tmp) {
     for (const auto& [tag, v] : tally.per_tag)
         j["per_activity_tag"][tag] = {{"clips", v.clips}, {"minutes", v.minutes}, {"captured_minutes", v.captured_minutes},
                                       {"derived_minutes", v.minutes - v.captured_minutes}};
-    j["derived"] = {{"included", o.derive}, {"lying_turns", o.derive && o.lying_turns}, {"stairs_round_trips", o.derive && o.stairs_round_trips}, {"edits_refused", derive_report.refused},
+    j["derived"] = {{"included", o.derive}, {"lying_turns", o.derive && o.lying_turns},
+                    {"stairs_round_trips", o.derive && o.stairs_round_trips}, {"edits_refused", derive_report.refused},
                     {"failed_quality", derive_report.failed_quality}};
     j["train_draw_share"] = train_draw_share(clips_csv);
     j["capture_rate"] = {{"included", o.capture_rate}, {"minutes", tally.capture_minutes}};

@@ -126,6 +126,19 @@ Vector3d body_facing(const JointSequence& m, int frame) {
     return horizontal_direction(across.cross(Vector3d::UnitY()));
 }
 
+JointSequence turned_to_face(const JointSequence& m, int frame, const Vector3d& facing, const Vector3d& pivot, const Vector3d& to) {
+    const Vector3d from = body_facing(m, frame);
+    const double turn = std::atan2(facing.z(), facing.x()) - std::atan2(from.z(), from.x());  // in the x-z plane, x towards z
+    const double c = std::cos(turn), s = std::sin(turn);
+    JointSequence out = m;
+    for (Vector3d& p : out.positions) {
+        const double x = p.x() - pivot.x(), z = p.z() - pivot.z();
+        p.x() = to.x() + c * x - s * z;
+        p.z() = to.z() + s * x + c * z;
+    }
+    return out;
+}
+
 bool is_trunk_joint(int j) {
     while (j > 0 && j != spine1) j = kParents[static_cast<size_t>(j)];
     return j == spine1;

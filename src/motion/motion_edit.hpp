@@ -44,6 +44,12 @@ Eigen::Vector3d horizontal_direction(const Eigen::Vector3d& v);
 // front. Throws Error when that line is vertical.
 Eigen::Vector3d body_facing(const JointSequence& m, int frame);
 
+// `m` turned about the vertical through `pivot` so that the body faces `facing` (horizontal unit) at `frame`, and
+// moved horizontally so that the pivot stands at `to`; heights unchanged. How one clip is set to go on from where
+// and the way another ends (jump_series, gait_splice).
+JointSequence turned_to_face(const JointSequence& m, int frame, const Eigen::Vector3d& facing, const Eigen::Vector3d& pivot,
+                             const Eigen::Vector3d& to);
+
 // spine1 and everything above it (spine, neck, head, collars, arms): the trunk as it bends at the hips.
 bool is_trunk_joint(int joint);
 // knees, ankles and toes: what moves with the feet or is re-solved by IK.
