@@ -34,14 +34,21 @@ std::vector<CaptionNeighbour> CaptionIndex::nearest(const std::string& prompt, s
     if (activity.empty()) return {};
     for (size_t i = 0; i < captions_.size(); ++i)
         if (shows_activity(captions_[i].activity, activity)) candidates.push_back(i);
+    if (candidates.empty()) return {};
     const Eigen::VectorXd e = sif_.embed(prompt);
     const double norm = e.norm();
     const Eigen::VectorXd cosines = norm > 0 ? Eigen::VectorXd(unit_ * (e / norm)) : Eigen::VectorXd::Zero(unit_.rows());
-    const size_t n = std::min(k, candidates.size());
-    std::partial_sort(candidates.begin(), candidates.begin() + static_cast<std::ptrdiff_t>(n), candidates.end(), [&](size_t a, size_t b) {
+    // Keep the captions of the nearest candidate's own activity: a direction-agnostic "stairs" takes one
+    // direction, never a blend of up and down (see the header).
+    const auto nearest_of = [&](size_t a, size_t b) {
         const double ca = cosines[static_cast<Eigen::Index>(a)], cb = cosines[static_cast<Eigen::Index>(b)];
         return ca != cb ? ca > cb : a < b;
-    });
+    };
+    const std::string chosen = captions_[*std::min_element(candidates.begin(), candidates.end(), nearest_of)].activity;
+    candidates.erase(std::remove_if(candidates.begin(), candidates.end(), [&](size_t i) { return captions_[i].activity != chosen; }),
+                     candidates.end());
+    const size_t n = std::min(k, candidates.size());
+    std::partial_sort(candidates.begin(), candidates.begin() + static_cast<std::ptrdiff_t>(n), candidates.end(), nearest_of);
     std::vector<CaptionNeighbour> out;
     for (size_t i = 0; i < n; ++i) out.push_back({candidates[i], cosines[static_cast<Eigen::Index>(candidates[i])]});
     return out;
