@@ -29,7 +29,8 @@ namespace t2imu {
 // The caption anchor: a prompt's text feature blended with the features of the training captions nearest it
 // (caption_index.hpp: by SIF similarity, among the captions of the activity the prompt asks for), so that a
 // prompt in words the text encoder did not learn still conditions the denoiser like the captions it did:
-//   c = (1 - w) E(prompt) + w mean_j E(caption_j),   j over the K nearest captions of the prompt's activity,
+//   c = (1 - w) E(prompt) + w mean_j E(caption_j),   j over the K nearest captions of the prompt's activity
+//   (all of the nearest one's own activity, so "stairs" blends one direction: caption_index.hpp),
 // E the model's text encoder; w = 0 is the prompt alone, and so is a prompt whose activity is unknown or has no
 // caption. The activity asked is the prompt set's label, else the one the prompt's words name (activity_asked).
 // The unconditional pass of classifier-free guidance is unchanged (the zero feature). A model folder holds its
