@@ -38,19 +38,16 @@ std::vector<CaptionNeighbour> CaptionIndex::nearest(const std::string& prompt, s
     const Eigen::VectorXd e = sif_.embed(prompt);
     const double norm = e.norm();
     const Eigen::VectorXd cosines = norm > 0 ? Eigen::VectorXd(unit_ * (e / norm)) : Eigen::VectorXd::Zero(unit_.rows());
-    // Keep the captions of the nearest candidate's own activity: a direction-agnostic "stairs" takes one
-    // direction, never a blend of up and down (see the header).
-    const auto nearest_of = [&](size_t a, size_t b) {
+    std::sort(candidates.begin(), candidates.end(), [&](size_t a, size_t b) {
         const double ca = cosines[static_cast<Eigen::Index>(a)], cb = cosines[static_cast<Eigen::Index>(b)];
         return ca != cb ? ca > cb : a < b;
-    };
-    const std::string chosen = captions_[*std::min_element(candidates.begin(), candidates.end(), nearest_of)].activity;
-    candidates.erase(std::remove_if(candidates.begin(), candidates.end(), [&](size_t i) { return captions_[i].activity != chosen; }),
-                     candidates.end());
-    const size_t n = std::min(k, candidates.size());
-    std::partial_sort(candidates.begin(), candidates.begin() + static_cast<std::ptrdiff_t>(n), candidates.end(), nearest_of);
+    });
+    // Only the nearest caption's own activity: a direction-agnostic "stairs" takes one direction, never a blend of
+    // up and down (see the header).
+    const std::string& chosen = captions_[candidates.front()].activity;
     std::vector<CaptionNeighbour> out;
-    for (size_t i = 0; i < n; ++i) out.push_back({candidates[i], cosines[static_cast<Eigen::Index>(candidates[i])]});
+    for (size_t i : candidates)
+        if (out.size() < k && captions_[i].activity == chosen) out.push_back({i, cosines[static_cast<Eigen::Index>(i)]});
     return out;
 }
 
