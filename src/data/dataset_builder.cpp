@@ -179,8 +179,9 @@ void BuildOptions::validate() const {
         throw Error("data build", "--max-seconds", "2 s (40 frames) to 3600 s", std::to_string(max_seconds));
     if (!(max_seconds_per_file >= 0 && max_seconds_per_file <= 86400))
         throw Error("data build", "--max-seconds-per-file", "0 (no cap) to 86400 s", std::to_string(max_seconds_per_file));
-    if (lying_turns && !derive) throw Error("data build", "--lying-turns", "the derived clips it is one of (not with --no-derived)");
-    if (stairs_round_trips && !derive)
+    if (derived_kinds.lying_turns && !derive)
+        throw Error("data build", "--lying-turns", "the derived clips it is one of (not with --no-derived)");
+    if (derived_kinds.stairs_round_trips && !derive)
         throw Error("data build", "--stairs-round-trips", "the derived clips it is one of (not with --no-derived)");
 }
 
@@ -346,7 +347,7 @@ BuildSummary build_into(const BuildOptions& o, const std::string& tmp) {
         if (!o.derive) continue;
         // Derived at the capture rate where there is one; the dataset holds them at 20 fps, with the
         // capture-rate clip as their copy for the sensors.
-        for (DerivedClip& d : derive_clips(capture ? *capture : joints, c.tags, file, derive_report, {o.lying_turns, o.stairs_round_trips}))
+        for (DerivedClip& d : derive_clips(capture ? *capture : joints, c.tags, file, derive_report, o.derived_kinds))
             write_recording(o, tmp, derived_source(c, d, d.joints_20fps.num_frames), key, d.joints_20fps,
                             capture ? &d.joints : nullptr, max_frames, chunks_per_file, tally, summary);
     }
@@ -384,8 +385,8 @@ BuildSummary build_into(const BuildOptions& o, const std::string& tmp) {
     for (const auto& [tag, v] : tally.per_tag)
         j["per_activity_tag"][tag] = {{"clips", v.clips}, {"minutes", v.minutes}, {"captured_minutes", v.captured_minutes},
                                       {"derived_minutes", v.minutes - v.captured_minutes}};
-    j["derived"] = {{"included", o.derive}, {"lying_turns", o.derive && o.lying_turns},
-                    {"stairs_round_trips", o.derive && o.stairs_round_trips}, {"edits_refused", derive_report.refused},
+    j["derived"] = {{"included", o.derive}, {"lying_turns", o.derive && o.derived_kinds.lying_turns},
+                    {"stairs_round_trips", o.derive && o.derived_kinds.stairs_round_trips}, {"edits_refused", derive_report.refused},
                     {"failed_quality", derive_report.failed_quality}};
     j["train_draw_share"] = train_draw_share(clips_csv);
     j["capture_rate"] = {{"included", o.capture_rate}, {"minutes", tally.capture_minutes}};

@@ -29,6 +29,7 @@
 #include <string>
 
 #include "core/csv.hpp"
+#include "data/derived_clips.hpp"
 
 namespace t2imu {
 
@@ -49,11 +50,8 @@ struct BuildOptions {
     // Add the clips derived from captured ones (derived_clips.hpp: stairs from walks, sitting down and standing
     // up from idle standing), tagged source_dataset "edited" with their provenance in clips.csv.
     bool derive = true;
-    // Among them, lying turning onto the side and back (derived_clips.hpp); off: README's measurement found it
-    // brings the lying level to the real one but makes lying windows easier to tell from real ones.
-    bool lying_turns = false;
-    // And the stairs round trips, up a flight and down the next (derived_clips.hpp, DeriveOptions: why off).
-    bool stairs_round_trips = false;
+    // Among them, the kinds that are off by default (derived_clips.hpp, DeriveOptions: what and why).
+    DeriveOptions derived_kinds;
     // Keep each captured clip at its capture rate too (capture_joints/), and derive clips from the recording at
     // that rate (their copy is the derived clip at it; new_joints hold it at 20 fps, Catmull-Rom). false: every
     // clip, derived ones too, only at 20 fps.
