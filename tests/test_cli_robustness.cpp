@@ -113,6 +113,7 @@ std::vector<Row> rows() {
         {"DataBuildNegativeCap", "data build --mocap {D} --out {D}/o --max-seconds-per-file -1", kFile, 2, "--max-seconds-per-file", {"o"}},
         {"DataBuildShortChunks", "data build --mocap {D} --out {D}/o --max-seconds 1", kFile, 2, "--max-seconds: expected 2 s (40 frames) to 3600 s", {"o"}},
         {"DataBuildTurnsWithoutDerived", "data build --mocap {D} --out {D}/o --no-derived --lying-turns", kFile, 2, "--lying-turns: expected the derived clips", {"o"}},
+        {"DataBuildRestsWithoutDerived", "data build --mocap {D} --out {D}/o --no-derived --lie-down-rests", kFile, 2, "--lie-down-rests: expected the derived clips", {"o"}},
         {"DataBuildRoundTripsWithoutDerived", "data build --mocap {D} --out {D}/o --no-derived --stairs-round-trips", kFile, 2, "--stairs-round-trips: expected the derived clips", {"o"}},
         // Every other command that writes checks its --out before any work too.
         {"ImportImuOutInProc", "data import-imu --format sisfall {D} --out /proc/x/o", kFile, 2, "--out: /proc/x/o", {}},

@@ -66,7 +66,7 @@ TEST(DerivedClips, AForwardWalkGivesAFlightOfStairsAndOnRequestARoundTrip) {
     // and falls at least 1 m below its top by the end; at 20 fps it is a clip the training keeps, passing quality.
     const DerivedClip& trip = clips[1];
     EXPECT_EQ(trip.method, "stairs_round_trip");
-    EXPECT_EQ(trip.activity, "stairs_up;stairs_down");
+    EXPECT_EQ(trip.activity, "stairs");  // either direction: not under stairs_down alone, where it drew climbs
     EXPECT_EQ(trip.captions.size(), 3u);
     double top = -1e9;
     for (int f = 0; f < trip.joints.num_frames; ++f) top = std::max(top, trip.joints.at(f, 0).y());
@@ -169,6 +169,28 @@ TEST(DerivedClips, ALieDownClipGivesLyingStillAndTurningClips) {
     EXPECT_EQ(still, kLyingPerRecording);
     EXPECT_EQ(turns, kLyingTurnsPerRecording);
     EXPECT_EQ(left, 1);  // one onto each side
+    // On request, the lie-down followed by rest: the captured frames first, then the end pose held, breathing.
+    DeriveOptions with_rest;
+    with_rest.lie_down_rests = true;
+    clips = derive_clips(lie, "lying", kLieDown, report, with_rest);
+    ASSERT_EQ(static_cast<int>(clips.size()), kLyingPerRecording + 1);
+    const DerivedClip& rest = clips.back();
+    ASSERT_EQ(rest.method, "lie_down_rest");
+    EXPECT_EQ(rest.activity, "lying");
+    const double rest_s = rest.parameters["rest_seconds"].get<double>();
+    EXPECT_GE(rest_s, kLieDownRestMinSeconds);
+    EXPECT_LE(rest_s, kLieDownRestMaxSeconds);
+    EXPECT_EQ(rest.joints.num_frames, lie.num_frames + frames_of(rest_s, lie.fps));
+    EXPECT_LE(rest.joints.num_frames, kLieDownRestMaxClipSeconds * lie.fps + 1);
+    for (int f = 0; f < lie.num_frames; ++f) EXPECT_EQ((rest.joints.at(f, 0) - lie.at(f, 0)).norm(), 0.0);
+    for (int f = lie.num_frames; f < rest.joints.num_frames; ++f) EXPECT_LT((rest.joints.at(f, 0) - end).norm(), 0.01);
+    EXPECT_TRUE(quality_failures(score_motion(rest.joints), default_quality_thresholds()).empty());
+    // Its captions are its own, not the still clips' (the caption anchor blends the captions of an activity).
+    for (const std::string& caption : rest.captions) {
+        EXPECT_TRUE(test::contains(caption, "lies")) << caption;
+        for (int k = 0; k < kLyingPerRecording; ++k)
+            EXPECT_EQ(std::count(clips[k].captions.begin(), clips[k].captions.end(), caption), 0) << caption;
+    }
     // A standing recording does not end lying: it gives no lying clip.
     EXPECT_TRUE(derive_clips(shared_clip("mocap/bandai_bvh_native.tar.xz", kWalk), "lying", kWalk, report).empty());
 }

@@ -45,6 +45,17 @@ TEST(JointSequence, SliceKeepsTheFramesAskedFor) {
     EXPECT_EQ(frames_of(0.26, 50.0), 13);
 }
 
+TEST(JointSequence, ConcatenatingTwoSlicesGivesTheWholeBack) {
+    JointSequence s(6, 2, 20.0);
+    for (int f = 0; f < 6; ++f) s.at(f, 1) = Eigen::Vector3d(f, -f, 2 * f);
+    const JointSequence whole = concatenate_frames(slice_frames(s, 0, 2), slice_frames(s, 2, 6));
+    ASSERT_EQ(whole.num_frames, 6);
+    EXPECT_EQ(whole.positions, s.positions);
+    // Another joint count or rate is refused, naming what differs.
+    EXPECT_TRUE(test::contains(test::error_message([&] { concatenate_frames(s, JointSequence(2, 3, 20.0)); }), "3 joints"));
+    EXPECT_TRUE(test::contains(test::error_message([&] { concatenate_frames(s, JointSequence(2, 2, 30.0)); }), "30.0"));
+}
+
 TEST(JointSequence, FrameRatesAboveZeroUpTo1000AreAccepted) {
     EXPECT_NO_THROW(check_motion_fps(20, "--fps"));
     EXPECT_NO_THROW(check_motion_fps(1000, "--fps"));

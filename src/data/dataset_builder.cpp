@@ -181,6 +181,8 @@ void BuildOptions::validate() const {
         throw Error("data build", "--max-seconds-per-file", "0 (no cap) to 86400 s", std::to_string(max_seconds_per_file));
     if (derived_kinds.lying_turns && !derive)
         throw Error("data build", "--lying-turns", "the derived clips it is one of (not with --no-derived)");
+    if (derived_kinds.lie_down_rests && !derive)
+        throw Error("data build", "--lie-down-rests", "the derived clips it is one of (not with --no-derived)");
     if (derived_kinds.stairs_round_trips && !derive)
         throw Error("data build", "--stairs-round-trips", "the derived clips it is one of (not with --no-derived)");
 }
@@ -386,7 +388,8 @@ BuildSummary build_into(const BuildOptions& o, const std::string& tmp) {
         j["per_activity_tag"][tag] = {{"clips", v.clips}, {"minutes", v.minutes}, {"captured_minutes", v.captured_minutes},
                                       {"derived_minutes", v.minutes - v.captured_minutes}};
     j["derived"] = {{"included", o.derive}, {"lying_turns", o.derive && o.derived_kinds.lying_turns},
-                    {"stairs_round_trips", o.derive && o.derived_kinds.stairs_round_trips}, {"edits_refused", derive_report.refused},
+                    {"stairs_round_trips", o.derive && o.derived_kinds.stairs_round_trips},
+                    {"lie_down_rests", o.derive && o.derived_kinds.lie_down_rests}, {"edits_refused", derive_report.refused},
                     {"failed_quality", derive_report.failed_quality}};
     j["train_draw_share"] = train_draw_share(clips_csv);
     j["capture_rate"] = {{"included", o.capture_rate}, {"minutes", tally.capture_minutes}};

@@ -68,6 +68,10 @@ const std::vector<std::string>& captions_for(const std::string& method) {
         "a person lies still on the floor, breathing quietly", "someone is lying on the ground and resting",
         "a person lies on the floor without moving", "the person rests lying down", "someone lies motionless on the floor",
         "a person is lying down, breathing calmly"};
+    static const std::vector<std::string> lie_down = {
+        "a person lies down on the floor and rests there", "someone lies down on their back and stays lying",
+        "the person gets down onto the floor and lies on their back", "a person lowers themselves to the ground and lies still",
+        "someone lies down and rests for a while", "a man lies down on the ground and stays there"};
     static const std::vector<std::string> turn = {
         "a person lying on the floor rolls onto their side and back again", "someone lying on their back turns onto their side, then back",
         "the person lies on the floor and turns over to one side", "a person lying down rolls to the side and then onto their back",
@@ -82,6 +86,7 @@ const std::vector<std::string>& captions_for(const std::string& method) {
     if (method == "jump_rescaled") return jump;
     if (method == "jump_series") return series;
     if (method == "lying_turn") return turn;
+    if (method == "lie_down_rest") return lie_down;
     if (method == "stairs_round_trip") return round_trip;
     return method == "stairs_up" ? up : method == "stairs_down" ? down : method == "lying_still" ? lie : sit;
 }
@@ -163,7 +168,9 @@ void derive_stairs_round_trip(const JointSequence& walk, const std::string& file
         return;
     }
     c.method = "stairs_round_trip";
-    c.activity = "stairs_up;stairs_down";
+    // "stairs", either direction (activity_names.hpp), not both directions' tags: filed under stairs_down too, its
+    // captions were 4 of the 12 a "down the stairs" prompt's caption anchor chose from, and such prompts drew climbs.
+    c.activity = "stairs";
     c.parameters = {{"rise_m", rise}, {"going_m", going}, {"cadence_factor_up", o[0].cadence_factor}, {"cadence_factor_down", o[1].cadence_factor},
                     {"trunk_lean_rad_up", o[0].trunk_lean_rad}, {"trunk_lean_rad_down", o[1].trunk_lean_rad},
                     {"swing_clearance_m", o[0].swing_clearance_m}, {"blend_s", GaitSpliceOptions{}.blend_s}, {"seconds", kRoundTripMaxSeconds}};
@@ -257,6 +264,33 @@ void derive_lying_clips(const JointSequence& lie_down, const std::string& file, 
         c.captions = pick_captions(captions_for(c.method), rng);
         out.push_back(std::move(c));
     }
+}
+
+// The captured lie-down and then its final pose held, breathing: one clip from standing to resting on the floor.
+void derive_lie_down_rest_clip(const JointSequence& lie_down, const std::string& file, DeriveReport& report, std::vector<DerivedClip>& out) {
+    std::mt19937_64 rng(file_seed(file) + 2);  // its own stream: the other lying clips stay as they were
+    LyingOptions o;
+    const double captured_s = (lie_down.num_frames - 1) / lie_down.fps;
+    o.seconds = std::min(uniform(rng, kLieDownRestMinSeconds, kLieDownRestMaxSeconds), kLieDownRestMaxClipSeconds - captured_s);
+    o.breaths_per_min = uniform(rng, 12.0, 20.0);
+    o.chest_rad = uniform(rng, 0.015, 0.025);
+    if (o.seconds < kLieDownRestMinSeconds) { ++report.refused; return; }  // the capture alone fills a training clip
+    DerivedClip c;
+    try {
+        const JointSequence rest = lying_still(lie_down, o);
+        c.joints = concatenate_frames(lie_down, slice_frames(rest, 1, rest.num_frames));  // rest's frame 0 is the capture's last
+    } catch (const Error&) {
+        ++report.refused;  // the clip does not end lying
+        return;
+    }
+    c.joints_20fps = at_dataset_rate(c.joints);
+    if (!passes(c.joints_20fps)) { ++report.failed_quality; return; }
+    c.method = "lie_down_rest";
+    c.activity = "lying";
+    c.parameters = {{"rest_seconds", o.seconds}, {"breaths_per_min", o.breaths_per_min}, {"chest_rad", o.chest_rad}};
+    c.seed = file_seed(file) + static_cast<uint64_t>(kLyingPerRecording + kLyingTurnsPerRecording);
+    c.captions = pick_captions(captions_for(c.method), rng);
+    out.push_back(std::move(c));
 }
 
 void derive_lying_turn_clips(const JointSequence& lie_down, const std::string& file, DeriveReport& report, std::vector<DerivedClip>& out) {
@@ -361,6 +395,7 @@ std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::
     if (t.count("lying")) {
         derive_lying_clips(captured, file, report, out);
         if (options.lying_turns) derive_lying_turn_clips(captured, file, report, out);
+        if (options.lie_down_rests) derive_lie_down_rest_clip(captured, file, report, out);
     }
     if (t.count("jumping")) {
         derive_jump_clip(captured, file, report, out);

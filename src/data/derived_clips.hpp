@@ -14,7 +14,7 @@
 //             footholds) give nothing. On request (stairs_round_trips), every other walk (by a bit of its seed)
 //             also gives one round trip, up a flight and down the next (gait_splice.hpp: the two flights, on
 //             stairs of one rise and going, joined at a stance of one foot on the landing), cut to
-//             kRoundTripMaxSeconds around the join; tags stairs_up and stairs_down.
+//             kRoundTripMaxSeconds around the join; tag stairs (either direction).
 //   standing  up to kSitsPerRecording sit-down/stand-up clips, from windows spread evenly over the recording:
 //             seat height uniform in [0.47, 0.57] x the standing hip-joint height (0.40-0.50 m for an adult's
 //             0.88 m: ordinary chairs; ReActIdle's rigs stand 0.66-0.95 m at the hip), sitting down 1.8-2.4 s and
@@ -36,7 +36,8 @@
 //             turns of 0.8-1.4 s each way, 1.5-2.4 s on the side, 0.5-1.2 s on the back before and after (at
 //             most 7.6 s). The turns' pace is SisFall's (D14, on the back, onto the side and back in 12 s; waist
 //             |a| sd 0.86 m/s², mag_rise 1.98): on SisFall's lying prompts, turns of 1.2-2.2 s gave 0.42 and
-//             0.73, these 0.74 and 1.37.
+//             0.73, these 0.74 and 1.37. On request (lie_down_rests), one clip of the captured lie-down followed
+//             by its final pose held, breathing, for 2-4 s (at most 9.5 s in all), with captions of lying down.
 //   jumping   one clip of the jump rescaled, lower or higher by the seed's parity: time scale k uniform in
 //             [0.88, 0.95] or [1.05, 1.12], so flights 0.77-0.90 or 1.10-1.25 times as high: within the spread of
 //             jump heights between healthy adults, which is wider. A jump too short to train on (under 2 s) also
@@ -68,15 +69,21 @@ constexpr double kSitPaceFactorMax = 1.45;
 constexpr double kRoundTripMaxSeconds = 9.5;
 constexpr int kLyingPerRecording = 2;
 constexpr int kLyingTurnsPerRecording = 2;
+// A lie-down followed by rest (lie_down_rests): the capture, then its final pose held for a uniform 2-4 s, the
+// whole at most 9.5 s (under the 10 s that MDM's data rules keep); a capture that leaves under 2 s gives none.
+constexpr double kLieDownRestMinSeconds = 2.0;
+constexpr double kLieDownRestMaxSeconds = 4.0;
+constexpr double kLieDownRestMaxClipSeconds = 9.5;
 // Jumps in the series made from a single jump that is too short to train on (jump_series.hpp): 0.5-0.8 s each
 // after rescaling, so at least 2.1 s (the training's 2 s minimum) and at most 6 s in all.
 constexpr int kJumpsPerSeriesMin = 5;
 constexpr int kJumpsPerSeriesMax = 8;
 
 struct DerivedClip {
-    // "stairs_up", "stairs_down", "stairs_round_trip", "sit_down_stand_up", "lying_still", "lying_turn", "jump_rescaled", "jump_series"
+    // "stairs_up", "stairs_down", "stairs_round_trip", "sit_down_stand_up", "lying_still", "lying_turn", "lie_down_rest",
+    // "jump_rescaled", "jump_series"
     std::string method;
-    std::string activity;               // its activity tags: stairs_up, stairs_down, both (';'), sitting, lying, jumping
+    std::string activity;               // its activity tag: stairs_up, stairs_down, stairs (a round trip), sitting, lying, jumping
     JointSequence joints;               // at the source recording's rate, floor at y = 0 under the lowest joint
     JointSequence joints_20fps;         // the same at 20 fps (Catmull-Rom), as quality-scored and as the dataset holds it
     nlohmann::json parameters;          // the edit's options
@@ -100,6 +107,9 @@ struct DeriveOptions {
     // back down" prompts as stairs (stairs recall 0.04 -> 0.35) but every "down the stairs" prompt as going up and
     // no jumps (first draws stairs down 8 -> 0, jumping 5 -> 0 of 10; model card, 2026-12-05).
     bool stairs_round_trips = false;
+    // The lie-down and then rest (one per lie-down recording, captions of lying down): the anchor's lying
+    // captions were 6 of lying still to 1 of lying down.
+    bool lie_down_rests = false;
 };
 std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::string& tags, const std::string& file,
                                       DeriveReport& report, const DeriveOptions& options = {});

@@ -35,6 +35,16 @@ JointSequence slice_frames(const JointSequence& s, int begin, int end) {
     return out;
 }
 
+JointSequence concatenate_frames(const JointSequence& a, const JointSequence& b) {
+    if (a.num_joints != b.num_joints || a.fps != b.fps)
+        throw Error("concatenate_frames", "b", std::to_string(a.num_joints) + " joints at " + std::to_string(a.fps) + " fps",
+                    std::to_string(b.num_joints) + " joints at " + std::to_string(b.fps) + " fps");
+    JointSequence out(a.num_frames + b.num_frames, a.num_joints, a.fps);
+    std::copy(a.positions.begin(), a.positions.end(), out.positions.begin());
+    std::copy(b.positions.begin(), b.positions.end(), out.positions.begin() + static_cast<std::ptrdiff_t>(a.positions.size()));
+    return out;
+}
+
 static void require_finite(const std::vector<double>& v, const std::string& source) {
     for (size_t i = 0; i < v.size(); ++i)
         if (!std::isfinite(v[i]))

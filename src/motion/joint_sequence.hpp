@@ -39,6 +39,9 @@ double lowest_joint_height(const JointSequence& s);
 // Frames [begin, end) of `s`, same joints and rate.
 JointSequence slice_frames(const JointSequence& s, int begin, int end);
 
+// The frames of `a`, then those of `b` (same joint count and rate; Error otherwise).
+JointSequence concatenate_frames(const JointSequence& a, const JointSequence& b);
+
 // [F, J, 3] (any float or int dtype) -> JointSequence. Refuses a wrong rank or last dimension, fewer than
 // `min_frames` frames, a joint count other than `joints` (when > 0), and NaN/inf, naming `source`.
 JointSequence joint_sequence_from_array(const NdArray& a, const std::string& source, int joints = 22,
