@@ -107,8 +107,9 @@ struct DeriveOptions {
     // back down" prompts as stairs (stairs recall 0.04 -> 0.35) but every "down the stairs" prompt as going up and
     // no jumps (first draws stairs down 8 -> 0, jumping 5 -> 0 of 10; model card, 2026-12-05).
     bool stairs_round_trips = false;
-    // The lie-down and then rest (one per lie-down recording, captions of lying down): the anchor's lying
-    // captions were 6 of lying still to 1 of lying down.
+    // The lie-down and then rest (one per lie-down recording, captions of lying down): fine-tuned on them, the learned
+    // model lay down for SisFall's lying prompts (lying recall 0.40 -> 0.76) but lost stairs down and jumping in first
+    // draws (8 -> 0 and 5 -> 2 of 10, seed 0; docs/results.md, 2026-12-05).
     bool lie_down_rests = false;
 };
 std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::string& tags, const std::string& file,
