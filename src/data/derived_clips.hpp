@@ -108,8 +108,8 @@ struct DeriveOptions {
     // no jumps (first draws stairs down 8 -> 0, jumping 5 -> 0 of 10; model card, 2026-12-05).
     bool stairs_round_trips = false;
     // The lie-down and then rest (one per lie-down recording, captions of lying down): fine-tuned on them, the learned
-    // model lay down for SisFall's lying prompts (lying recall 0.40 -> 0.76) but lost stairs down and jumping in first
-    // draws (8 -> 0 and 5 -> 2 of 10, seed 0; docs/results.md, 2026-12-05).
+    // model lay down for SisFall's lying prompts (lying recall 0.40 -> 0.76) but lost stairs down in first draws
+    // (8 -> 0-2 of 10 at fine-tuning seeds 1 and 2; its jumping loss is the seed's: docs/results.md, 2026-12-06).
     bool lie_down_rests = false;
 };
 std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::string& tags, const std::string& file,
