@@ -108,8 +108,9 @@ struct DeriveOptions {
     // no jumps (first draws stairs down 8 -> 0, jumping 5 -> 0 of 10; model card, 2026-12-05).
     bool stairs_round_trips = false;
     // The lie-down and then rest (one per lie-down recording, captions of lying down): fine-tuned on them, the learned
-    // model lay down for SisFall's lying prompts (lying recall 0.40 -> 0.76) but lost stairs down in first draws
-    // (8 -> 0-2 of 10 at fine-tuning seeds 1 and 2; its jumping loss is the seed's: docs/results.md, 2026-12-06).
+    // model lay down for SisFall's lying prompts (5-6 of 10 draws at fine-tuning seeds 1-3, 0 without; lying recall
+    // 0.40 -> 0.76-0.93); stairs down and jumping in first draws go with the fine-tuning seed, with or without them
+    // (stairs down 0, 2, 5 of 10 with, 8, 7, 0 without, seeds 1-3: docs/results.md, "The seed sweep").
     bool lie_down_rests = false;
 };
 std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::string& tags, const std::string& file,
