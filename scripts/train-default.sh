@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Reproduces the shipped text-to-motion models from the open motion capture:
-#   models/default          MDM (4 layers x 256) + the GloVe text encoder (experiments/train-default.toml; the
-#                           shipped one ran 11,262 steps on an H200: its model card)
-#   models/lacc-sweep/*     the L_acc sweep from it: lambda_acc 0.01, 0.1, 1 and a control without L_acc
+#   models/base             MDM (4 layers x 256) + the GloVe text encoder trained from scratch
+#                           (experiments/train-default.toml; ../shared/models/v5-gpu-b64 ran 11,262 steps on an H200)
+#   models/default          the base fine-tuned with the default's recipe (experiments/jump-series.toml)
+#   models/lacc-sweep/*     the L_acc sweep from the base: lambda_acc 0.01, 0.1, 1 and a control without L_acc
 #                           (experiments/lacc-sweep/*.toml); models/default-lacc is the sweep's best, copied
 # and their per-sample L_acc on the test split (cache/lacc/*.csv; `t2imu analysis lacc` aggregates them).
 # Usage: bash scripts/train-default.sh [--device cuda] [--base-steps N] [--finetune-steps N] [--mocap DIR]
@@ -28,12 +29,14 @@ if [ ! -f cache/dataset/summary.json ]; then
   build/t2imu data build --mocap cache/mocap --mirror --out cache/dataset
 fi
 resume() { [ -f "$1/checkpoint.pt" ] && echo --resume || true; }
-$t2imu train --config experiments/train-default.toml --steps "$base_steps" --max-minutes "$budget" $(resume models/default)
+$t2imu train --config experiments/train-default.toml --steps "$base_steps" --max-minutes "$budget" $(resume models/base)
+$t2imu finetune --from models/base --config experiments/jump-series.toml ${finetune_steps:+--steps $finetune_steps} \
+  --max-minutes "$budget" $(resume models/default)
 for run in control lambda-0.01 lambda-0.1 lambda-1; do
-  $t2imu finetune --from models/default --config experiments/lacc-sweep/$run.toml ${finetune_steps:+--steps $finetune_steps} \
+  $t2imu finetune --from models/base --config experiments/lacc-sweep/$run.toml ${finetune_steps:+--steps $finetune_steps} \
     --max-minutes "$budget" $(resume models/lacc-sweep/$run)
 done
 mkdir -p cache/lacc
-for model in default lacc-sweep/control lacc-sweep/lambda-0.01 lacc-sweep/lambda-0.1 lacc-sweep/lambda-1; do
+for model in base default lacc-sweep/control lacc-sweep/lambda-0.01 lacc-sweep/lambda-0.1 lacc-sweep/lambda-1; do
   $t2imu eval-lacc --model models/$model --dataset cache/dataset --split test --seed 0 --out cache/lacc/${model//\//_}.csv
 done
