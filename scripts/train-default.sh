@@ -2,7 +2,7 @@
 # Reproduces the shipped text-to-motion models from the open motion capture:
 #   models/base             MDM (4 layers x 256) + the GloVe text encoder trained from scratch
 #                           (experiments/train-default.toml; ../shared/models/v5-gpu-b64 ran 11,262 steps on an H200)
-#   models/default          the base fine-tuned with the default's recipe (experiments/jump-series.toml)
+#   models/default          the base fine-tuned with the default's recipe (experiments/default.toml)
 #   models/lacc-sweep/*     the L_acc sweep from the base: lambda_acc 0.01, 0.1, 1 and a control without L_acc
 #                           (experiments/lacc-sweep/*.toml); models/default-lacc is the sweep's best, copied
 # and their per-sample L_acc on the test split (cache/lacc/*.csv; `t2imu analysis lacc` aggregates them).
@@ -24,13 +24,14 @@ while [ $# -gt 0 ]; do
 done
 t2imu="build/t2imu --device $device"
 [ -f cache/text/glove-100k.safetensors ] || { echo "run scripts/setup.sh first (GloVe vocabulary)" >&2; exit 1; }
-if [ ! -f cache/dataset/summary.json ]; then
-  bash scripts/unpack-mocap.sh "$mocap" cache/mocap
-  build/t2imu data build --mocap cache/mocap --mirror --out cache/dataset
-fi
+[ -f cache/mocap/manifest.csv ] || bash scripts/unpack-mocap.sh "$mocap" cache/mocap
+# The base and the L_acc sweep train on the default build, the default's fine-tuning on it plus the lie-down rests.
+[ -f cache/dataset/summary.json ] || build/t2imu data build --mocap cache/mocap --mirror --out cache/dataset
+[ -f cache/dataset-lie-down/summary.json ] ||
+  build/t2imu data build --mocap cache/mocap --mirror --lie-down-rests --out cache/dataset-lie-down
 resume() { [ -f "$1/checkpoint.pt" ] && echo --resume || true; }
 $t2imu train --config experiments/train-default.toml --steps "$base_steps" --max-minutes "$budget" $(resume models/base)
-$t2imu finetune --from models/base --config experiments/jump-series.toml ${finetune_steps:+--steps $finetune_steps} \
+$t2imu finetune --from models/base --config experiments/default.toml ${finetune_steps:+--steps $finetune_steps} \
   --max-minutes "$budget" $(resume models/default)
 for run in control lambda-0.01 lambda-0.1 lambda-1; do
   $t2imu finetune --from models/base --config experiments/lacc-sweep/$run.toml ${finetune_steps:+--steps $finetune_steps} \

@@ -110,7 +110,8 @@ struct DeriveOptions {
     // The lie-down and then rest (one per lie-down recording, captions of lying down): fine-tuned on them, the learned
     // model lay down for SisFall's lying prompts (5-6 of 10 draws at fine-tuning seeds 1-3, 0 without; lying recall
     // 0.40 -> 0.76-0.93); stairs down and jumping in first draws go with the fine-tuning seed, with or without them
-    // (stairs down 0, 2, 5 of 10 with, 8, 7, 0 without, seeds 1-3: docs/results.md, "The seed sweep").
+    // (stairs down 0, 2, 5 of 10 with, 8, 7, 0 without, seeds 1-3: docs/results.md, "The seed sweep"). models/default
+    // is fine-tuned on a build with them since 2026-12-06 (experiments/default.toml).
     bool lie_down_rests = false;
 };
 std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::string& tags, const std::string& file,
