@@ -7,8 +7,8 @@
 #                           (experiments/lacc-sweep/*.toml); models/default-lacc is the sweep's best, copied
 # and their per-sample L_acc on the test split (cache/lacc/*.csv; `t2imu analysis lacc` aggregates them).
 # Usage: bash scripts/train-default.sh [--device cuda] [--base-steps N] [--finetune-steps N] [--mocap DIR]
-#        [--max-minutes N]  (each training stops at that wall-time budget, saved; rerun with the same options
-#        to continue: a finished or stopped run resumes from its checkpoint)
+#        [--max-minutes N]  (each training stops at that wall-time budget, saved, and the script with it, exit
+#        75: the next training must not start from an unfinished one; rerun with the same options to continue)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 device=cpu base_steps=12000 finetune_steps="" mocap="../shared/data/mocap" budget=0
@@ -30,12 +30,24 @@ t2imu="build/t2imu --device $device"
 [ -f cache/dataset-lie-down/summary.json ] ||
   build/t2imu data build --mocap cache/mocap --mirror --lie-down-rests --out cache/dataset-lie-down
 resume() { [ -f "$1/checkpoint.pt" ] && echo --resume || true; }
-$t2imu train --config experiments/train-default.toml --steps "$base_steps" --max-minutes "$budget" $(resume models/base)
-$t2imu finetune --from models/base --config experiments/default.toml ${finetune_steps:+--steps $finetune_steps} \
+# Runs one training; when it stopped before its last step (the budget or a signal: `t2imu train` then says "stopped
+# early"), so does the script, so no fine-tuning starts from a half-trained base.
+log=$(mktemp)
+trap 'rm -f "$log"' EXIT
+training() {
+  "$@" | tee "$log"
+  if grep -q "stopped early" "$log"; then
+    echo "scripts/train-default.sh: stopped early, saved; run it again with the same options to continue" >&2
+    exit 75
+  fi
+}
+training $t2imu train --config experiments/train-default.toml --steps "$base_steps" --max-minutes "$budget" \
+  $(resume models/base)
+training $t2imu finetune --from models/base --config experiments/default.toml ${finetune_steps:+--steps $finetune_steps} \
   --max-minutes "$budget" $(resume models/default)
 for run in control lambda-0.01 lambda-0.1 lambda-1; do
-  $t2imu finetune --from models/base --config experiments/lacc-sweep/$run.toml ${finetune_steps:+--steps $finetune_steps} \
-    --max-minutes "$budget" $(resume models/lacc-sweep/$run)
+  training $t2imu finetune --from models/base --config experiments/lacc-sweep/$run.toml \
+    ${finetune_steps:+--steps $finetune_steps} --max-minutes "$budget" $(resume models/lacc-sweep/$run)
 done
 mkdir -p cache/lacc
 for model in base default lacc-sweep/control lacc-sweep/lambda-0.01 lacc-sweep/lambda-0.1 lacc-sweep/lambda-1; do
