@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The main job on the shipped defaults: the RealWorld prompt set (8 activities x 10 prompts) -> models/default
-# (DPM-Solver++, 20 steps, 6 s motions, quality filter on) -> the paper's eight bodies -> RealWorld's seven
+# (DPM-Solver++, 50 steps, 6 s motions, quality filter on) -> the paper's eight bodies -> RealWorld's seven
 # sensors at 50 Hz -> an IMU dataset in out/main-job/ (manifest.csv, recordings/, motions/ with BVH, report/).
 # Interrupted, it resumes where it stopped. Usage: bash scripts/main-job.sh [OUT] [extra t2imu synth options]
 set -euo pipefail

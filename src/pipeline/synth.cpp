@@ -276,7 +276,7 @@ void check_or_write_settings(const std::string& out, const json& settings) {
 SampleOptions synth_sampling_defaults() {
     SampleOptions o;
     o.sampler = Sampler::dpmpp;
-    o.steps = 20;
+    o.steps = 50;
     return o;
 }
 

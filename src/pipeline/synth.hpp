@@ -38,7 +38,10 @@ namespace t2imu {
 
 constexpr uint64_t kSeedStridePerAttempt = 1000003;
 
-// The sampling of t2imu synth and of the experiments: DPM-Solver++ 2M, 20 denoiser calls (README, "Samplers").
+// The sampling of t2imu synth and of the experiments: DPM-Solver++ 2M, 50 denoiser calls. At 20 (the default until
+// 2026-12-06) the few-step sampler smoothed the learned default's motions: synthetic stairs carried a third of real
+// stairs' horizontal waist acceleration, and SisFall waist HAR fell from 72.2 % to 65.4 % (docs/results.md, "Sampler
+// steps"; bench/README.md, "Samplers").
 SampleOptions synth_sampling_defaults();
 
 struct SynthOptions {
