@@ -45,17 +45,7 @@ void make_project(const std::string& root) {
 }
 
 test::CliResult run_script(const std::string& root, const std::string& options) {
-    // run_cli runs the t2imu binary; the script is run the same way through bash, from the project's folder.
-    const std::string cmd = "cd '" + root + "' && OPENBLAS_NUM_THREADS=1 bash scripts/train-default.sh " + options + " 2>&1";
-    test::CliResult r{-1, ""};
-    std::FILE* pipe = popen(cmd.c_str(), "r");
-    if (!pipe) return r;
-    char buf[4096];
-    size_t n;
-    while ((n = std::fread(buf, 1, sizeof buf, pipe)) > 0) r.output.append(buf, n);
-    const int status = pclose(pipe);
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
+    return test::run_shell("cd '" + root + "' && OPENBLAS_NUM_THREADS=1 bash scripts/train-default.sh " + options);
 }
 
 // The step a model folder's last metrics line records.

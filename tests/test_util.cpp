@@ -71,7 +71,11 @@ std::string scratch_dir(const std::string& name) {
 
 CliResult run_cli(const std::string& args) {
     const char* other = std::getenv("T2IMU_TEST_BINARY");
-    const std::string cmd = std::string("'") + (other && *other ? other : T2IMU_BINARY) + "' " + args + " 2>&1";
+    return run_shell(std::string("'") + (other && *other ? other : T2IMU_BINARY) + "' " + args);
+}
+
+CliResult run_shell(const std::string& command) {
+    const std::string cmd = command + " 2>&1";
     CliResult r{-1, ""};
     std::FILE* pipe = popen(cmd.c_str(), "r");
     if (!pipe) return r;

@@ -47,6 +47,8 @@ template <class F> std::string error_message(F f) {
 // Runs the t2imu binary with `args` (a shell-quoted string): this build's, or the one T2IMU_TEST_BINARY names
 // (to run the CLI suites against another build, e.g. an old commit's, and see which of its defects they catch).
 CliResult run_cli(const std::string& args);
+// Runs a shell command line (its stderr joined to stdout), e.g. one of the project's scripts.
+CliResult run_shell(const std::string& command);
 
 std::string source_dir();
 
