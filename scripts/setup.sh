@@ -23,6 +23,7 @@ PACKAGES=(
   libgloo-dev            # Gloo's headers, needed by c10d's ProcessGroupGloo (data-parallel training)
   libopenblas0-openmp    # the BLAS libtorch uses; the reference BLAS is many times slower
   clang                  # libFuzzer targets (fuzz/), not needed for the default build
+  clang-format           # the style check of CI (scripts/check-format.sh, .clang-format)
 )
 
 if ! dpkg -s "${PACKAGES[@]}" >/dev/null 2>&1; then
