@@ -5,10 +5,9 @@
 // over GloVe (text/sentence_similarity.hpp), whose cosines sit on another scale, so tau is calibrated: the
 // value that agrees best with hand-labelled captions (calibrate_tau; the shared motion capture's activity tags
 // are such labels). Category names are embedded as short descriptions ("a person is walking") rather than
-// bare nouns, so that both sides of the cosine are sentences. Measured on the 239 distinct single-tag captions
-// of the shared motion capture: SIF weight a = 1e-4 without common-component removal agrees best (77.4 % at
-// tau = 0.73; a = 1e-3: 70.3 %; removing the captions' common component: 62.8 %, because the component then
-// carries the activity words themselves), so that is the categoriser's setting.
+// bare nouns, so that both sides of the cosine are sentences. SIF weight a = 1e-4 without common-component
+// removal agrees best with the shared motion capture's single-tag captions (removing the common component takes
+// the activity words with it), so that is the categoriser's setting (docs/results.md#l_acc-per-activity-category-2026-11-23).
 #pragma once
 #include <string>
 #include <vector>

@@ -37,7 +37,7 @@ double histogram_mode(const Series& x, int num_bins) {
 // its negation for the negative variant; the series is z-scored, so the steps are 0.01 standard deviations).
 // At each threshold the samples at or above it are events; their median time index (1-based) as a position
 // relative to the series' middle, median / (n / 2) - 1. Thresholds whose inter-event intervals (events - 1)
-// make 2 % or less of the samples on that side of the mean (values >= 0 of the possibly negated series) are
+// make 0.02 or less of the samples on that side of the mean (values >= 0 of the possibly negated series) are
 // trimmed from the top; the output is the median of the remaining positions.
 double outlier_include_mdrmd(const Series& x, bool positive) {
     const double increment = 0.01, trim_percent = 2.0;

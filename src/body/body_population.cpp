@@ -18,7 +18,7 @@ MeanSd parse_mean_sd(const std::string& key, const std::string& value) {
     return {parse_body_number(value.substr(0, colon), key), parse_body_number(value.substr(colon + 1), key)};
 }
 
-// max_cv: the largest standard deviation as a share of the mean (stature varies by ~4 % in adults, BMI by ~16 %).
+// max_cv: the largest standard deviation as a share of the mean (adults' stature varies by about 0.04 of it, BMI by 0.16).
 void check_mean_sd(const char* key, const MeanSd& v, double lowest, double highest, double max_cv) {
     if (v.mean < lowest || v.mean > highest)
         throw Error("--body", key, "a mean from " + std::to_string(lowest) + " to " + std::to_string(highest), std::to_string(v.mean));

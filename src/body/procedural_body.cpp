@@ -15,7 +15,7 @@ namespace {
 
 // The skeleton is HumanML3D's target skeleton (smpl22::kTargetOffsets, the SMPL subject every HumanML3D motion
 // is retargeted to) scaled to stature: its leg (hip-knee-ankle 0.826 m) with Winter's ankle height 0.039 H puts
-// the hip joints at 0.525 H for a 1.70 m person, Winter's 0.530 H within 1 %, so 1.70 m is its stature.
+// the hip joints at 0.525 H for a 1.70 m person, Winter's 0.530 H within 0.005 H, so 1.70 m is its stature.
 constexpr double kReferenceStature = 1.70;
 constexpr double kAnkleHeight = 0.039, kBallHeight = 0.012;  // fractions of stature (Winter 2009, Fig. 4.1)
 
@@ -24,7 +24,7 @@ struct SexFractions {
     // de Leva (1996) Table 4, % of body mass.
     double head, upper_trunk, middle_trunk, lower_trunk, upper_arm, forearm, hand, thigh, shank, foot;
 };
-// Women's pelvis is relatively wider and their shoulders narrower than men's (about 5 % each way).
+// Women's pelvis is relatively wider and their shoulders narrower than men's (breadth factors 0.95 and 1.05 each way).
 constexpr SexFractions kMale = {0.97, 1.03, 6.94, 15.96, 16.33, 11.17, 2.71, 1.62, 0.61, 14.16, 4.33, 1.37};
 constexpr SexFractions kFemale = {1.05, 0.95, 6.68, 15.45, 14.65, 12.47, 2.55, 1.38, 0.56, 14.78, 4.81, 1.29};
 

@@ -3,7 +3,7 @@
 // Skeleton: HumanML3D's target skeleton (the SMPL subject every HumanML3D motion is retargeted to, 1.70 m tall)
 // scaled to the stature H, laid out standing with the arms hanging; ankles at 0.039 H and the ball of the foot at
 // 0.012 H (Winter, "Biomechanics and Motor Control of Human Movement", 4th ed., 2009, Fig. 4.1). Women's hip
-// span is 5 % wider and shoulder span 5 % narrower than the reference, men's the reverse. Keeping HumanML3D's
+// span is 1.05 times and shoulder span 0.95 times the reference's, men's the reverse. Keeping HumanML3D's
 // proportions means a HumanML3D motion retargets onto every body without distortion: only size, breadths and
 // girths differ between bodies, as between the paper's eight SMPL shapes.
 //

@@ -4,19 +4,16 @@
 // Why a lever: a belt at the waistline lies on the abdomen between the pelvis and the ribs, where the lumbar
 // spine counter-rotates against the pelvis in the transverse plane and damps its tilt in the sagittal one
 // (Crosbie, Vachalathiti & Smith 1997, Gait & Posture 5:6-12), while the pelvis segment of a capture carries
-// the full rotation of the hip line. Measured on the shared SisFall walking trials (`t2imu analysis signal-stats`,
-// gyr_sway_sd: median per recording of each gyroscope axis's sd in 0.5-3 Hz; docs/realism.md, "The trunk's sway"): the
-// real board turns 0.14 rad/s about its lateral axis and 0.38 about the vertical one, ours on the captured
-// pelvis 0.30 and 0.54 (preset sisfall); pitch 0.35 and yaw 0.6 give 0.11 and 0.32. The gain is no constant of
-// the belt: the captured running turns less than the real one (yaw 0.52 against 0.67) and UMAFall's waist tag
-// turns more than SisFall's board (walking 0.19 and 0.41 against ours 0.32 and 0.49). Turning about a vertical
-// axis 0.1-0.15 m behind the board, the yaw is also a lateral acceleration at the stride frequency.
+// the full rotation of the hip line: SisFall's board turns less than a sensor on the captured pelvis (`t2imu
+// analysis signal-stats`, gyr_sway_sd; the gains calibrated and measured, and why the share is no constant of a
+// belt: docs/realism.md#the-trunks-sway-2026-12-03). Turning about a vertical axis 0.1-0.15 m behind the board,
+// the yaw is also a lateral acceleration at the stride frequency.
 //
 // The edit: the segment's rotation (world from rest) R is split into its slow part S (a Gaussian low-pass of
 // the sign-continuous quaternion, sd `sigma_s`: heading, posture, lying down) and its sway W = S^T R, a
 // rotation in the segment's rest axes (X left, Y up along the trunk, Z front); W's rotation vector is scaled
 // by pitch_gain about X and yaw_gain about Y (Z, the frontal-plane roll, is left as it is: a lever scaling it lowered HAR and raised the two-sample
-// accuracy, docs/realism.md, and was retired). The sensor
+// accuracy, docs/realism.md#device-roll-and-drawn-bodies-2026-12-02, and was retired). The sensor
 // then rides on S W': its orientation and its position about the segment's proximal joint both follow, so the
 // lever arm's tangential acceleration shrinks with the turn. Gains 1 leave the segment as it is.
 #pragma once
@@ -29,7 +26,7 @@ namespace t2imu {
 struct TrunkSway {
     double pitch_gain = 1;  // share of the sway about the segment's left-right axis the device follows
     double yaw_gain = 1;    // ... about its long axis
-    // The slow part's Gaussian sd (s): 0.5 s passes 0.7 % of a 1 Hz stride and 62 % of a 0.2 Hz turn.
+    // The slow part's Gaussian sd (s): 0.5 s passes 0.007 of a 1 Hz stride's amplitude and 0.62 of a 0.2 Hz turn's.
     double sigma_s = 0.5;
     bool enabled() const { return pitch_gain != 1 || yaw_gain != 1; }
 };

@@ -24,7 +24,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--max-seconds-per-file", o.max_seconds_per_file,
                     "keep at most this much of one recording, as chunks spread over it (0 = all)")->capture_default_str();
     cmd->add_flag("--no-derived{false}", o.derive, "leave out the clips derived from captured ones (stairs, sitting; see data/derived_clips.hpp)");
-    cmd->add_flag("--lying-turns", o.derived_kinds.lying_turns, "add lying clips turning onto the side and back (off by default; README, \"Lying turns\")");
+    cmd->add_flag("--lying-turns", o.derived_kinds.lying_turns, "add lying clips turning onto the side and back (off by default; docs/realism.md#lying-turns-2026-12-03)");
     cmd->add_flag("--lie-down-rests", o.derived_kinds.lie_down_rests, "add lying clips of the captured lie-down followed by rest (off by default; data/derived_clips.hpp)");
     cmd->add_flag("--stairs-round-trips", o.derived_kinds.stairs_round_trips, "add stairs clips going up a flight and down the next (off by default; docs/data.md)");
     cmd->add_flag("--no-capture-rate{false}", o.capture_rate,

@@ -99,7 +99,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     add_eval_lacc(root);
     auto* cmd = root.add_subcommand("sample", "prompts -> motions (features and joints .npy + samples.json) from a model folder");
     static SampleArgs a;
-    cmd->add_option("--model", a.model, "model folder (t2imu train, or an official MDM checkpoint with CLIP: README)")->required()->check(CLI::ExistingDirectory);
+    cmd->add_option("--model", a.model, "model folder (t2imu train, or an official MDM checkpoint with CLIP: docs/mdm-checkpoint.md)")->required()->check(CLI::ExistingDirectory);
     cmd->add_option("--prompt", a.prompt, "one prompt");
     cmd->add_option("--prompts", a.prompts, "prompts file: one per line, or activity<TAB>prompt");
     cmd->add_option("--seconds", a.seconds, "length in seconds (20 fps)");

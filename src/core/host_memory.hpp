@@ -4,9 +4,8 @@
 // By default glibc serves a block of more than 128 KiB (raised adaptively up to 32 MiB) with its own mmap and
 // returns it with munmap on free, and trims the heap top past 128 KiB. A training step of MDM 4x256 at batch 64
 // allocates and frees hundreds of activation tensors of 1-40 MiB, so each step paid page faults and page zeroing
-// for all of them: measured on the 2-core CPU machine (2026-12-04, one thread, 8 fine-tuning steps with their
-// start-up), 54.5 s wall of which 13.6 s in the kernel, against 36.5 s and 6.5 s with this tuning, the losses
-// equal to the bit. Costs: the process keeps up to about one step's peak of freed memory.
+// for all of them (the time it saved: bench/README.md, "Training step (issue 43)"), the losses equal to the bit.
+// Costs: the process keeps up to about one step's peak of freed memory.
 #pragma once
 
 namespace t2imu {

@@ -100,18 +100,17 @@ struct DeriveReport {
 // (the mocap manifest's, ';' between several). `file` seeds the draw. Counts what was left out in `report`.
 // The clip kinds that are off by default, each for a measured reason.
 struct DeriveOptions {
-    // The turning clips of a lie-down: README's measurement, "Lying turns" (retrieval's HAR within its spread, lying
-    // windows easier to tell from real); the learned default did not learn to turn from them in 1,500 CPU steps.
+    // The turning clips of a lie-down: retrieval's HAR stayed within its spread and lying windows grew easier to
+    // tell from real (docs/realism.md#lying-turns-2026-12-03); the learned default did not learn to turn from them.
     bool lying_turns = false;
-    // The stairs round trips: a 1,500-step CPU fine-tuning of the learned default on them drew SisFall's "up and
-    // back down" prompts as stairs (stairs recall 0.04 -> 0.35) but every "down the stairs" prompt as going up and
-    // no jumps (first draws stairs down 8 -> 0, jumping 5 -> 0 of 10; model card, 2026-12-05).
+    // The stairs round trips: fine-tuned on them, the learned default drew "up and back down" prompts as stairs but
+    // every "down the stairs" prompt as going up, and no jumps
+    // (docs/results.md#stairs-round-trips-and-lying-turns-2026-12-05-not-adopted).
     bool stairs_round_trips = false;
     // The lie-down and then rest (one per lie-down recording, captions of lying down): fine-tuned on them, the learned
-    // model lay down for SisFall's lying prompts (5-6 of 10 draws at fine-tuning seeds 1-3, 0 without; lying recall
-    // 0.40 -> 0.76-0.93); stairs down and jumping in first draws go with the fine-tuning seed, with or without them
-    // (stairs down 0, 2, 5 of 10 with, 8, 7, 0 without, seeds 1-3: docs/results.md, "The seed sweep"). models/default
-    // is fine-tuned on a build with them since 2026-12-06 (experiments/default.toml).
+    // model lies down for SisFall's lying prompts; stairs down and jumping go with the fine-tuning seed, with or
+    // without them (docs/results.md#lie-down-and-rest-clips-2026-12-05-not-adopted). models/default is fine-tuned on a
+    // build with them (experiments/default.toml).
     bool lie_down_rests = false;
 };
 std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::string& tags, const std::string& file,

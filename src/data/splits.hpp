@@ -3,7 +3,7 @@
 // "CMU/07" -> CMU), so that every source, and with it every activity only one source holds (ReActIdle's
 // standing), is in the training split. Within a source the keys are ordered by a stable 64-bit hash of their
 // text (FNV-1a, then mixed; not std::hash, which differs between platforms) and dealt out in that order: a key
-// goes to train while the source's clips dealt before it are under 80 % of its clips, then to val under 85 %,
+// goes to train while the source's clips dealt before it are under 0.80 of its clips, then to val under 0.85,
 // then to test.
 #pragma once
 #include <cstdint>

@@ -77,7 +77,7 @@ void load_glove_encoder(MotionModel& model, const std::string& dir, const nlohma
 // Returns the prefix of CLIP's keys inside weights.safetensors ("clip_model.", MDM's name) when the CLIP weights
 // are that same file, so that the MDM loader skips them; "" otherwise.
 std::string load_clip_encoder(MotionModel& model, const std::string& dir, const nlohmann::json& t, int64_t text_dim) {
-    const std::string weights = find_encoder_file(dir, t, "weights", "CLIP's text-tower weights as safetensors (README: CLIP text encoder)");
+    const std::string weights = find_encoder_file(dir, t, "weights", "CLIP's text-tower weights as safetensors (docs/mdm-checkpoint.md)");
     const std::string merges = find_encoder_file(dir, t, "merges", "CLIP's bpe_simple_vocab_16e6.txt.gz");
     ClipTextConfig cc = read_clip_text_config(weights);
     cc.mdm_text_tokens = t.value("text_tokens", cc.mdm_text_tokens);

@@ -64,7 +64,7 @@ struct TrainConfig {
 TrainConfig read_train_config(const std::string& path);
 
 // The EMA decay after `step` updates of this run: min(max_decay, (1 + step) / (10 + step)). Without the
-// warm-up a plain 0.9999 keeps 0.9999^n of the starting weights: 30 % of the random initialisation after
+// warm-up a plain 0.9999 keeps 0.9999^n of the starting weights: 0.3 of the random initialisation after
 // 12,000 steps, which blurs the model's predictions (our first shipped model had exactly this fault).
 double ema_decay_at(double max_decay, int64_t step);
 

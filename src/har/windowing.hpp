@@ -1,4 +1,4 @@
-// IMU recordings -> fixed-length, labelled windows for a classifier (the paper: 20 Hz, 2 s, 50 % overlap).
+// IMU recordings -> fixed-length, labelled windows for a classifier (the paper: 20 Hz, 2 s, each window overlapping the next by half).
 //
 // Positions: recordings of one trial at several positions are grouped by their path with the trailing
 // `_<position>.csv` or `/<position>.csv` removed; a window holds the chosen positions' channels side by side

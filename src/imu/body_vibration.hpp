@@ -4,10 +4,9 @@
 // so a virtual sensor on them is smoother than any real one above a few Hz.
 //
 // Why this form: on the shared SisFall subjects (waist, 20 Hz, median per recording of each axis's sd in 5-10
-// Hz; docs/realism.md, "Body vibration") the real board carries more there than the same retrieved motions through our
-// sensor with the `sisfall` preset in every class: walking lateral 1.03 against 0.63 m/s^2, stairs 0.58 / 0.31
-// (lateral) and 0.44 / 0.19 (forward), sitting down and standing up 0.10 / 0.03; and the missing amount grows
-// with how hard the body moves (on the lateral axis walking's about eight times sitting's). A stationary noise
+// Hz) the real board carries more there than the same retrieved motions through our sensor with the `sisfall`
+// preset in every class, and the missing amount grows with how hard the body moves
+// (docs/realism.md#body-vibration-2026-12-04). A stationary noise
 // would swamp the quiet classes; a fixed filter of the captured signal cannot add content that is not there. So
 // the vibration is Gaussian noise, band-limited to [low_hz, high_hz], whose sd follows the local level of the
 // motion.

@@ -14,8 +14,8 @@
 // in the sensor frame (rotation, small angles: the wobble angle d turns the specific force by -d x a and adds d'
 // to the gyroscope); a strap mode (a device that slides along its belt or strap) is a second spring-mass, run on
 // the component along one sensor axis of the acceleration the first one gives, whose relative acceleration is
-// added along that axis (translation only: the measured belt board's gyroscope shows no such rocking, README
-// "Sensor realism"; the terms of the sensor frame's rotation during a ring of a few tenths of a second are left
+// added along that axis (translation only: the measured belt board's gyroscope shows no such rocking,
+// docs/realism.md#the-belts-strap-2026-12-03; the terms of the sensor frame's rotation during a ring of a few tenths of a second are left
 // out); each output sample is the mean of the internal samples within half an output period of
 // it (a box filter: a sensor's and a data set's own low-pass before decimation).
 #pragma once

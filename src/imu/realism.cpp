@@ -41,10 +41,9 @@ void check_damping(const SoftTissue& mode, const char* key, const std::string& s
 //
 // Measured and retired (the rule: a lever stays if it improves a measured fidelity figure on at least one real
 // data set, or models a documented device behaviour a user can choose): the device roll (`roll_gain`,
-// `roll_sigma_s`: the share of its segment's frontal-plane sway a device rolls with), which raised the classifier
-// two-sample accuracy alone (0.878 -> 0.892) and with the sisfall preset (0.801 -> 0.813 at gain 0, 0.826 at
-// -0.5) and lowered HAR, and left the lateral axis's 2.4 Hz peak where it was. Its keys, recorded off (gain 1),
-// in folders made before 2026-12-05 read as today's models.
+// `roll_sigma_s`: the share of its segment's frontal-plane sway a device rolls with), which made synthetic data
+// easier to tell from real and lowered HAR (docs/realism.md#device-roll-and-drawn-bodies-2026-12-02). Its keys,
+// recorded off (gain 1) in folders made before its retirement, read as today's models.
 const std::vector<RealismLever> kLevers = {
     {"tempo", RealismStage::motion, "the motion played at its frame rate x exp(N(0, tempo_sd)) per recording: a uniform time warp",
      {number("tempo_sd", "", 0, 0.5, 0, 0.08, [](RealismModel& m) -> double& { return m.tempo_log_sd; })},
@@ -206,9 +205,7 @@ std::string realism_help() {
 namespace {
 
 // The presets (realism.hpp). Only the levers that raised synthetic-only HAR on the shared SisFall subjects are
-// on (docs/realism.md: tilt +3.8 points, device +1.8; landings -0.7, landings with soft tissue -1.6, tempo -4.2,
-// landings spread -2.0 against landings alone, the strap -1.5 with the sisfall preset, the trunk sway -1.6 alone
-// and -0.4 with the strap over 6 trainings, body vibration -0.8 over 5 with walking recall 0.52 -> 0.41).
+// on: tilt and the device; each other lever lowered it or left it within its spread (docs/realism.md#the-levers).
 struct Preset {
     const char* name;
     double tilt_mean_deg, tilt_sd_deg;

@@ -10,7 +10,7 @@
 // Presets:
 //   smartphone  a consumer 6-axis IMU as in the phones of RealWorld (datasheet-typical values of the
 //               BMI160/LSM6DS3 class): acc 180 ug/sqrt(Hz), gyro 0.007 deg/s/sqrt(Hz), acc bias sd 40 mg, gyro
-//               bias sd 1 deg/s, scale sd 1 %, misalignment sd 0.5 deg, +-8 g, +-2000 deg/s, 16 bit.
+//               bias sd 1 deg/s, scale sd 0.01, misalignment sd 0.5 deg, +-8 g, +-2000 deg/s, 16 bit.
 //   hugadb      the HuGaDB setting: the smartphone chip at +-2 g (clips fast walking at the feet).
 //   sisfall     SisFall's board: ADXL345 (+-16 g, 13 bit, about 300 ug/sqrt(Hz), offset sd 40 mg) and ITG-3200
 //               (0.038 deg/s/sqrt(Hz), zero-rate offset sd 3 deg/s); scale and misalignment as the smartphone.

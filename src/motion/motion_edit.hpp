@@ -68,7 +68,7 @@ std::vector<double> upper_envelope(const std::vector<double>& x, int radius);
 // chair's geometry would otherwise stretch a leg past what the source did. Returns the largest drop (m).
 double lower_to_reach(JointSequence& m, const std::array<double, 2>& reach_m);
 
-// Per leg, the farthest the source's hip gets from its ankle (m), capped at 99.9% of thigh + shank (a knee
+// Per leg, the farthest the source's hip gets from its ankle (m), capped at 0.999 of thigh + shank (a knee
 // fully straight has no side to bend to): what lower_to_reach should keep a derived motion's legs within.
 std::array<double, 2> reach_limits(const JointSequence& source, const BoneLengths& lengths);
 

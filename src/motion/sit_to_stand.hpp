@@ -11,13 +11,14 @@
 //   - Rising has four phases (Schenkman et al. 1990, Phys Ther 70:638): flexion momentum (the trunk bends
 //     forward while the pelvis stays on the seat), momentum transfer (seat-off, at about a third of the
 //     movement, near the trunk's peak flexion), extension (hips and knees straighten, the pelvis rises and
-//     comes forward over the feet) and stabilisation. Here: the trunk flexes to its peak at 35% of stand_up_s
-//     and is upright again at 80%; the pelvis goes forward from 25% to 75% and up from seat-off (35%) to 90%.
+//     comes forward over the feet) and stabilisation. Here (fractions of stand_up_s): the trunk flexes to its
+//     peak at 0.35 and is upright again at 0.8; the pelvis goes forward from 0.25 to 0.75 and up from seat-off
+//     (0.35) to 0.9.
 //   - Peak trunk flexion is about 30-50 deg and rising takes about 1.5-2.5 s; sitting down takes somewhat longer
 //     than rising and moves the pelvis back and down in one sweep, with the trunk's peak flexion late, as the
 //     seat is reached (Kralj, Jaeger & Munih 1990, J Biomech 23:1123; Roebroeck et al. 1994, Clin Biomech
-//     9:235). Here: sitting down moves the pelvis back over 0-75% and down over 10-95% of sit_down_s, the trunk
-//     flexes from 5% to its peak at 55% and is upright when seated. Defaults: 2.2 s down, 1.8 s up, 40 deg.
+//     9:235). Here (fractions of sit_down_s): sitting down moves the pelvis back over 0-0.75 and down over
+//     0.1-0.95, the trunk flexes from 0.05 to its peak at 0.55 and is upright when seated. Defaults: 2.2 s down, 1.8 s up, 40 deg.
 //   - Seated, the pelvis joint (between the hip joint centres) sits about 10 cm above the seat, on the ischial
 //     tuberosities: pelvis_above_seat_m. The chair stands where the thighs reach it with the shanks vertical
 //     (knees at about 90 deg), which fixes how far behind the ankles the seated pelvis is.

@@ -1,9 +1,9 @@
 // Mixed precision for a scope of libtorch calls: while an AutocastScope lives, matrix products, convolutions and
 // attention on its device run in bfloat16 (8-bit mantissa, float32's range), while reductions, norms, softmax
 // and the losses stay in float32 (libtorch's autocast lists). The weights stay float32 (the master copy the
-// optimiser updates); only the products' inputs are rounded. Why: on this project's CPU (AVX-512 BF16, oneDNN)
-// a bf16 product runs 6.5x faster than Debian's OpenBLAS float32 one (12,608 x 256 x 1,024, one thread:
-// 0.039 s against 0.254 s, 2026-12-04), and GPUs have had bf16 tensor cores since Ampere.
+// optimiser updates); only the products' inputs are rounded. Why: on a CPU with AVX-512 BF16 (oneDNN) a bf16
+// product runs several times faster than Debian's OpenBLAS float32 one (bench/README.md, "Training step (issue
+// 43)"), and GPUs have had bf16 tensor cores since Ampere.
 #pragma once
 #include <string>
 

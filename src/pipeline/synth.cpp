@@ -71,7 +71,7 @@ bool fails_only_activity(const Drawn& d) { return d.failures.size() == 1 && d.fa
 
 // Of a job's draws that fail nothing but the activity check, the one agreeing best with the prompt's activity.
 // Keeping it (rather than dropping the job) keeps every activity's share of the data: dropping starves exactly
-// the activities the model renders worst (README, "Results": measured on SisFall).
+// the activities the model renders worst.
 void keep_best_activity_draw(Drawn& d, std::optional<Drawn>& best) {
     if (!best) return;
     best->attempts = d.attempts;

@@ -38,10 +38,9 @@ namespace t2imu {
 
 constexpr uint64_t kSeedStridePerAttempt = 1000003;
 
-// The sampling of t2imu synth and of the experiments: DPM-Solver++ 2M, 50 denoiser calls. At 20 (the default until
-// 2026-12-06) the few-step sampler smoothed the learned default's motions: synthetic stairs carried a third of real
-// stairs' horizontal waist acceleration, and SisFall waist HAR fell from 72.2 % to 65.4 % (docs/results.md, "Sampler
-// steps"; bench/README.md, "Samplers").
+// The sampling of t2imu synth and of the experiments: DPM-Solver++ 2M, 50 denoiser calls. Fewer steps smooth the
+// learned default's motions and cost HAR (docs/results.md#sampler-steps-the-main-job-samples-with-50-dpm-solver-steps-not-20-2026-12-06-later;
+// bench/README.md#samplers-quality-against-steps).
 SampleOptions synth_sampling_defaults();
 
 struct SynthOptions {
@@ -57,7 +56,7 @@ struct SynthOptions {
     // The virtual sensors see a retrieved captured clip at its capture rate (MotionSource::capture_rate_motion)
     // rather than at 20 fps; motions without a capture-rate copy (derived clips, the models') stay at 20 fps. On by
     // default: on the shared SisFall subjects it brought the waist signals' texture nearer the real ones and cost
-    // nothing (README, "The capture rate at the sensors").
+    // nothing (docs/realism.md#the-capture-rate-at-the-sensors-2026-12-03).
     bool capture_rate = true;
     bool filter = true;
     int max_retries = 2;
@@ -68,7 +67,7 @@ struct SynthOptions {
     // for the other thresholds a failing motion is less typical of its activity than 199 in 200 captured ones.
     // Prompts whose activity the reference lacks are not checked. A job whose every draw fails the activity
     // check and nothing else keeps its best-agreeing draw (marker: activity_check.passed false) unless
-    // drop_activity_failures: dropping starved the activities the model renders worst (README, "Results").
+    // drop_activity_failures: dropping starves exactly the activities the model renders worst.
     std::string activity_reference;      // "" = no activity check
     double min_activity_agreement = 0.55;
     bool drop_activity_failures = false;

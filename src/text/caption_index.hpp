@@ -36,11 +36,9 @@ public:
     // The k captions of activity `activity` (canonical; shows_activity, so "stairs" takes either direction) most
     // similar to `prompt`, most similar first (ties: the earlier caption); fewer when the activity has fewer, none
     // when it is "" or has none. Across activities the nearest caption by words is too often another activity's
-    // (see above; as an anchor it cost first draws: 35 and 29 of 80 at weights 0.5 and 1, against 37 without,
-    // seed 0). All k share the activity of the most similar one, so "stairs" gives one direction: a blend of up
-    // and down captions conditions a walk on the level (SisFall's "up the stairs and back down" prompts drew a
-    // stairs motion, by motion_activity.hpp's check, in 1 of 40 draws with both directions blended and 35 of 40
-    // with one; models/default, seed 0, 4 per prompt, 2026-12-05).
+    // (see above; as an anchor it cost first draws). All k share the activity of the most similar one, so
+    // "stairs" gives one direction: a blend of up and down captions conditions a walk on the level (docs/results.md,
+    // "One stairs direction per anchor, and the main job's filter (2026-12-05, later)").
     std::vector<CaptionNeighbour> nearest(const std::string& prompt, size_t k, const std::string& activity) const;
     const std::vector<Prompt>& captions() const { return captions_; }
 

@@ -1,7 +1,7 @@
 // Train DeepConvLSTM on one set of windows and test it on another: the paper's synthetic-to-real experiment
 // (and leave-one-subject-out real-to-real as its ceiling). Torch stays inside the .cpp.
 //
-// Training: per-channel normalisation fitted on the training windows only; 15 % of the training trials
+// Training: per-channel normalisation fitted on the training windows only; 0.15 of the training trials
 // (whole trials, stratified by class, so windows of one trial never sit on both sides) held out for early
 // stopping on balanced accuracy (patience 5 epochs, at most `max_epochs`); class-weighted cross-entropy
 // (weights inverse to class frequency) so a rare class counts as much as a frequent one; Adam, learning rate
