@@ -6,6 +6,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/npy.hpp"
+#include "imu/synth_folder.hpp"
 #include "motion/bvh_export.hpp"
 #include "motion/skeleton.hpp"
 #include "test_util.hpp"
@@ -23,8 +24,8 @@ void write_job(const std::string& dir, const nlohmann::json& marker) {
 
 void write_motion(const std::string& dir, const std::string& job) {
     const JointSequence walk = fixture_walk(40);
-    write_npy(dir + "/motions/" + job + "_joints.npy", joint_sequence_to_array(walk));
-    write_bvh(dir + "/motions/" + job + ".bvh", smpl22_to_bvh(walk));
+    write_npy(dir + "/" + job_joints_file(job), joint_sequence_to_array(walk));
+    write_bvh(dir + "/" + job_bvh_file(job), smpl22_to_bvh(walk));
 }
 
 nlohmann::json quality(double foot_skate) {
@@ -79,7 +80,7 @@ ImuRecording sine_recording(const std::string& path, const std::string& activity
 
 namespace {
 
-// A job marker's recordings list (report/synth_folder.hpp's schema): 4 s at 64 Hz each.
+// A job marker's recordings list (imu/synth_folder.hpp's schema): 4 s at 64 Hz each.
 nlohmann::json recordings(const std::string& job, const std::vector<std::pair<std::string, std::string>>& body_positions) {
     nlohmann::json list = nlohmann::json::array();
     for (const auto& [body, position] : body_positions)

@@ -6,6 +6,7 @@
 
 #include "analysis/signal_statistics.hpp"
 #include "core/error.hpp"
+#include "test_util.hpp"
 
 using namespace t2imu;
 
@@ -68,11 +69,19 @@ TEST(SignalStatistics, TheSwingsOfATransitionAreItsRiseAndDipAboveAndBelowTheMed
 TEST(SignalStatistics, ComparesActivitiesBothSetsHoldWithRatios) {
     const std::vector<ImuRecording> real = {recording("walking", 0.9, 2.0, 16), recording("lying", 0.5, 0.1, 80)};
     const std::vector<ImuRecording> synthetic = {recording("walking", 0.9, 1.0, 4), recording("walking", 0.9, 1.0, 4)};
-    const nlohmann::json c = compare_signal_statistics(real, synthetic, {"waist", 20});
+    const SignalStatisticsComparison c = compare_signal_statistics(real, synthetic, {"waist", 20});
     ASSERT_EQ(c.size(), 1u);  // only walking is in both
-    EXPECT_EQ(c["walking"]["recordings"]["synthetic"], 2);
-    EXPECT_NEAR(c["walking"]["sd_x"]["ratio"].get<double>(), 0.5, 0.01);
-    EXPECT_NEAR(c["walking"]["gravity_tilt_deg"]["real"].get<double>(), 16, 0.1);
+    EXPECT_EQ(c.at("walking").synthetic_recordings, 2);
+    EXPECT_NEAR(c.at("walking").statistics.at("sd_x").ratio, 0.5, 0.01);
+    EXPECT_NEAR(c.at("walking").statistics.at("gravity_tilt_deg").real, 16, 0.1);
+    // The result file reads back as written, to the byte; a broken field is refused by its dotted key.
+    const nlohmann::json doc = signal_statistics_comparison_json(c);
+    EXPECT_EQ(doc["walking"]["recordings"]["synthetic"], 2);
+    EXPECT_EQ(signal_statistics_comparison_json(parse_signal_statistics_comparison(doc, "s.json")).dump(2), doc.dump(2));
+    nlohmann::json broken = doc;
+    broken["walking"]["sd_x"]["ratio"] = "half";
+    EXPECT_EQ(test::error_message([&] { parse_signal_statistics_comparison(broken, "s.json"); }),
+              "s.json: walking.sd_x.ratio: expected a number (got \"half\")");
     EXPECT_THROW(compare_signal_statistics(real, synthetic, {"wrist", 20}), Error);  // a position neither holds: refused, not {}
     ImuRecording short_one = recording("walking", 0.9, 1.0, 0);
     short_one.samples.resize(60);

@@ -1,11 +1,11 @@
-// The synthesis folder's schema (report/synth_folder): a job marker and a synthesis report read back as written,
+// The synthesis folder's schema (imu/synth_folder): a job marker and a synthesis report read back as written,
 // to the byte; markers from before a field existed read with the stated defaults; a broken field is refused by its
 // dotted key.
 #include <gtest/gtest.h>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
-#include "report/synth_folder.hpp"
+#include "imu/synth_folder.hpp"
 #include "test_util.hpp"
 
 using namespace t2imu;
@@ -61,6 +61,19 @@ TEST(SynthFolder, AJobMarkerReadsBackAsWrittenToTheByte) {
     EXPECT_EQ(back[0].job, "j00002");
     EXPECT_EQ(job_marker_json(back[1]), doc);
     EXPECT_TRUE(read_job_markers(dir + "/absent").empty());
+}
+
+TEST(SynthFolder, AJobsFilesAreNamedInOnePlace) {
+    EXPECT_EQ(job_name(7), "j00007");
+    EXPECT_EQ(job_name(123456), "j123456");
+    EXPECT_EQ(job_joints_file(job_name(7)), "motions/j00007_joints.npy");
+    EXPECT_EQ(job_bvh_file("j00007"), "motions/j00007.bvh");
+    EXPECT_EQ(job_recordings_dir("j00007"), "recordings/j00007");
+    EXPECT_EQ(job_marker_path("out", "j00007"), "out/jobs/j00007.json");
+    // The marker fixture above lists the motion files under these names.
+    const JobMarker m = parse_job_marker(json::parse(kMarker), "m.json");
+    EXPECT_EQ(m.motions->at(0).path, job_joints_file(m.job));
+    EXPECT_EQ(m.motions->at(1).path, job_bvh_file(m.job));
 }
 
 TEST(SynthFolder, AnOlderMarkerReadsWithTheStatedDefaults) {

@@ -5,6 +5,7 @@
 
 #include "analysis/domain_gap.hpp"
 #include "analysis/two_sample.hpp"
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "test_util.hpp"
 
@@ -45,6 +46,30 @@ TEST(TwoSample, WassersteinAndKolmogorovSmirnovKnownAnswers) {
     EXPECT_DOUBLE_EQ(wasserstein_1d({1, std::nan(""), 2}, {1, 2}), 0.0);  // NaN dropped
 }
 
+TEST(TwoSample, ADomainGapResultReadsBackAsWrittenToTheByte) {
+    DomainGap gap;
+    gap.features = 3;
+    gap.overall = {0.75, {0.7, 0.8}, 120, 80};
+    gap.per_activity["walking"] = {0.625, {0.5, 0.75}, 60, 40};
+    gap.per_feature = {{"f2", 0.5, 0.25}, {"f1", 0.125, std::nan("")}};  // a NaN distance: JSON null
+    const nlohmann::json doc = domain_gap_json(gap);
+    EXPECT_TRUE(nlohmann::json::parse(doc.dump())["per_feature"][1]["ks"].is_null());
+    EXPECT_EQ(doc["classifier_two_sample_test"]["real"], 120);
+    const std::string file = test::scratch_dir("domain_gap") + "/gap.json";
+    write_file_atomic(file, doc.dump(2) + "\n");
+    const DomainGap back = read_domain_gap(file);
+    EXPECT_EQ(back.overall.folds, gap.overall.folds);
+    EXPECT_EQ(back.per_activity.at("walking").real, 60);
+    EXPECT_TRUE(std::isnan(back.per_feature[1].ks));
+    EXPECT_EQ(domain_gap_json(back).dump(2), doc.dump(2));
+    nlohmann::json broken = doc;
+    broken["per_feature"][0]["ks"] = "far";
+    EXPECT_EQ(test::error_message([&] { parse_domain_gap(broken, "g.json"); }), "g.json: per_feature.0.ks: expected a number (got \"far\")");
+    broken = doc;
+    broken.erase("classifier_two_sample_test");
+    EXPECT_THROW(parse_domain_gap(broken, "g.json"), Error);
+}
+
 TEST(TwoSample, DomainGapOnFeatureTables) {
     // Two tables with activity labels; "walking" differs between them in f1, "running" does not.
     std::mt19937_64 rng(9);
@@ -59,17 +84,17 @@ TEST(TwoSample, DomainGapOnFeatureTables) {
         }
         return t;
     };
-    const nlohmann::json gap = domain_gap(table(0), table(4));
-    EXPECT_EQ(gap["features"], 2);
-    EXPECT_GT(gap["per_activity"]["walking"]["balanced_accuracy"].get<double>(), 0.95);
-    EXPECT_NEAR(gap["per_activity"]["running"]["balanced_accuracy"].get<double>(), 0.5, 0.12);
-    EXPECT_EQ(gap["per_feature"][0]["feature"], "f1");  // the most different feature first
-    EXPECT_GT(gap["per_feature"][0]["ks"].get<double>(), 0.4);
+    const DomainGap gap = domain_gap(table(0), table(4));
+    EXPECT_EQ(gap.features, 2);
+    EXPECT_GT(gap.per_activity.at("walking").balanced_accuracy, 0.95);
+    EXPECT_NEAR(gap.per_activity.at("running").balanced_accuracy, 0.5, 0.12);
+    EXPECT_EQ(gap.per_feature[0].feature, "f1");  // the most different feature first
+    EXPECT_GT(gap.per_feature[0].ks, 0.4);
     // Restricted to the class both tables share alike, the pooled test cannot tell them apart either.
     const CsvTable a = rows_of_activities(table(0), {"running"}, "--classes"), b = rows_of_activities(table(4), {"running"}, "--classes");
     EXPECT_EQ(a.rows.size(), 100u);
-    EXPECT_GT(gap["classifier_two_sample_test"]["balanced_accuracy"].get<double>(), 0.65);
-    EXPECT_NEAR(domain_gap(a, b)["classifier_two_sample_test"]["balanced_accuracy"].get<double>(), 0.5, 0.12);
+    EXPECT_GT(gap.overall.balanced_accuracy, 0.65);
+    EXPECT_NEAR(domain_gap(a, b).overall.balanced_accuracy, 0.5, 0.12);
     EXPECT_EQ(test::error_message([&] { rows_of_activities(table(0), {"running", "lying"}, "--classes"); }),
               "--classes: lying: expected a class t holds windows of");
 }

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "core/json_file.hpp"
 #include "core/signal/fft.hpp"
 #include "har/class_map.hpp"
 #include "har/windowing.hpp"
@@ -261,8 +262,8 @@ nlohmann::json activity_signal_statistics(const std::vector<ImuRecording>& recor
     return out;
 }
 
-nlohmann::json compare_signal_statistics(const std::vector<ImuRecording>& real, const std::vector<ImuRecording>& synthetic,
-                                         const SignalStatisticsOptions& options) {
+SignalStatisticsComparison compare_signal_statistics(const std::vector<ImuRecording>& real, const std::vector<ImuRecording>& synthetic,
+                                                     const SignalStatisticsOptions& options) {
     options.validate();
     const std::string& position = options.position;
     if (!position.empty()) {
@@ -273,19 +274,62 @@ nlohmann::json compare_signal_statistics(const std::vector<ImuRecording>& real, 
     const std::set<std::string> real_labels = labels_of(real, position), synthetic_labels = labels_of(synthetic, position);
     const auto r = statistics_by_activity(real, position, rate_hz, &real_labels, &synthetic_labels);
     const auto s = statistics_by_activity(synthetic, position, rate_hz, &synthetic_labels, &real_labels);
-    nlohmann::json out = nlohmann::json::object();
+    SignalStatisticsComparison out;
     for (const auto& [activity, real_rows] : r) {
         const auto it = s.find(activity);
         if (it == s.end()) continue;
-        nlohmann::json a = {{"recordings", {{"real", real_rows.size()}, {"synthetic", it->second.size()}}}};
+        ActivityComparison& a = out[activity];
+        a.real_recordings = static_cast<int64_t>(real_rows.size()), a.synthetic_recordings = static_cast<int64_t>(it->second.size());
         for (const std::string& name : signal_statistic_names()) {
             const double rm = median_statistic(real_rows, name), sm = median_statistic(it->second, name);
-            a[name] = {{"real", rm}, {"synthetic", sm}, {"ratio", rm != 0 ? sm / rm : std::nan("")},
-                       {"real_spread", robust_spread(real_rows, name)}, {"synthetic_spread", robust_spread(it->second, name)}};
+            a.statistics[name] = {rm, sm, rm != 0 ? sm / rm : std::nan(""), robust_spread(real_rows, name), robust_spread(it->second, name)};
         }
-        out[activity] = a;
     }
     return out;
+}
+
+nlohmann::json signal_statistics_comparison_json(const SignalStatisticsComparison& comparison) {
+    nlohmann::json out = nlohmann::json::object();
+    for (const auto& [activity, a] : comparison) {
+        nlohmann::json j = {{"recordings", {{"real", a.real_recordings}, {"synthetic", a.synthetic_recordings}}}};
+        for (const auto& [name, s] : a.statistics)
+            j[name] = {{"real", s.real}, {"synthetic", s.synthetic}, {"ratio", s.ratio}, {"real_spread", s.real_spread}, {"synthetic_spread", s.synthetic_spread}};
+        out[activity] = j;
+    }
+    return out;
+}
+
+namespace {
+
+// A median or ratio JSON wrote as null (NaN) reads back as NaN.
+double number_or_nan(const nlohmann::json& doc, const char* key, const std::string& path, const std::string& where) {
+    if (doc.is_object() && doc.contains(key) && doc[key].is_null()) return std::nan("");
+    return json_number(doc, key, path, where);
+}
+
+}  // namespace
+
+SignalStatisticsComparison parse_signal_statistics_comparison(const nlohmann::json& doc, const std::string& path) {
+    if (!doc.is_object()) throw Error(path, "json", "an object of activities", doc.dump().substr(0, 40));
+    SignalStatisticsComparison out;
+    for (const auto& [activity, a] : doc.items()) {
+        ActivityComparison& c = out[activity];
+        const nlohmann::json& recordings = json_object(a, "recordings", path, activity);
+        c.real_recordings = static_cast<int64_t>(json_count(recordings, "real", path, activity + ".recordings"));
+        c.synthetic_recordings = static_cast<int64_t>(json_count(recordings, "synthetic", path, activity + ".recordings"));
+        for (const std::string& name : signal_statistic_names()) {
+            if (!a.contains(name)) continue;  // a statistic added since the result was written
+            const nlohmann::json& s = json_object(a, name, path, activity);
+            const std::string where = activity + "." + name;
+            c.statistics[name] = {number_or_nan(s, "real", path, where), number_or_nan(s, "synthetic", path, where), number_or_nan(s, "ratio", path, where),
+                                  number_or_nan(s, "real_spread", path, where), number_or_nan(s, "synthetic_spread", path, where)};
+        }
+    }
+    return out;
+}
+
+SignalStatisticsComparison read_signal_statistics_comparison(const std::string& path) {
+    return parse_signal_statistics_comparison(read_json_file(path), path);
 }
 
 }  // namespace t2imu

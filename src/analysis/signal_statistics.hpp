@@ -29,6 +29,7 @@
 // sets the ratio synthetic / real of every median and each set's spread over recordings (interquartile range
 // / 1.349, a normal distribution's sd). Recordings shorter than 2 s are skipped.
 #pragma once
+#include <cstdint>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -62,9 +63,29 @@ struct SignalStatisticsOptions {
 // {activity: {"recordings": n, stat: median, ...}} over the recordings at the options' position.
 nlohmann::json activity_signal_statistics(const std::vector<ImuRecording>& recordings, const SignalStatisticsOptions& options);
 
-// {activity: {stat: {"real", "synthetic", "ratio", "real_spread", "synthetic_spread"}, "recordings": {...}}} for the activities
-// both sets hold (after coarsening stairs as class_map.hpp does).
-nlohmann::json compare_signal_statistics(const std::vector<ImuRecording>& real, const std::vector<ImuRecording>& synthetic,
-                                         const SignalStatisticsOptions& options);
+// One statistic's medians over recordings, real beside synthetic, and each set's spread over recordings.
+struct StatisticComparison {
+    double real = 0, synthetic = 0;
+    double ratio = 0;  // synthetic / real; NaN where the real median is 0
+    double real_spread = 0, synthetic_spread = 0;
+};
+
+struct ActivityComparison {
+    int64_t real_recordings = 0, synthetic_recordings = 0;
+    std::map<std::string, StatisticComparison> statistics;  // by signal_statistic_names()
+};
+
+// A signal-statistics comparison (`t2imu analysis signal-stats --synthetic`, an experiment's signal-stats/), by
+// activity; its one schema, written and read here.
+using SignalStatisticsComparison = std::map<std::string, ActivityComparison>;
+
+// The activities both sets hold (after coarsening stairs as class_map.hpp does).
+SignalStatisticsComparison compare_signal_statistics(const std::vector<ImuRecording>& real, const std::vector<ImuRecording>& synthetic,
+                                                     const SignalStatisticsOptions& options);
+// {activity: {stat: {"real", "synthetic", "ratio", "real_spread", "synthetic_spread"}, "recordings": {"real", "synthetic"}}}
+nlohmann::json signal_statistics_comparison_json(const SignalStatisticsComparison& comparison);
+// Error naming `path` and the dotted key ("walking.mag_sd.ratio") when a field is missing or mistyped.
+SignalStatisticsComparison parse_signal_statistics_comparison(const nlohmann::json& doc, const std::string& path);
+SignalStatisticsComparison read_signal_statistics_comparison(const std::string& path);
 
 }  // namespace t2imu

@@ -28,10 +28,10 @@ static void add_domain_gap(CLI::App& analysis) {
             r = rows_of_activities(r, classes, "--classes");
             s = rows_of_activities(s, classes, "--classes");
         }
-        const nlohmann::json gap = domain_gap(r, s, seed);
-        write_file_atomic(out, gap.dump(2) + "\n");
-        std::printf("%s: two-sample balanced accuracy %.3f (0.5 = indistinguishable) over %d features\n", out.c_str(),
-                    two_sample_balanced_accuracy(gap, out), gap["features"].get<int>());
+        const DomainGap gap = domain_gap(r, s, seed);
+        write_file_atomic(out, domain_gap_json(gap).dump(2) + "\n");
+        std::printf("%s: two-sample balanced accuracy %.3f (0.5 = indistinguishable) over %lld features\n", out.c_str(),
+                    gap.overall.balanced_accuracy, static_cast<long long>(gap.features));
     });
 }
 

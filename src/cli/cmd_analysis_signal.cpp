@@ -28,7 +28,8 @@ static void add_signal_stats(CLI::App& analysis) {
             check_output_path(out, "--out");
         });
         const std::vector<ImuRecording> r = read_imu_dataset(real);
-        const nlohmann::json stats = synthetic.empty() ? activity_signal_statistics(r, o) : compare_signal_statistics(r, read_imu_dataset(synthetic), o);
+        const nlohmann::json stats = synthetic.empty() ? activity_signal_statistics(r, o)
+                                                       : signal_statistics_comparison_json(compare_signal_statistics(r, read_imu_dataset(synthetic), o));
         write_file_atomic(out, stats.dump(2) + "\n");
         std::printf("%s: statistics of %zu activities\n", out.c_str(), stats.size());
     });

@@ -113,10 +113,10 @@ private:
     void domain_gap_of(const Row& r) {
         const std::string file = path("gap/" + r.id() + ".json");
         if (fs::exists(file)) return;
-        const nlohmann::json gap = domain_gap(read_csv(path("features/real-" + r.set->name + ".csv")),
-                                              read_csv(path("features/" + r.id() + ".csv")), c_.feature_seed);
-        write_file_atomic(file, gap.dump(2) + "\n");
-        say("two-sample test " + r.id() + ": balanced accuracy " + std::to_string(two_sample_balanced_accuracy(gap, file)));
+        const DomainGap gap = domain_gap(read_csv(path("features/real-" + r.set->name + ".csv")),
+                                         read_csv(path("features/" + r.id() + ".csv")), c_.feature_seed);
+        write_file_atomic(file, domain_gap_json(gap).dump(2) + "\n");
+        say("two-sample test " + r.id() + ": balanced accuracy " + std::to_string(gap.overall.balanced_accuracy));
     }
 
     // A real data set's recordings, read once per run (every source's row and every variant of an ablation compares
@@ -135,8 +135,8 @@ private:
             SignalStatisticsOptions o;
             o.position = position;
             o.rate_hz = c_.windows.rate_hz;
-            const nlohmann::json stats = compare_signal_statistics(real_recordings(r.set->dataset), read_imu_dataset(path("synth/" + r.id())), o);
-            write_file_atomic(file, stats.dump(2) + "\n");
+            const SignalStatisticsComparison stats = compare_signal_statistics(real_recordings(r.set->dataset), read_imu_dataset(path("synth/" + r.id())), o);
+            write_file_atomic(file, signal_statistics_comparison_json(stats).dump(2) + "\n");
             say("signal statistics " + r.id() + " at " + position + ": " + file);
         }
     }
@@ -253,7 +253,7 @@ private:
             const std::string gap = path("gap/" + r.id() + ".json");
             s.rows.push_back({r.source->name, r.source->model, r.set->name, har.classes, 1.0 / static_cast<double>(har.classes.size()),
                               score_summary(har, &HarRun::balanced_accuracy), score_summary(har, &HarRun::macro_f1), har.train_windows,
-                              har.test_windows, two_sample_balanced_accuracy(read_json_file(gap), gap)});
+                              har.test_windows, read_domain_gap(gap).overall.balanced_accuracy});
         }
         for (const ExperimentRealSet& set : c_.real_sets) {
             const std::string file = path("har/ceiling-" + set.name + ".json");

@@ -22,7 +22,7 @@
 #include "motion/motion_activity.hpp"
 #include "motion/normalization.hpp"
 #include "pipeline/motion_source.hpp"
-#include "report/synth_folder.hpp"
+#include "imu/synth_folder.hpp"
 #include "text/prompt_set.hpp"
 
 namespace t2imu {
@@ -34,12 +34,6 @@ using Clock = std::chrono::steady_clock;
 using nlohmann::json;
 
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-std::string job_name(int k) {
-    char buf[16];
-    std::snprintf(buf, sizeof buf, "j%05d", k);
-    return buf;
-}
 
 // A job's motion after the quality filter: the attempt kept, or the last one when every attempt failed.
 struct Drawn {
@@ -159,7 +153,7 @@ struct Stage {
 // atomic_file.hpp) its killed attempt left go, so the folder ends as an uninterrupted run leaves it.
 void clear_job_outputs(const std::string& out, const std::string& name) {
     std::error_code ignored;
-    fs::remove_all(out + "/recordings/" + name, ignored);
+    fs::remove_all(out + "/" + job_recordings_dir(name), ignored);
     if (!fs::is_directory(out + "/motions")) return;
     for (const auto& e : fs::directory_iterator(out + "/motions"))
         if (e.path().filename().string().rfind("." + name, 0) == 0) fs::remove(e.path(), ignored);
@@ -177,18 +171,18 @@ void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt&
     if (!d.activity_shown.empty())
         marker.activity_check = ActivityCheck{d.activity_shown, d.activity_agreement, d.activity_agreement >= o.min_activity_agreement};
     if (d.kept) {
-        write_npy(o.out + "/motions/" + name + "_joints.npy", joint_sequence_to_array(d.joints));
-        write_bvh(o.out + "/motions/" + name + ".bvh", smpl22_to_bvh(d.joints));
+        write_npy(o.out + "/" + job_joints_file(name), joint_sequence_to_array(d.joints));
+        write_bvh(o.out + "/" + job_bvh_file(name), smpl22_to_bvh(d.joints));
         marker.motions.emplace();
-        for (const std::string& file : {name + "_joints.npy", name + ".bvh"})
-            marker.motions->push_back({"motions/" + file, static_cast<int64_t>(fs::file_size(o.out + "/motions/" + file))});
+        for (const std::string& file : {job_joints_file(name), job_bvh_file(name)})
+            marker.motions->push_back({file, static_cast<int64_t>(fs::file_size(o.out + "/" + file))});
         VirtualImuOptions imu = stage.imu;
         imu.seed = stage.imu.seed + static_cast<uint64_t>(job);
         for (const BodySpec& b : stage.bodies) {
             const BodyImu r = synthesize_body_imu(d.sensor_joints ? *d.sensor_joints : d.joints, b, stage.sensors, imu);
-            const std::vector<std::string> files = write_body_imu(o.out + "/recordings/" + name, r);
+            const std::vector<std::string> files = write_body_imu(o.out + "/" + job_recordings_dir(name), r);
             for (size_t s = 0; s < r.mounts.size(); ++s) {
-                const std::string path = "recordings/" + name + "/" + files[s];
+                const std::string path = job_recordings_dir(name) + "/" + files[s];
                 marker.recordings.push_back({path, r.body.name, r.mounts[s].placement.position, r.signals[s].t.size(),
                                              static_cast<int64_t>(fs::file_size(o.out + "/" + path)), r.tempo, r.mount_tilts_deg[s]});
             }
@@ -226,7 +220,7 @@ bool job_intact(const std::string& out, int job) {
         return true;
     }
     const std::string name = job_name(job);
-    return file_whole(out, "motions/" + name + "_joints.npy", -1) && file_whole(out, "motions/" + name + ".bvh", -1);
+    return file_whole(out, job_joints_file(name), -1) && file_whole(out, job_bvh_file(name), -1);
 }
 
 json settings_json(const SynthOptions& o, const std::vector<Prompt>& prompts, const json& source, const RealismModel& realism) {

@@ -32,7 +32,7 @@
 
 #include "diffusion/sample_options.hpp"
 #include "motion/motion_quality.hpp"
-#include "report/synth_folder.hpp"
+#include "imu/synth_folder.hpp"
 
 namespace t2imu {
 

@@ -8,7 +8,7 @@
 #include "core/npy.hpp"
 #include "motion/joint_sequence.hpp"
 #include "motion/motion_descriptors.hpp"
-#include "report/synth_folder.hpp"
+#include "imu/synth_folder.hpp"
 
 namespace t2imu {
 
@@ -67,7 +67,7 @@ ActivityConfusion synth_confusion(const MotionActivityClassifier& classifier, co
     std::map<std::string, std::map<std::string, long>> counts;  // prompted -> shown -> motions
     for (const JobMarker& job : read_job_markers(dir)) {
         if (!job.kept) continue;
-        const std::string file = dir + "/motions/" + job.job + "_joints.npy";
+        const std::string file = dir + "/" + job_joints_file(job.job);
         const std::string shown = classifier.classify(describe_motion(joint_sequence_from_array(read_npy(file), file))).best;
         ++counts[job.activity][shown];
     }

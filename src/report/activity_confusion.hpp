@@ -25,7 +25,7 @@ struct ActivityConfusion {
 // its own activity.
 ActivityConfusion reference_confusion(const MotionActivityClassifier& classifier, std::vector<double>* agreement = nullptr);
 
-// Every kept job of the synthesis folder `dir` (markers read by report/synth_folder.hpp): the prompt's activity
+// Every kept job of the synthesis folder `dir` (markers read by imu/synth_folder.hpp): the prompt's activity
 // against the classifier's class for the job's motion. Error naming the folder when no job is kept.
 ActivityConfusion synth_confusion(const MotionActivityClassifier& classifier, const std::string& dir);
 

@@ -56,7 +56,8 @@ std::string synth_title(const fs::path& synth_dir, const std::string& results_di
 // What a results folder holds, found by content (so any layout of t2imu's outputs works): HAR results, domain
 // gaps, synthesis reports, L_acc tables, t-SNE tables and up to three IMU traces.
 struct FoundResults {
-    std::vector<std::pair<std::string, nlohmann::json>> har, gaps;
+    std::vector<std::pair<std::string, nlohmann::json>> har;
+    std::vector<std::pair<std::string, DomainGap>> gaps;
     std::vector<SynthFolder> synth;
     std::vector<std::pair<std::string, CsvTable>> lacc, tsne, traces;
 };
@@ -70,7 +71,7 @@ void classify_json(const fs::path& p, const std::string& results_dir, FoundResul
     }
     if (!j.is_object()) return;
     if (j.contains("balanced_accuracy") && j.contains("confusion")) found->har.push_back({stem(p), j});
-    else if (j.contains("classifier_two_sample_test")) found->gaps.push_back({stem(p), j});
+    else if (j.contains("classifier_two_sample_test")) found->gaps.push_back({stem(p), parse_domain_gap(j, p.string())});
     else if (j.contains("per_activity") && j.contains("motions_kept"))
         found->synth.push_back({p.parent_path().string(), synth_title(p.parent_path(), results_dir), parse_synth_report(j, p.string())});
 }
@@ -128,15 +129,14 @@ void tsne_section(const std::vector<std::pair<std::string, CsvTable>>& tables, P
     }
 }
 
-void gap_section(const std::vector<std::pair<std::string, nlohmann::json>>& gaps, Page& page) {
+void gap_section(const std::vector<std::pair<std::string, DomainGap>>& gaps, Page& page) {
     if (gaps.empty()) return;
     page.body += "<h2>Domain gap (real vs synthetic)</h2>\n<table><tr><th>result</th><th>two-sample balanced accuracy</th><th>most different feature (KS)</th></tr>\n";
     char buf[512];
     for (const auto& [name, g] : gaps) {
-        const auto& top = g["per_feature"].empty() ? nlohmann::json::object() : g["per_feature"][0];
+        const FeatureDistance top = g.per_feature.empty() ? FeatureDistance{"-", 0, 0} : g.per_feature[0];
         std::snprintf(buf, sizeof buf, "<tr><td>%s</td><td>%.3f</td><td>%s (%.3f)</td></tr>\n", html_escape(name).c_str(),
-                      two_sample_balanced_accuracy(g, name),
-                      html_escape(top.value("feature", std::string("-"))).c_str(), top.value("ks", 0.0));
+                      g.overall.balanced_accuracy, html_escape(top.feature).c_str(), top.ks);
         page.body += buf;
     }
     page.body += "</table><p>0.5 = a classifier cannot tell real from synthetic windows; 1.0 = fully separable.</p>\n";

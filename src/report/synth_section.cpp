@@ -68,7 +68,7 @@ std::string activity_outcome(const JobMarker& m) {
 
 // The BVH of a kept job as a link relative to the report folder (the page's own folder).
 std::string bvh_link(const std::string& synth_dir, const std::string& job, const std::string& report_dir) {
-    const fs::path bvh = fs::path(synth_dir) / "motions" / (job + ".bvh");
+    const fs::path bvh = fs::path(synth_dir) / job_bvh_file(job);
     if (!fs::exists(bvh)) return "no BVH";
     const std::string href = fs::relative(fs::absolute(bvh), fs::absolute(report_dir)).generic_string();
     return "<a class=\"bvh\" href=\"" + html_escape(href) + "\">" + html_escape(job) + ".bvh</a>";
@@ -87,7 +87,8 @@ void kept_motions(const std::string& dir, const std::vector<JobMarker>& markers,
         for (const JobMarker& m : markers) {
             if (!m.kept || m.activity != activity) continue;
             const std::string& job = m.job;
-            const std::string joints = dir + "/motions/" + job + "_joints.npy";
+            const std::string joints = dir + "/" + job_joints_file(job);
+            const JointSequence motion = joint_sequence_from_array(read_npy(joints), joints);
             page.body += "<div class=\"job\"><p><b>" + html_escape(job) + "</b> &ldquo;" + html_escape(m.prompt) + "&rdquo;</p>\n" +
                          pose_strip_svg(joint_sequence_from_array(read_npy(joints), joints)) + "\n<p class=\"outcome\">" + quality_outcome(m) +
                          " &middot; " + activity_outcome(m) + " &middot; " + bvh_link(dir, job, page.out_dir) + "</p></div>\n";

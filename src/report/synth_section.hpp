@@ -13,7 +13,7 @@
 
 #include "imu/imu_dataset.hpp"
 #include "report/html_page.hpp"
-#include "report/synth_folder.hpp"
+#include "imu/synth_folder.hpp"
 
 namespace t2imu {
 

@@ -1,6 +1,7 @@
-#include "report/synth_folder.hpp"
+#include "imu/synth_folder.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 
 #include "core/atomic_file.hpp"
@@ -128,6 +129,16 @@ JobMarker parse_job_marker(const json& doc, const std::string& path) {
     if (doc.contains("source_draw")) m.source_draw = json_object(doc, "source_draw", path);
     return m;
 }
+
+std::string job_name(int index) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "j%05d", index);
+    return buf;
+}
+
+std::string job_joints_file(const std::string& job) { return "motions/" + job + "_joints.npy"; }
+std::string job_bvh_file(const std::string& job) { return "motions/" + job + ".bvh"; }
+std::string job_recordings_dir(const std::string& job) { return "recordings/" + job; }
 
 std::string job_marker_path(const std::string& dir, const std::string& job) { return dir + "/jobs/" + job + ".json"; }
 

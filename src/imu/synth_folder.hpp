@@ -1,5 +1,6 @@
 // A synthesis folder: what `t2imu synth --out DIR` writes, and the one schema its writer (pipeline/synth.cpp) and
-// every reader (resume, the manifest, the report, the activity confusion, the experiment) go through.
+// every reader (resume, the manifest, the report, the activity confusion, the experiment) go through. It sits in
+// imu/, below both the writer (pipeline/) and the readers (report/), and is torch-free.
 //
 //   DIR/synth.json                          the settings; a resume must ask for the same (pipeline/synth.cpp)
 //   DIR/jobs/<job>.json                     a JobMarker per finished job, written last: the job is done
@@ -59,6 +60,12 @@ struct JobMarker {
     std::optional<ActivityCheck> activity_check;
     nlohmann::json source_draw;                      // the source's own record of the draw (retrieval: the clip), or null
 };
+
+// A job's name ("j00003" for job 3) and its files relative to the folder: the one place they are spelled.
+std::string job_name(int index);
+std::string job_joints_file(const std::string& job);     // motions/<job>_joints.npy
+std::string job_bvh_file(const std::string& job);        // motions/<job>.bvh
+std::string job_recordings_dir(const std::string& job);  // recordings/<job>
 
 nlohmann::json job_marker_json(const JobMarker& m);
 // Error naming `path` and the dotted key ("recordings.3.n_samples") when a field is missing or mistyped.
