@@ -88,7 +88,6 @@ void kept_motions(const std::string& dir, const std::vector<JobMarker>& markers,
             if (!m.kept || m.activity != activity) continue;
             const std::string& job = m.job;
             const std::string joints = dir + "/" + job_joints_file(job);
-            const JointSequence motion = joint_sequence_from_array(read_npy(joints), joints);
             page.body += "<div class=\"job\"><p><b>" + html_escape(job) + "</b> &ldquo;" + html_escape(m.prompt) + "&rdquo;</p>\n" +
                          pose_strip_svg(joint_sequence_from_array(read_npy(joints), joints)) + "\n<p class=\"outcome\">" + quality_outcome(m) +
                          " &middot; " + activity_outcome(m) + " &middot; " + bvh_link(dir, job, page.out_dir) + "</p></div>\n";
