@@ -1,11 +1,15 @@
 // Every subcommand, found from the program's own --help (so a new one is covered the day it is added), refuses
 // an unknown option and a call without its required arguments with exit code 2 and one line "t2imu: ...".
+// Each call is a process that spends most of its time starting (libtorch and its shared libraries), so the help
+// texts are read once per test process and the probes run several at a time.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "test_util.hpp"
 
@@ -13,11 +17,23 @@ using namespace t2imu;
 
 namespace {
 
-// The names listed under "Subcommands:" in `t2imu PATH --help`.
-std::vector<std::string> subcommands_of(const std::string& path) {
-    const test::CliResult r = test::run_cli(path + " --help");
+// Runs the binary once per argument string, as many at a time as there are cores; results in the given order.
+std::vector<test::CliResult> run_cli_each(const std::vector<std::string>& calls) {
+    std::vector<test::CliResult> results(calls.size());
+    std::atomic<size_t> next{0};
+    std::vector<std::thread> workers(std::max(2u, std::thread::hardware_concurrency()));
+    for (std::thread& w : workers)
+        w = std::thread([&] {
+            for (size_t i = next++; i < calls.size(); i = next++) results[i] = test::run_cli(calls[i]);
+        });
+    for (std::thread& w : workers) w.join();
+    return results;
+}
+
+// The names listed under "Subcommands:" in a --help text.
+std::vector<std::string> subcommands_in(const std::string& help) {
     std::vector<std::string> names;
-    std::istringstream in(r.output);
+    std::istringstream in(help);
     bool listing = false;
     for (std::string line; std::getline(in, line);) {
         if (line.rfind("Subcommands:", 0) == 0) {
@@ -34,34 +50,53 @@ std::vector<std::string> subcommands_of(const std::string& path) {
     return names;
 }
 
-// Every leaf command as "group sub" paths, depth first.
-void collect_leaves(const std::string& path, std::vector<std::string>* leaves) {
-    const std::vector<std::string> children = subcommands_of(path);
-    if (children.empty() && !path.empty()) leaves->push_back(path);
-    for (const std::string& c : children) collect_leaves(path.empty() ? c : path + " " + c, leaves);
+struct CliLeaf {
+    std::string path;  // "group sub"
+    std::string help;  // `t2imu group sub --help`
+};
+
+// Every leaf command with its help text, read level by level from the "Subcommands:" lists; once per process.
+const std::vector<CliLeaf>& every_leaf() {
+    static const std::vector<CliLeaf> all = [] {
+        std::vector<CliLeaf> found;
+        for (std::vector<std::string> level = {""}; !level.empty();) {
+            std::vector<std::string> calls, next;
+            for (const std::string& path : level) calls.push_back(path + " --help");
+            const std::vector<test::CliResult> helps = run_cli_each(calls);
+            for (size_t i = 0; i < level.size(); ++i) {
+                const std::vector<std::string> children = subcommands_in(helps[i].output);
+                if (children.empty() && !level[i].empty()) found.push_back({level[i], helps[i].output});
+                for (const std::string& c : children) next.push_back(level[i].empty() ? c : level[i] + " " + c);
+            }
+            level = next;
+        }
+        return found;
+    }();
+    return all;
 }
 
-void expect_one_line_usage_error(const std::string& args) {
-    const test::CliResult r = test::run_cli(args);
-    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
-    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << args << "\n" << r.output;
-    EXPECT_EQ(r.output.rfind("t2imu: ", 0), 0u) << args << "\n" << r.output;
+// Exit 2 and one line "t2imu: ..." for `args`, or what was wrong.
+std::string not_one_line_usage_error(const std::string& args, const test::CliResult& r) {
+    const bool one_line = std::count(r.output.begin(), r.output.end(), '\n') == 1 && r.output.rfind("t2imu: ", 0) == 0;
+    if (r.exit_code == 2 && one_line) return "";
+    return args + "\n    -> exit " + std::to_string(r.exit_code) + ": " + r.output.substr(0, 300);
 }
 
 }  // namespace
 
 TEST(CliEveryCommand, UnknownOptionsAndMissingRequiredArgumentsAreOneLineUsageErrors) {
-    std::vector<std::string> leaves;
-    collect_leaves("", &leaves);
-    ASSERT_GE(leaves.size(), 29u);  // 29 leaf commands on 2026-12-04
+    ASSERT_GE(every_leaf().size(), 29u);  // 29 leaf commands on 2026-12-04
+    std::vector<std::string> calls;
     int with_required = 0;
-    for (const std::string& leaf : leaves) {
-        expect_one_line_usage_error(leaf + " --no-such-option 1");
-        if (test::run_cli(leaf + " --help").output.find("REQUIRED") == std::string::npos) continue;
+    for (const CliLeaf& leaf : every_leaf()) {
+        calls.push_back(leaf.path + " --no-such-option 1");
+        if (leaf.help.find("REQUIRED") == std::string::npos) continue;
         ++with_required;
-        expect_one_line_usage_error(leaf);
+        calls.push_back(leaf.path);
     }
     EXPECT_GE(with_required, 25);
+    const std::vector<test::CliResult> results = run_cli_each(calls);
+    for (size_t i = 0; i < calls.size(); ++i) EXPECT_EQ(not_one_line_usage_error(calls[i], results[i]), "");
 }
 
 namespace {
@@ -71,10 +106,10 @@ struct OptionLine {
     bool required = false, positional = false;
 };
 
-// The options and positionals of `t2imu LEAF --help`, as CLI11 lists them.
-std::vector<OptionLine> options_of(const std::string& leaf) {
+// The options and positionals of a leaf's --help text, as CLI11 lists them.
+std::vector<OptionLine> options_of(const CliLeaf& leaf) {
     std::vector<OptionLine> out;
-    std::istringstream in(test::run_cli(leaf + " --help").output);
+    std::istringstream in(leaf.help);
     bool listing = false;
     for (std::string line; std::getline(in, line);) {
         if (line.rfind("Options:", 0) == 0 || line.rfind("Positionals:", 0) == 0) {
@@ -138,33 +173,34 @@ std::string minimal_call(const std::string& leaf, const std::vector<OptionLine>&
 
 // Every number option of every subcommand refuses nan and an absurd 1e12 with exit 2 and one line naming the
 // option, before any work (the other arguments are stand-ins that would fail if read); every --out that cannot
-// be made is refused the same way, and nothing is written.
+// be made is refused the same way, and nothing is written. Each probe has its own scratch folder.
 TEST(CliEveryCommand, NanHugeNumbersAndAnUnwritableOutAreOneLineUsageErrors) {
-    std::vector<std::string> leaves;
-    collect_leaves("", &leaves);
-    const std::string dir = test::scratch_dir("cli_every_command");
-    std::ofstream(dir + "/f") << "";
-    std::filesystem::create_directories(dir + "/d");
-    std::vector<std::string> failures;
-    int probes = 0;
-    const auto probe = [&](const std::string& args, const std::string& names) {
-        ++probes;
-        const test::CliResult r = test::run_cli(args);
-        const bool one_line = std::count(r.output.begin(), r.output.end(), '\n') == 1 && r.output.rfind("t2imu: ", 0) == 0;
-        if (r.exit_code != 2 || !one_line || r.output.find(names) == std::string::npos)
-            failures.push_back(args + "\n    -> exit " + std::to_string(r.exit_code) + ": " + r.output.substr(0, 300));
-        if (std::filesystem::exists(dir + "/o")) failures.push_back(args + "\n    -> wrote its --out before refusing");
-        std::filesystem::remove_all(dir + "/o");
+    const std::string scratch = test::scratch_dir("cli_every_command");
+    std::vector<std::string> calls, names, dirs;
+    const auto probe = [&](const std::string& leaf, const std::vector<OptionLine>& options, const std::string& extra,
+                           const std::string& name) {
+        const std::string dir = scratch + "/p" + std::to_string(calls.size());
+        std::filesystem::create_directories(dir + "/d");
+        std::ofstream(dir + "/f") << "";
+        calls.push_back(minimal_call(leaf, options, dir, extra));
+        names.push_back(name);
+        dirs.push_back(dir);
     };
-    for (const std::string& leaf : leaves) {
+    for (const CliLeaf& leaf : every_leaf()) {
         const std::vector<OptionLine> options = options_of(leaf);
         for (const OptionLine& o : options) {
             if (o.positional || o.name == "--threads") continue;
-            if (o.type.rfind("FLOAT", 0) == 0) probe(minimal_call(leaf, options, dir, o.name + " nan"), o.name);
-            if (o.type.rfind("FLOAT", 0) == 0 || o.type.rfind("INT", 0) == 0) probe(minimal_call(leaf, options, dir, o.name + " 1e12"), o.name);
-            if (o.name == "--out") probe(minimal_call(leaf, options, dir, "--out /proc/t2imu-no/o"), "--out");
+            if (o.type.rfind("FLOAT", 0) == 0) probe(leaf.path, options, o.name + " nan", o.name);
+            if (o.type.rfind("FLOAT", 0) == 0 || o.type.rfind("INT", 0) == 0) probe(leaf.path, options, o.name + " 1e12", o.name);
+            if (o.name == "--out") probe(leaf.path, options, "--out /proc/t2imu-no/o", "--out");
         }
     }
-    EXPECT_GE(probes, 60);
-    for (const std::string& f : failures) ADD_FAILURE() << f;
+    EXPECT_GE(calls.size(), 60u);
+    const std::vector<test::CliResult> results = run_cli_each(calls);
+    for (size_t i = 0; i < calls.size(); ++i) {
+        const std::string wrong = not_one_line_usage_error(calls[i], results[i]);
+        if (!wrong.empty()) ADD_FAILURE() << wrong;
+        else if (results[i].output.find(names[i]) == std::string::npos) ADD_FAILURE() << calls[i] << "\n    -> does not name " << names[i] << ": " << results[i].output;
+        if (std::filesystem::exists(dirs[i] + "/o")) ADD_FAILURE() << calls[i] << "\n    -> wrote its --out before refusing";
+    }
 }
