@@ -2,6 +2,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <utility>
 
 #include "core/error.hpp"
 #include "core/parse.hpp"
@@ -40,4 +44,39 @@ TEST(Parse, ListsDropEmptyItemsAndSuffixesAreChecked) {
     EXPECT_TRUE(ends_with("preset.toml", ".toml"));
     EXPECT_FALSE(ends_with("toml", ".toml"));
     EXPECT_TRUE(ends_with("a_joints.npy", "_joints.npy"));
+}
+
+TEST(Parse, NamedOverridesSplitOnceForEveryPresetOption) {
+    const NamedOverrides o = parse_named_overrides("sisfall,bits=12,acc_range_g=8,", "--noise");
+    EXPECT_EQ(o.name, "sisfall");
+    ASSERT_EQ(o.overrides.size(), 2u);  // the trailing comma adds nothing
+    EXPECT_EQ(o.overrides[1], (std::pair<std::string, std::string>{"acc_range_g", "8"}));
+    EXPECT_EQ(parse_named_overrides("none", "--noise").overrides.size(), 0u);
+    EXPECT_EQ(parse_named_overrides("8,seed=", "--body").overrides[0].second, "");  // the value's parser refuses it
+    EXPECT_EQ(test::error_message([] { parse_named_overrides("smartphone,bits", "--noise"); }), "--noise: bits: expected key=value");
+    EXPECT_THROW(parse_named_overrides("smartphone,,bits=3", "--noise"), Error);
+}
+
+TEST(Parse, ShardsAreTwoWholeNumbersWithOneToN) {
+    EXPECT_EQ(parse_shard("2/5", "--shard", "shard"), (std::pair<int, int>{2, 5}));
+    EXPECT_EQ(parse_shard("1/1", "--shard", "shard"), (std::pair<int, int>{1, 1}));
+    for (const char* bad : {"0/3", "4/3", "1/0", "1/", "/3", "1/3x", "1 /3", "1/3/4", "+1/3", "1.0/3", "", "3"})
+        EXPECT_THROW(parse_shard(bad, "--shard", "shard"), Error) << bad;
+    EXPECT_EQ(test::error_message([] { parse_shard("4/3", "--shard", "shard"); }), "--shard: shard: expected I/N with 1 <= I <= N (got 4/3)");
+}
+
+// Numbers from text are read in core/parse alone (the strict forms above): no other file of src/ converts text with
+// the standard library's lenient readers, which accept "1.5x" or stop at the first bad character.
+TEST(Parse, NoSourceOutsideCoreReadsNumbersOnItsOwn) {
+    const std::regex stray(R"(std::(stod|stoi|stol|stoll|stof|strtod|strtol|from_chars)\b|\bsscanf\b)");
+    int files = 0;
+    for (const auto& e : std::filesystem::recursive_directory_iterator(std::string(T2IMU_SOURCE_DIR) + "/src")) {
+        const std::string path = e.path().generic_string();
+        if (!e.is_regular_file() || path.find("/src/core/") != std::string::npos) continue;
+        std::ifstream in(e.path());
+        std::string line;
+        for (int n = 1; std::getline(in, line); ++n) EXPECT_FALSE(std::regex_search(line, stray)) << path << ":" << n << ": " << line;
+        ++files;
+    }
+    EXPECT_GT(files, 100);
 }

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/parse.hpp"
 
 namespace t2imu {
 
@@ -56,15 +57,11 @@ void BodyPopulation::validate() const {
 
 BodyPopulation parse_body_population(const std::string& text) {
     BodyPopulation p;
-    std::stringstream in(text);
-    std::string part;
-    std::getline(in, part, ',');
-    const double count = parse_body_number(part, "population");
-    if (count != std::floor(count) || count < 1 || count > 1000) throw Error("--body", "population", "1 to 1000 bodies", part);
+    const NamedOverrides spelled = parse_named_overrides(text, "--body");
+    const double count = parse_body_number(spelled.name, "population");
+    if (count != std::floor(count) || count < 1 || count > 1000) throw Error("--body", "population", "1 to 1000 bodies", spelled.name);
     p.count = static_cast<int>(count);
-    while (std::getline(in, part, ',')) {
-        const size_t eq = part.find('=');
-        const std::string key = part.substr(0, eq), value = eq == std::string::npos ? "" : part.substr(eq + 1);
+    for (const auto& [key, value] : spelled.overrides) {
         if (key == "seed") {
             const double s = parse_body_number(value, "seed");
             if (s != std::floor(s) || s < 0 || s > 9e15) throw Error("--body", "seed", "a whole number >= 0", value);
@@ -80,7 +77,7 @@ BodyPopulation parse_body_population(const std::string& text) {
         } else if (key == "bmi_f") {
             p.bmi_female = parse_mean_sd(key, value);
         } else {
-            throw Error("--body", part, "seed=S, female=F, height_m|height_f=CM:SD or bmi_m|bmi_f=MEAN:SD");
+            throw Error("--body", key + "=" + value, "seed=S, female=F, height_m|height_f=CM:SD or bmi_m|bmi_f=MEAN:SD");
         }
     }
     p.validate();

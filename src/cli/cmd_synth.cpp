@@ -7,6 +7,7 @@
 #include "cli/usage.hpp"
 #include "core/error.hpp"
 #include "core/output_path.hpp"
+#include "core/parse.hpp"
 #include "imu/realism.hpp"
 #include "pipeline/synth.hpp"
 
@@ -25,10 +26,7 @@ struct SynthArgs {
 
 // "I/N", 1-based on the command line.
 void parse_shard(const std::string& text, SynthOptions& o) {
-    int i = 0, n = 0;
-    char tail = 0;
-    if (std::sscanf(text.c_str(), "%d/%d%c", &i, &n, &tail) != 2 || n < 1 || i < 1 || i > n)
-        throw Error("--shard", "shard", "I/N with 1 <= I <= N", text);
+    const auto [i, n] = t2imu::parse_shard(text, "--shard", "shard");
     o.shard = i - 1;
     o.shards = n;
 }

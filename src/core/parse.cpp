@@ -49,6 +49,26 @@ bool ends_with(const std::string& path, const std::string& suffix) {
     return path.size() >= suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
+NamedOverrides parse_named_overrides(const std::string& text, const std::string& source) {
+    NamedOverrides out;
+    std::stringstream in(text);
+    std::getline(in, out.name, ',');
+    for (std::string item; std::getline(in, item, ',');) {
+        const size_t eq = item.find('=');
+        if (eq == std::string::npos) throw Error(source, item, "key=value");
+        out.overrides.emplace_back(item.substr(0, eq), item.substr(eq + 1));
+    }
+    return out;
+}
+
+std::pair<int, int> parse_shard(const std::string& text, const std::string& source, const std::string& field) {
+    const size_t slash = text.find('/');
+    const std::optional<long long> i = slash == std::string::npos ? std::nullopt : parse_integer(text.substr(0, slash));
+    const std::optional<long long> n = slash == std::string::npos ? std::nullopt : parse_integer(text.substr(slash + 1));
+    if (!i || !n || *n < 1 || *n > 1000000 || *i < 1 || *i > *n) throw Error(source, field, "I/N with 1 <= I <= N", text);
+    return {static_cast<int>(*i), static_cast<int>(*n)};
+}
+
 std::vector<std::string> split_list(const std::string& text, char separator) {
     std::vector<std::string> out;
     std::stringstream in(text);

@@ -6,6 +6,7 @@
 #pragma once
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace t2imu {
@@ -22,6 +23,18 @@ long long integer_in(const std::string& text, long long low, long long high, con
 
 // Whether `path` ends with `suffix` (".toml", "_joints.npy"): how options tell a file from a preset name.
 bool ends_with(const std::string& path, const std::string& suffix);
+
+// "NAME,key=value,key=value" (a preset and its overrides: --noise, --body population:N,...): the name and the
+// key=value items in order, their values left as text for the caller's own parser. Error(source, item, "key=value")
+// for an item without '=' (an empty one included; a trailing comma is ignored).
+struct NamedOverrides {
+    std::string name;
+    std::vector<std::pair<std::string, std::string>> overrides;  // key, value
+};
+NamedOverrides parse_named_overrides(const std::string& text, const std::string& source);
+
+// "I/N" with 1 <= I <= N (a shard of N); Error(source, field, "I/N with 1 <= I <= N", text) otherwise.
+std::pair<int, int> parse_shard(const std::string& text, const std::string& source, const std::string& field);
 
 // "a,b,,c" -> {"a", "b", "c"}: the items between `separator`s, empty ones dropped (so "" gives none).
 std::vector<std::string> split_list(const std::string& text, char separator = ',');

@@ -14,6 +14,7 @@
 #include "core/npy.hpp"
 #include "core/output_path.hpp"
 #include "core/progress.hpp"
+#include "core/parse.hpp"
 #include "data/captions.hpp"
 #include "data/derived_clips.hpp"
 #include "data/hml3d_dataset.hpp"
@@ -306,7 +307,7 @@ nlohmann::json train_draw_share(const CsvTable& clips) {
     std::map<std::string, double> count;
     double total = 0;
     for (const auto& row : clips.rows)
-        if (row[split] == "train" && Hml3dDataset::usable_length(std::stol(row[frames]))) {
+        if (row[split] == "train" && Hml3dDataset::usable_length(static_cast<long>(integer_in(row[frames], 0, 1000000000, clips.source, "frames")))) {
             count[row[tags].empty() ? "untagged" : row[tags]] += 1;
             total += 1;
         }

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
-#include <sstream>
 #include <vector>
 
 #include "core/error.hpp"
@@ -116,16 +115,12 @@ void corrupt(std::vector<Vector3d>& x, const AxisErrors& e, double density, doub
 }  // namespace
 
 SensorNoiseModel parse_noise_model(const std::string& text, const std::string& option) {
-    std::stringstream in(text);
-    std::string part;
-    std::getline(in, part, ',');
-    SensorNoiseModel m = preset(part, option);
-    while (std::getline(in, part, ',')) {
-        const size_t eq = part.find('=');
-        if (eq == std::string::npos) throw Error(option, part, "key=value");
-        const std::optional<double> v = parse_finite(part.substr(eq + 1));
-        if (!v || *v < 0) throw Error(option, part.substr(0, eq), "a non-negative number", part.substr(eq + 1));
-        set_field(m, part.substr(0, eq), *v, option);
+    const NamedOverrides spelled = parse_named_overrides(text, option);
+    SensorNoiseModel m = preset(spelled.name, option);
+    for (const auto& [key, value] : spelled.overrides) {
+        const std::optional<double> v = parse_finite(value);
+        if (!v || *v < 0) throw Error(option, key, "a non-negative number", value);
+        set_field(m, key, *v, option);
     }
     if (m.name == "none" && text != "none") throw Error(option, "none", "no overrides");
     return m;

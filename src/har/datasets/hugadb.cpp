@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/parse.hpp"
 #include "har/datasets/release_files.hpp"
 
 namespace t2imu {
@@ -48,9 +50,12 @@ std::vector<ImuRecording> read_hugadb_file(const std::string& path) {
         if (line.empty() || line[0] == '#' || std::isalpha(static_cast<unsigned char>(line[0]))) continue;
         std::istringstream cells(line);
         std::vector<double> v;
-        double x;
-        while (cells >> x) v.push_back(x);
-        if (v.size() != 39 || !cells.eof())
+        for (std::string cell; cells >> cell && v.size() <= 39;) {
+            const std::optional<double> x = parse_number(cell);
+            if (!x) throw Error(path, "line " + std::to_string(n), "39 numbers (6 IMUs x 6, 2 EMG, activity)", cell);
+            v.push_back(*x);
+        }
+        if (v.size() != 39)
             throw Error(path, "line " + std::to_string(n), "39 numbers (6 IMUs x 6, 2 EMG, activity)", std::to_string(v.size()));
         // Checked as a double first: casting -1.9e10 to int is undefined behaviour (found by fuzz_hugadb).
         if (!(v[38] >= 1 && v[38] <= 12 && v[38] == std::floor(v[38])))
