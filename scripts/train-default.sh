@@ -12,14 +12,21 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 device=cpu base_steps=12000 finetune_steps="" mocap="../shared/data/mocap" budget=0
+# Options are checked before anything runs: a step count of 0 would mean "the config's" to t2imu (100,000 steps).
+usage() { echo "scripts/train-default.sh: $1" >&2; exit 2; }
+steps() { [[ "$2" =~ ^[1-9][0-9]{0,8}$ ]] || usage "$1: expected a whole number of steps from 1 (got '$2')"; }
 while [ $# -gt 0 ]; do
   case "$1" in
+    --device | --base-steps | --finetune-steps | --mocap | --max-minutes)
+      [ $# -ge 2 ] && [ -n "$2" ] || usage "$1: expected a value" ;;&
     --device) device=$2; shift 2 ;;
-    --base-steps) base_steps=$2; shift 2 ;;
-    --finetune-steps) finetune_steps=$2; shift 2 ;;
+    --base-steps) steps "$1" "$2"; base_steps=$2; shift 2 ;;
+    --finetune-steps) steps "$1" "$2"; finetune_steps=$2; shift 2 ;;
     --mocap) mocap=$2; shift 2 ;;
-    --max-minutes) budget=$2; shift 2 ;;
-    *) echo "unknown option $1" >&2; exit 2 ;;
+    --max-minutes)
+      [[ "$2" =~ ^[0-9]+(\.[0-9]+)?$ ]] || usage "$1: expected minutes from 0 (got '$2')"
+      budget=$2; shift 2 ;;
+    *) usage "unknown option $1" ;;
   esac
 done
 t2imu="build/t2imu --device $device"

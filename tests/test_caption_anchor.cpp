@@ -188,6 +188,11 @@ TEST(CaptionAnchor, ModelJsonFieldsAreCheckedAndAFolderWithoutOneRefusesAWeight)
     expect_refused([](nlohmann::json& j) { j["caption_anchor"]["neighbours"] = 0; }, "caption_anchor.neighbours");
     expect_refused([](nlohmann::json& j) { j["caption_anchor"].erase("captions"); }, "caption_anchor.captions");
     expect_refused([](nlohmann::json& j) { j["caption_anchor"]["captions"] = "missing.tsv"; }, "missing.tsv");
+    // The file is read only inside the model folder, and its errors name the field that led to it.
+    expect_refused([](nlohmann::json& j) { j["caption_anchor"]["captions"] = "missing.tsv"; }, "model.json: caption_anchor.captions: ");
+    std::ofstream(model_dir + "/../outside.tsv") << "walking\ta person walks\n";
+    expect_refused([](nlohmann::json& j) { j["caption_anchor"]["captions"] = "../outside.tsv"; }, "caption_anchor.captions: ../outside.tsv: expected a relative path inside");
+    expect_refused([](nlohmann::json& j) { j["caption_anchor"]["captions"] = "/etc/hostname"; }, "caption_anchor.captions: /etc/hostname");
     nlohmann::json none = nlohmann::json::parse(good);
     none.erase("caption_anchor");
     write_file_atomic(model_dir + "/model.json", none.dump());

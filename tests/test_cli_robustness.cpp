@@ -222,6 +222,38 @@ std::vector<Row> rows() {
         {"ImportUmafallHugeSensorId", "data import-imu --format umafall {D}/in --out {D}/o",
          Files{{"in/UMAFall_Subject_01_ADL_Walking_1_2017-04-14_23-38-23.csv", "% C4:BE:84:70:64:8A; 99999999999999; WAIST; SensorTag\n"}}, 1,
          "sensor id: expected a whole number from 0 to 999999", {"o"}},
+        // Round three (issue 64): an importer refuses a sensor id listed twice and a sample past any sensor's range.
+        {"ImportUmafallDuplicateSensorId", "data import-imu --format umafall {D}/in --out {D}/o",
+         Files{{"in/UMAFall_Subject_01_ADL_Walking_1_2017-04-14_23-38-23.csv",
+                "% C4:BE:84:70:64:8A; 1; WAIST; SensorTag\n% C4:BE:84:70:64:8B; 1; WRIST; SensorTag\n100;1;0;1;0;0;1\n"}}, 1,
+         "line 2 sensor id: expected an id listed once", {"o"}},
+        {"ImportUmafallHugeSample", "data import-imu --format umafall {D}/in --out {D}/o",
+         Files{{"in/UMAFall_Subject_01_ADL_Walking_1_2017-04-14_23-38-23.csv", "% C4:BE:84:70:64:8A; 1; WAIST; SensorTag\n100;1;1e20;1;0;0;1\n"}}, 1,
+         "line 2: expected a sample within ±10^4 (g, °/s) (got 1e20)", {"o"}},
+        // Prompts: blank text and bidi controls refused naming the line; a file that never ends refused at its cap.
+        {"SynthBlankPrompt", kSynth + "--out {D}/o", {{"p.tsv", "walking\t   \n"}}, 1, "p.tsv: line 1: expected a prompt after the tab (not blank)", {"o"}},
+        {"SynthBidiPrompt", kSynth + "--out {D}/o", {{"p.tsv", "walking\ta man \xE2\x80\xAEsklaw\n"}}, 1,
+         "p.tsv: line 1: expected text without bidirectional control characters (got U+202E)", {"o"}},
+        {"SynthEndlessPrompts", "synth --prompts /dev/zero --activity-reference '' --model {D}/no-model --out {D}/o", {}, 1,
+         "/dev/zero: size: expected a prompts file of at most 16 MiB", {"o"}},
+        // What an error quotes of its input is cut after its head and made printable.
+        {"SynthGuidance301Digits", kSynth + "--guidance 1" + std::string(300, '0') + " --out {D}/o", kPrompts, 2, "(got 100000000000...(301 digits).000000)", {"o"}},
+        {"UnknownOptionWithEscapes", "synth --prompts {D}/p.tsv --out {D}/o '--bad\x1b[2J\xe2\x80\xaex'", kPrompts, 2, "not expected: --bad\\x1B[2J\\u202Ex", {"o"}},
+        // text vocab: JSON errors and values float16 cannot hold, named by field.
+        {"TextVocabJsonSyntax", "text vocab --from {D}/v.json --out {D}/v.safetensors", {{"v.json", "{\"words\": [}"}}, 1,
+         "v.json: json: expected valid JSON (got a syntax error at byte 12)", {"v.safetensors"}},
+        {"TextVocabWordNotAString", "text vocab --from {D}/v.json --out {D}/v.safetensors", {{"v.json", "{\"words\": [1], \"vectors\": {}, \"dimensions\": 100}"}}, 1,
+         "v.json: words[0]: expected a word (a string)", {"v.safetensors"}},
+        {"TextVocabDimensionsNotANumber", "text vocab --from {D}/v.json --out {D}/v.safetensors", {{"v.json", "{\"words\": [], \"vectors\": {}, \"dimensions\": \"100\"}"}}, 1,
+         "v.json: header: expected an object with words", {"v.safetensors"}},
+        {"TextVocabInfiniteVector", "text vocab --from {D}/v.json --out {D}/v.safetensors",
+         {{"v.json", "{\"words\": [\"walk\"], \"vectors\": {\"walk\": [1e39,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0]}, \"dimensions\": 100}"}}, 1,
+         "v.json: vectors.walk[0]: expected a finite number within ±65504 (float16)", {"v.safetensors"}},
+        // An attachment the integration cannot follow is refused when validated (docs/realism.md: the stability bound).
+        {"ImuSynthRealismUnstableTissue", kImuSynth + "--realism {D}/r.toml --out {D}/o", standing_joints("j.npy") + Files{{"r.toml", "tissue_hz = 150\ntissue_damping = 2\n"}},
+         2, "r.toml: tissue_hz with tissue_damping: expected 2 pi tissue_hz", {"o"}},
+        // har run never writes over one of its inputs.
+        {"HarOutIsTheTrainingSet", kHar + "--repeats 1 --out {D}/imu", imu_dataset("imu"), 2, "expected an output apart from the inputs (got it is the input", {}},
         // Usage errors are one line with exit code 2.
         {"MissingRequiredOption", "synth", {}, 2, "--prompts is required", {}},
         {"UnknownFlag", kImuSynth + "--out {D}/o --no-such-flag", standing_joints("j.npy"), 2, "--no-such-flag", {"o"}},

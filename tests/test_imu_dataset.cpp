@@ -2,6 +2,7 @@
 // the manifest written alone after recordings written one at a time, and refused files naming the field.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "core/atomic_file.hpp"
@@ -102,4 +103,39 @@ TEST(ImuDataset, RefusesAWrongHeaderAndNonFiniteValues) {
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("acc_y"), std::string::npos) << e.what();
     }
+}
+
+TEST(ImuDataset, HugeAndNonFiniteSamplesAreRefusedNamingFileRowAndColumnAndNothingIsWritten) {
+    // A value of 1e43 once advanced the writer past its 48-byte buffer and wrote NUL and binary bytes into the CSV.
+    const std::string dir = test::scratch_dir("imu_dataset_huge");
+    const std::pair<double, const char*> bad[] = {{1e43, "acc_y"}, {1e300, "acc_y"}, {-1.5e6, "acc_y"}, {NAN, "acc_y"}, {INFINITY, "acc_y"}};
+    for (const auto& [value, column] : bad) {
+        ImuSignals s = signals(4, 10);
+        s.acc[2].y() = value;
+        const std::string m = test::error_message([&] { write_imu_recording(dir + "/r.csv", s); });
+        EXPECT_TRUE(test::contains(m, dir + "/r.csv") && test::contains(m, "row 4") && test::contains(m, column)) << m;
+        EXPECT_EQ(m.find('\n'), std::string::npos);
+        EXPECT_FALSE(std::ifstream(dir + "/r.csv").good());
+    }
+    ImuRecording r;
+    r.path = "rec.csv";
+    r.rate_hz = 10;
+    r.t = {0, 0.1};
+    r.samples = {{0, 0, 0, 0, 0, 0}, {0, 0, 0, 0, 0, 2e7}};
+    const std::string m = test::error_message([&] { write_imu_dataset(dir, {r}); });
+    EXPECT_TRUE(test::contains(m, "rec.csv") && test::contains(m, "row 3") && test::contains(m, "gyr_z") && test::contains(m, "2e+07")) << m;
+    EXPECT_FALSE(std::ifstream(dir + "/manifest.csv").good());
+}
+
+TEST(ImuDataset, TheLargestAcceptedAndTiniestSamplesRoundTripAsText) {
+    const std::string dir = test::scratch_dir("imu_dataset_extremes");
+    ImuSignals s = signals(3, 10);
+    s.acc[0] = Eigen::Vector3d(1e6, -1e6, 4.9e-324);  // the limits and a denormal (written as 0)
+    s.gyr[1] = Eigen::Vector3d(-999999.999999, 1e-7, -1e-7);
+    write_imu_recording(dir + "/r.csv", s);
+    const std::string text = read_file_text(dir + "/r.csv");
+    EXPECT_TRUE(test::contains(text, "1000000,-1000000,0,")) << text;
+    EXPECT_TRUE(test::contains(text, "-999999.999999,0,0\n")) << text;  // 1e-7 below the 6th decimal: "0", never "-0"
+    EXPECT_FALSE(test::contains(text, "-0,") || test::contains(text, "-0\n")) << text;
+    for (char c : text) EXPECT_TRUE(c == '\n' || (c >= ' ' && c <= '~')) << static_cast<int>(c);
 }

@@ -165,6 +165,10 @@ TEST(Npy, RefusesMalformedInputNamingTheField) {
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("expected a non-negative integer (got '-1, 3), }"), std::string::npos) << e.what();
     }
+    // A dimension past 64 bits is quoted from its first digit (it once showed only the digits after the overflow).
+    const auto huge = npy_bytes("{'descr': '<f4', 'fortran_order': False, 'shape': (98765432109876543210, 3), }", six);
+    const std::string m = test::error_message([&] { parse_npy(huge.data(), huge.size(), "huge.npy"); });
+    EXPECT_TRUE(test::contains(m, "expected a dimension that fits in 64 bits (got '98765432109876543210, 3), }' at header offset 51)")) << m;
     std::vector<uint8_t> long_header = good;
     long_header[9] = 0x7f;  // header length 32 KB in a 152-byte file
     EXPECT_THROW(parse_npy(long_header.data(), long_header.size(), "long.npy"), Error);

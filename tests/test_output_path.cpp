@@ -1,12 +1,15 @@
-// Output paths checked before work: missing folders are proven creatable and removed again, a file in the way
-// and an empty path are refused naming the option; make_directories; the partial-folder name; stale partial
-// folders of dead processes removed, a live process's kept.
+// The output-path guard (check_output): missing folders are proven creatable and removed again; a file in the
+// way, an empty path, a symbolic link, a "LINK/.." path resolved as the system resolves it, a folder t2imu did not
+// make, a folder where a file goes, an input as the output and a place that refuses new entries (/proc) are
+// refused naming the option, with nothing changed on disk; make_directories; the partial-folder name; stale
+// partial folders of dead processes removed, a live process's kept; publishing resolves the path first.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <iterator>
 
@@ -18,23 +21,47 @@ using namespace t2imu;
 namespace fs = std::filesystem;
 
 namespace {
+
+// Every path below `root` with its kind and bytes: equal before and after a refused check means nothing changed.
+std::string tree_listing(const std::string& root) {
+    std::string listing;
+    for (auto it = fs::recursive_directory_iterator(root); it != fs::recursive_directory_iterator(); ++it) {
+        listing += it->path().string();
+        if (it->is_symlink()) listing += " -> " + fs::read_symlink(it->path()).string();
+        else if (it->is_regular_file()) {
+            std::ifstream in(it->path(), std::ios::binary);
+            listing += " = " + std::string(std::istreambuf_iterator<char>(in), {});
+        }
+        listing += "\n";
+    }
+    return listing;
+}
+
+void expect_refused(const std::function<void()>& check, const std::string& root, const std::string& why) {
+    const std::string before = tree_listing(root);
+    const std::string m = test::error_message(check);
+    EXPECT_TRUE(test::contains(m, "--out") && test::contains(m, why)) << m;
+    EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+    EXPECT_EQ(tree_listing(root), before) << why;
+}
+
 }  // namespace
 
 TEST(OutputPath, MissingFoldersAreProvenAndLeftUnmade) {
     const std::string dir = test::scratch_dir("output_path_missing");
-    EXPECT_NO_THROW(check_output_path(dir + "/a/b/c/out.csv", "--out"));
+    EXPECT_NO_THROW(check_output(dir + "/a/b/c/out.csv", "--out", OutputKind::file));
     EXPECT_FALSE(fs::exists(dir + "/a"));  // nothing left behind
-    EXPECT_NO_THROW(check_output_path(dir + "/existing.csv", "--out"));
-    EXPECT_NO_THROW(check_output_path(dir + "/run/", "--out"));  // a folder to be made, with a trailing slash
+    EXPECT_NO_THROW(check_output(dir + "/existing.csv", "--out", OutputKind::file));
+    EXPECT_NO_THROW(check_output(dir + "/run/", "--out", OutputKind::folder));  // a folder to be made, with a trailing slash
     EXPECT_FALSE(fs::exists(dir + "/run"));
 }
 
 TEST(OutputPath, AFileInTheWayAndAnEmptyPathAreRefused) {
     const std::string dir = test::scratch_dir("output_path_file");
     std::ofstream(dir + "/file.txt") << "x";
-    std::string m = test::error_message([&] { check_output_path(dir + "/file.txt/sub/out.csv", "--report"); });
+    std::string m = test::error_message([&] { check_output(dir + "/file.txt/sub/out.csv", "--report", OutputKind::file); });
     EXPECT_TRUE(test::contains(m, "--report") && test::contains(m, dir + "/file.txt") && test::contains(m, "is a file")) << m;
-    m = test::error_message([&] { check_output_path("", "--out"); });
+    m = test::error_message([&] { check_output("", "--out", OutputKind::file); });
     EXPECT_TRUE(test::contains(m, "--out") && test::contains(m, "an output path")) << m;
     m = test::error_message([&] { make_directories(dir + "/file.txt/sub", "output folder"); });
     EXPECT_TRUE(test::contains(m, dir + "/file.txt/sub") && test::contains(m, "output folder")) << m;
@@ -108,9 +135,11 @@ TEST(OutputPath, NeverReplacesAUsersFileOrFolder) {
     std::ofstream(file) << "mine\n";
     fs::create_directories(folder);
     std::ofstream(folder + "/a.txt") << "mine\n";
-    EXPECT_TRUE(test::contains(test::error_message([&] { check_output_folder(file, "--out"); }), "--out: " + file));
-    EXPECT_TRUE(test::contains(test::error_message([&] { check_replaceable_folder(folder, "--out"); }), "did not make"));
-    EXPECT_NO_THROW(check_output_folder(folder, "--out"));  // resumable jobs write into a folder
+    EXPECT_TRUE(test::contains(test::error_message([&] { check_output(file, "--out", OutputKind::folder); }), "--out: " + file));
+    EXPECT_TRUE(test::contains(test::error_message([&] { check_output(folder, "--out", OutputKind::folder); }), "did not make"));
+    std::ofstream(folder + "/" + kOutputMarker) << "\n";
+    EXPECT_NO_THROW(check_output(folder, "--out", OutputKind::folder));  // a folder t2imu made: written into again
+    fs::remove(folder + "/" + kOutputMarker);
     for (const std::string& target : {file, folder}) {
         const std::string partial = partial_path_for(target);
         fs::create_directories(partial);
@@ -122,7 +151,7 @@ TEST(OutputPath, NeverReplacesAUsersFileOrFolder) {
     EXPECT_TRUE(fs::exists(folder + "/a.txt"));
     // An empty folder may be filled.
     fs::create_directories(dir + "/empty");
-    EXPECT_NO_THROW(check_replaceable_folder(dir + "/empty", "--out"));
+    EXPECT_NO_THROW(check_output(dir + "/empty", "--out", OutputKind::folder));
 }
 
 TEST(OutputPath, PathsFromInputsStayInsideTheirFolder) {
@@ -134,4 +163,100 @@ TEST(OutputPath, PathsFromInputsStayInsideTheirFolder) {
     fs::create_directories(dir + "/real");
     fs::create_symlink("/tmp", dir + "/link");
     EXPECT_TRUE(test::contains(test::error_message([&] { confined_path(dir, "link/x.csv", "path"); }), "symbolic link"));
+}
+
+TEST(OutputPath, ASymbolicLinkAsOutIsRefusedWhereverItPoints) {
+    const std::string dir = test::scratch_dir("output_path_symlink");
+    fs::create_directories(dir + "/target");
+    std::ofstream(dir + "/target/" + kOutputMarker) << "\n";  // even a folder t2imu made, reached through a link
+    fs::create_symlink(dir + "/target", dir + "/link");
+    fs::create_symlink(dir + "/nowhere", dir + "/dangling");
+    for (const OutputKind kind : {OutputKind::file, OutputKind::folder}) {
+        expect_refused([&] { check_output(dir + "/link", "--out", kind); }, dir, "symbolic link");
+        expect_refused([&] { check_output(dir + "/link/", "--out", kind); }, dir, "symbolic link");
+        expect_refused([&] { check_output(dir + "/dangling", "--out", kind); }, dir, "symbolic link");
+    }
+    EXPECT_NO_THROW(check_output(dir + "/link/inner", "--out", OutputKind::folder));  // a link above the output is the system's business
+}
+
+TEST(OutputPath, LinkDotDotIsResolvedAsTheSystemResolvesIt) {
+    // ot/lnkdir -> elsewhere/deep, so ot/lnkdir/../victim is elsewhere/victim for the kernel (lexically: ot/victim).
+    const std::string dir = test::scratch_dir("output_path_dotdot");
+    fs::create_directories(dir + "/ot");
+    fs::create_directories(dir + "/elsewhere/deep");
+    fs::create_directories(dir + "/elsewhere/victim");
+    std::ofstream(dir + "/elsewhere/victim/thesis.txt") << "six years\n";
+    fs::create_symlink(dir + "/elsewhere/deep", dir + "/ot/lnkdir");
+    const std::string path = dir + "/ot/lnkdir/../victim";
+    EXPECT_EQ(resolved_output_path(path), dir + "/elsewhere/victim");
+    EXPECT_EQ(resolved_output_path(dir + "/ot/lnkdir/../new/x.csv"), dir + "/elsewhere/new/x.csv");
+    expect_refused([&] { check_output(path, "--out", OutputKind::folder); }, dir, "did not make");
+    expect_refused([&] { check_output(path, "--out", OutputKind::file); }, dir, "an existing folder");
+    // The rename step resolves too: a partial published onto "LINK/../victim" is judged as the real victim.
+    const std::string partial = partial_path_for(path);
+    EXPECT_EQ(partial, dir + "/elsewhere/victim.partial-" + std::to_string(::getpid()));
+    fs::create_directories(partial);
+    EXPECT_TRUE(test::contains(test::error_message([&] { publish_partial(partial, path); }), "did not make"));
+    EXPECT_TRUE(fs::exists(dir + "/elsewhere/victim/thesis.txt"));
+    // A folder t2imu made, reached the same way, is replaced where it really is.
+    std::ofstream(dir + "/elsewhere/victim/" + kOutputMarker) << "\n";
+    std::ofstream(partial + "/new.csv") << "new\n";
+    publish_partial(partial, path);
+    EXPECT_TRUE(fs::exists(dir + "/elsewhere/victim/new.csv"));
+    EXPECT_FALSE(fs::exists(dir + "/ot/victim"));
+}
+
+TEST(OutputPath, AFolderWhereAFileGoesAndAForeignFolderAreRefused) {
+    const std::string dir = test::scratch_dir("output_path_kinds");
+    fs::create_directories(dir + "/empty");
+    fs::create_directories(dir + "/made");
+    std::ofstream(dir + "/made/" + kOutputMarker) << "\n";
+    fs::create_directories(dir + "/users");
+    std::ofstream(dir + "/users/manifest.csv") << "mine\n";
+    for (const char* folder : {"/empty", "/made", "/users"})
+        expect_refused([&] { check_output(dir + folder, "--out", OutputKind::file); }, dir, "an existing folder");
+    expect_refused([&] { check_output(dir + "/users", "--out", OutputKind::folder); }, dir, "did not make");
+    expect_refused([&] { check_output(dir + "/users/", "--out", OutputKind::folder); }, dir, "did not make");
+    expect_refused([&] { check_output("/dev/null", "--out", OutputKind::file); }, dir, "special file");
+    EXPECT_NO_THROW(check_output(dir + "/empty", "--out", OutputKind::folder));
+    EXPECT_NO_THROW(check_output(dir + "/made", "--out", OutputKind::folder));
+    EXPECT_NO_THROW(check_output(dir + "/users/manifest.csv", "--out", OutputKind::file));  // a file is replaced by a file
+}
+
+TEST(OutputPath, AnInputAsOutputIsRefused) {
+    const std::string dir = test::scratch_dir("output_path_inputs");
+    fs::create_directories(dir + "/set/recordings");
+    std::ofstream(dir + "/set/" + kOutputMarker) << "\n";
+    std::ofstream(dir + "/set/manifest.csv") << "m\n";
+    std::ofstream(dir + "/series.txt") << "1 2 3\n";
+    fs::create_symlink(dir + "/series.txt", dir + "/series-link.txt");
+    expect_refused([&] { check_output(dir + "/series.txt", "--out", OutputKind::file, {dir + "/series.txt"}); }, dir, "it is the input");
+    expect_refused([&] { check_output(dir + "/./series.txt", "--out", OutputKind::file, {dir + "/series-link.txt"}); }, dir, "it is the input");
+    expect_refused([&] { check_output(dir + "/set", "--out", OutputKind::folder, {dir + "/set"}); }, dir, "it is the input");
+    expect_refused([&] { check_output(dir + "/set/", "--out", OutputKind::folder, {dir + "/set/manifest.csv"}); }, dir, "it holds the input");
+    EXPECT_NO_THROW(check_output(dir + "/set/report", "--out", OutputKind::folder, {dir + "/set"}));  // below an input is fine
+    EXPECT_NO_THROW(check_output(dir + "/out.csv", "--out", OutputKind::file, {"", dir + "/series.txt"}));  // "": an option not given
+}
+
+TEST(OutputPath, APlaceThatRefusesNewEntriesFailsTheCheck) {
+    // /proc says yes to access() for root and refuses mkdir: only the probe entry shows it.
+    if (!fs::is_directory("/proc/self")) GTEST_SKIP() << "no /proc";
+    for (const char* path : {"/proc/t2imu-out", "/proc/t2imu-x/out.csv", "/proc/self/t2imu-out"}) {
+        const std::string m = test::error_message([&] { check_output(path, "--out", OutputKind::folder); });
+        EXPECT_TRUE(test::contains(m, "--out: ") && test::contains(m, path)) << m;
+    }
+    EXPECT_FALSE(fs::exists("/proc/t2imu-x"));
+    const std::string dir = test::scratch_dir("output_path_probe");
+    check_output(dir + "/a/b/out", "--out", OutputKind::folder);
+    size_t entries = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++entries;
+    EXPECT_EQ(entries, 0u);  // the probe and the folders made to prove the path are gone
+}
+
+TEST(OutputPath, AClaimedFolderIsMadeAndMarked) {
+    const std::string dir = test::scratch_dir("output_path_claim");
+    claim_output_folder(dir + "/run/a");
+    EXPECT_TRUE(fs::exists(dir + "/run/a/" + kOutputMarker));
+    std::ofstream(dir + "/run/a/manifest.csv") << "m\n";
+    EXPECT_NO_THROW(check_output(dir + "/run/a", "--out", OutputKind::folder));  // a rerun resumes in it
 }

@@ -76,3 +76,26 @@ TEST(Prompts, TheCategoriserReadsTheirActivity) {
     std::printf("%d of %d prompts categorised as their activity\n", agree, total);
     EXPECT_GE(agree, total * 7 / 10);
 }
+
+// What a prompts file may hold: a byte-order mark is dropped (it once became part of the first activity label);
+// blank prompts and activities, bidi controls and control bytes are refused naming the line; a file that never
+// ends is refused after its cap instead of filling memory.
+TEST(Prompts, ByteOrderMarkBlankTextBidiControlsAndEndlessFiles) {
+    const std::vector<Prompt> p = parse_prompt_set("\xEF\xBB\xBFwalking\ta person walks\n", "p.tsv", PromptActivity::required);
+    ASSERT_EQ(p.size(), 1u);
+    EXPECT_EQ(p[0].activity, "walking");
+    const std::pair<const char*, const char*> bad[] = {
+        {"walking\t   \n", "not blank"},
+        {"   \ta person walks\n", "not blank"},
+        {"walking\ta person \xE2\x80\xAEsklaw\n", "U+202E"},
+        {"walking\ta person\xE2\x81\xA6 walks\n", "U+2066"},
+        {"walking\ta person \x1b[31mwalks\n", "U+001B"},
+    };
+    for (const auto& [text, why] : bad) {
+        const std::string m = test::error_message([&] { parse_prompt_set(std::string("# set\n") + text, "p.tsv", PromptActivity::required); });
+        EXPECT_TRUE(test::contains(m, "p.tsv: line 2") && test::contains(m, why)) << m;
+    }
+    if (!std::filesystem::exists("/dev/zero")) GTEST_SKIP() << "no /dev/zero";
+    const std::string m = test::error_message([] { read_prompt_set("/dev/zero"); });
+    EXPECT_TRUE(test::contains(m, "/dev/zero: size") && test::contains(m, "16 MiB")) << m;
+}

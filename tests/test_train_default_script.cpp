@@ -3,6 +3,7 @@
 // script, so that no fine-tuning starts from an unfinished base; a rerun continues where it stopped.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -95,4 +96,31 @@ TEST(TrainDefaultScript, StopsAtTheBudgetAndARerunTrainsTheRestInOrder) {
         ASSERT_TRUE(fs::exists(csv)) << csv;
         EXPECT_EQ(read_csv(csv).rows.size(), 6u) << csv;  // one row per clip of the test split
     }
+}
+
+// Options are checked before anything runs: --base-steps 0 once trained the config's 100,000 steps (0 means "the
+// config's" to t2imu), and an option without its value was a bash error.
+TEST(TrainDefaultScript, BadOptionsAreRefusedInOneLineBeforeAnyWork) {
+    const std::string root = test::scratch_dir("train_default_script_options");
+    fs::create_directories(root + "/scripts");
+    fs::copy_file(test::source_dir() + "/scripts/train-default.sh", root + "/scripts/train-default.sh");
+    const std::pair<const char*, const char*> bad[] = {
+        {"--base-steps 0", "--base-steps: expected a whole number of steps from 1 (got '0')"},
+        {"--base-steps", "--base-steps: expected a value"},
+        {"--finetune-steps -5", "--finetune-steps: expected a whole number"},
+        {"--base-steps 1e9", "--base-steps: expected a whole number"},
+        {"--max-minutes soon", "--max-minutes: expected minutes from 0"},
+        {"--device", "--device: expected a value"},
+        {"--no-such-option", "unknown option --no-such-option"},
+    };
+    for (const auto& [options, message] : bad) {
+        const test::CliResult r = run_script(root, options);
+        EXPECT_EQ(r.exit_code, 2) << options << "\n" << r.output;
+        EXPECT_EQ(r.output.rfind("scripts/train-default.sh: ", 0), 0u) << options << "\n" << r.output;
+        EXPECT_TRUE(test::contains(r.output, message)) << options << "\n" << r.output;
+        EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << options << "\n" << r.output;
+    }
+    size_t entries = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(root)) ++entries;
+    EXPECT_EQ(entries, 1u);  // nothing but scripts/: no cache, no models
 }

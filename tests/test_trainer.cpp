@@ -280,3 +280,63 @@ TEST(Trainer, SampleFromATrainedModelIsSeededAndBatchIndependent) {
     const auto bad = test::run_cli("sample --model " + dir + "/model --prompt x --frames 500 --out " + dir + "/e");
     EXPECT_EQ(bad.exit_code, 2) << bad.output;  // an option value out of range is bad usage
 }
+
+// A checkpoint that is damaged (a block flipped, the size kept), cut, empty or of another model configuration is
+// refused on resume in one line naming the file (and the field), and the model folder is left as it was; a
+// non-finite loss stops training before anything is saved; a resume without a checkpoint names the checkpoint;
+// a resume already at train.steps runs no step and says so.
+TEST(Trainer, DamagedCheckpointsAndNonFiniteLossesNeverReachTheModel) {
+    torch::set_num_threads(1);
+    const std::string dir = test::scratch_dir("trainer_checkpoints");
+    const std::string data = test::make_tiny_motion_dataset(dir + "/data");
+    const std::string config = test::write_tiny_train_config(dir, data, dir + "/m", "");
+    train_mdm(read_train_config(config), false, "", 5);  // the last step of a call is saved
+    const std::string checkpoint = dir + "/m/checkpoint.pt";
+    const std::vector<uint8_t> good = read_file_bytes(checkpoint), model = read_file_bytes(dir + "/m/weights.safetensors");
+    ASSERT_GT(good.size(), 20000u);
+    const auto refused = [&](const std::vector<uint8_t>& bytes, const std::string& config_path, const std::string& field) {
+        write_file_atomic(checkpoint, bytes.data(), bytes.size());
+        const std::string m = test::error_message([&] { train_mdm(read_train_config(config_path), true); });
+        EXPECT_TRUE(test::contains(m, checkpoint) && test::contains(m, field)) << m;
+        EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+        EXPECT_EQ(read_file_bytes(dir + "/m/weights.safetensors"), model);
+    };
+    std::vector<uint8_t> flipped = good;
+    for (size_t i = flipped.size() / 2; i < flipped.size() / 2 + 4096; ++i) flipped[i] ^= 0x5a;
+    refused(flipped, config, "fnv1a64");
+    refused(std::vector<uint8_t>(good.begin(), good.begin() + static_cast<long>(good.size() / 2)), config, "checkpoint");
+    refused({}, config, "checkpoint");
+    const std::string wider = test::write_tiny_train_config(dir + "/data", data, dir + "/m", "");
+    std::string text = read_file_text(wider);
+    text.replace(text.find("latent_dim = 32"), 15, "latent_dim = 48");
+    write_file_atomic(wider, text);
+    refused(good, wider, "shape");
+
+    // Resumed at train.steps: nothing runs, nothing is written.
+    write_file_atomic(checkpoint, good.data(), good.size());
+    TrainConfig done = read_train_config(config);
+    done.steps = 5;
+    EXPECT_EQ(train_mdm(done, true).steps_run, 0);
+    EXPECT_EQ(read_file_bytes(checkpoint), good);
+
+    // No checkpoint: the message names it, not Mean.npy.
+    TrainConfig fresh = read_train_config(config);
+    fresh.out = dir + "/empty";
+    fs::create_directories(fresh.out);
+    const std::string m = test::error_message([&] { train_mdm(fresh, true); });
+    EXPECT_TRUE(test::contains(m, dir + "/empty/checkpoint.pt") && !test::contains(m, "Mean.npy")) << m;
+
+    // A NaN in every clip's features: the first step's loss is NaN, and nothing is saved.
+    for (const auto& e : fs::directory_iterator(data + "/new_joint_vecs")) {
+        NdArray a = read_npy(e.path().string());
+        std::vector<float> v = a.to<float>();
+        v[7] = NAN;
+        write_npy(e.path().string(), NdArray::from(v, a.shape));
+    }
+    TrainConfig poisoned = read_train_config(config);
+    poisoned.out = dir + "/nan";
+    const std::string n = test::error_message([&] { train_mdm(poisoned, false); });
+    EXPECT_TRUE(test::contains(n, "step 1") && test::contains(n, "a finite loss") && test::contains(n, "before anything was saved")) << n;
+    EXPECT_FALSE(fs::exists(dir + "/nan/checkpoint.pt"));
+    EXPECT_FALSE(fs::exists(dir + "/nan/weights.safetensors"));
+}

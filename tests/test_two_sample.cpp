@@ -98,3 +98,20 @@ TEST(TwoSample, DomainGapOnFeatureTables) {
     EXPECT_EQ(test::error_message([&] { rows_of_activities(table(0), {"running", "lying"}, "--classes"); }),
               "--classes: lying: expected a class t holds windows of");
 }
+
+// Too few windows for the folds: the error names the set that has too few (it once named neither).
+TEST(TwoSample, TooFewWindowsNameTheSet) {
+    const auto table = [](const std::string& source, int rows) {
+        CsvTable t;
+        t.source = source;
+        t.header = {"activity", "f1", "f2"};
+        for (int r = 0; r < rows; ++r) t.rows.push_back({"walking", std::to_string(r), std::to_string(r * r)});
+        return t;
+    };
+    std::string m = test::error_message([&] { domain_gap(table("real.csv", 3), table("synthetic.csv", 40), 0); });
+    EXPECT_TRUE(test::contains(m, "real.csv: windows: expected at least 5") && test::contains(m, "(got 3)")) << m;
+    m = test::error_message([&] { domain_gap(table("real.csv", 40), table("synthetic.csv", 4), 0); });
+    EXPECT_TRUE(test::contains(m, "synthetic.csv: windows")) << m;
+    m = test::error_message([&] { classifier_two_sample_test(PointMatrix::Zero(3, 2), PointMatrix::Zero(9, 2)); });
+    EXPECT_TRUE(test::contains(m, "3 real, 9 synthetic")) << m;
+}

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <mutex>
+#include <sstream>
 
 #include "core/error.hpp"
 
@@ -85,6 +86,63 @@ CliResult run_shell(const std::string& command) {
     const int status = pclose(pipe);
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return r;
+}
+
+namespace {
+
+std::vector<std::string> subcommands_of(const std::string& path) {
+    std::istringstream in(run_cli(path + " --help").output);
+    std::vector<std::string> names;
+    bool listing = false;
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind("Subcommands:", 0) == 0) {
+            listing = true;
+            continue;
+        }
+        if (!listing) continue;
+        if (line.size() < 3 || line[0] != ' ' || line[2] == ' ') break;  // the list ends at a blank or unindented line
+        std::istringstream words(line);
+        std::string name;
+        words >> name;
+        names.push_back(name);
+    }
+    return names;
+}
+
+void collect_leaves(const std::string& path, std::vector<std::string>* leaves) {
+    const std::vector<std::string> children = subcommands_of(path);
+    if (children.empty() && !path.empty()) leaves->push_back(path);
+    for (const std::string& c : children) collect_leaves(path.empty() ? c : path + " " + c, leaves);
+}
+
+}  // namespace
+
+std::vector<std::string> cli_leaf_commands() {
+    std::vector<std::string> leaves;
+    collect_leaves("", &leaves);
+    return leaves;
+}
+
+std::vector<CliOption> cli_options_of(const std::string& leaf) {
+    std::vector<CliOption> out;
+    std::istringstream in(run_cli(leaf + " --help").output);
+    bool listing = false;
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind("Options:", 0) == 0 || line.rfind("Positionals:", 0) == 0) {
+            listing = true;
+            continue;
+        }
+        if (!listing || line.size() < 3 || line[0] != ' ' || line[2] == ' ') continue;
+        std::istringstream words(line);
+        CliOption o;
+        words >> o.name >> o.type;
+        if (o.name.rfind("-h,", 0) == 0 || (o.name.rfind("--", 0) != 0 && o.name[0] == '-')) continue;  // help, short-only flags
+        std::getline(words, o.help);
+        o.positional = o.name[0] != '-';
+        o.required = line.find("REQUIRED") != std::string::npos;
+        out.push_back(o);
+    }
+    return out;
 }
 
 std::string error_message(const std::function<void()>& f) {

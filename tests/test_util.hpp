@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "core/error.hpp"
 
@@ -51,6 +52,16 @@ CliResult run_cli(const std::string& args);
 CliResult run_shell(const std::string& command);
 
 std::string source_dir();
+
+// Every leaf command of the binary as "group sub" paths, depth first, read from the "Subcommands:" lists of
+// `t2imu [PATH] --help` (so a new command is covered the day it is added).
+std::vector<std::string> cli_leaf_commands();
+// An option or positional as `t2imu LEAF --help` lists it: "--window FLOAT=2 ...", "--out TEXT:DIR REQUIRED".
+struct CliOption {
+    std::string name, type, help;  // "--out", "TEXT", the rest of its line
+    bool required = false, positional = false;
+};
+std::vector<CliOption> cli_options_of(const std::string& leaf);
 
 // Whether gnuplot cannot be run (figure tests skip then; scripts/setup.sh installs gnuplot-nox).
 bool gnuplot_missing();

@@ -5,6 +5,7 @@
 
 #include "analysis/catch22.hpp"
 #include "core/error.hpp"
+#include "core/number_text.hpp"
 #include "core/parallel.hpp"
 #include "core/progress.hpp"
 #include "imu/imu_dataset.hpp"
@@ -35,7 +36,6 @@ CsvTable catch22_window_table(const WindowSet& w, const std::vector<std::string>
     parallel_for(w.size(), threads, [&](size_t i) {
         std::vector<std::string> row = {w.subjects[i], w.groups[i], w.labels[i], ""};
         std::vector<double> series(static_cast<size_t>(w.length));
-        char buf[32];
         for (int c = 0; c < w.channels; ++c) {
             for (int k = 0; k < w.length; ++k) series[static_cast<size_t>(k)] = w.data[(i * static_cast<size_t>(w.length) + static_cast<size_t>(k)) * static_cast<size_t>(w.channels) + static_cast<size_t>(c)];
             std::vector<double> values;
@@ -45,8 +45,7 @@ CsvTable catch22_window_table(const WindowSet& w, const std::vector<std::string>
                 values.assign(features, std::nan(""));  // a constant channel: nothing to z-score
             }
             for (double v : values) {
-                std::snprintf(buf, sizeof buf, "%.9g", v);
-                row.push_back(buf);
+                row.push_back(general_text(v, 9));
             }
         }
         t.rows[i] = std::move(row);

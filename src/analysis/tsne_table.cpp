@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "core/error.hpp"
+#include "core/number_text.hpp"
 #include "core/parse.hpp"
 
 namespace t2imu {
@@ -50,13 +51,11 @@ TsneTable tsne_table(const CsvTable& table, const std::set<std::string>& label_c
     for (size_t c : labels) out.embedding.header.push_back(table.header[c]);
     out.embedding.header.push_back("tsne_x");
     out.embedding.header.push_back("tsne_y");
-    char buf[64];
     for (size_t r = 0; r < table.rows.size(); ++r) {
         std::vector<std::string> row;
         for (size_t c : labels) row.push_back(table.rows[r][c]);
         for (int d = 0; d < 2; ++d) {
-            std::snprintf(buf, sizeof buf, "%.6g", out.result.embedding(static_cast<Eigen::Index>(r), d));
-            row.push_back(buf);
+            row.push_back(general_text(out.result.embedding(static_cast<Eigen::Index>(r), d), 6));
         }
         out.embedding.rows.push_back(row);
     }

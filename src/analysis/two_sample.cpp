@@ -40,7 +40,9 @@ Eigen::VectorXd fit_logistic(const Eigen::MatrixXd& x, const Eigen::VectorXd& y,
 
 TwoSampleResult classifier_two_sample_test(const PointMatrix& real, const PointMatrix& synthetic, int folds, uint64_t seed, double l2) {
     if (real.cols() != synthetic.cols()) throw Error("two-sample test", "features", std::to_string(real.cols()), std::to_string(synthetic.cols()));
-    if (real.rows() < folds || synthetic.rows() < folds || folds < 2) throw Error("two-sample test", "samples", "at least `folds` (>= 2) per set");
+    if (real.rows() < folds || synthetic.rows() < folds || folds < 2) 
+        throw Error("two-sample test", "samples", "at least " + std::to_string(std::max(folds, 2)) + " per set, one per fold",
+                    std::to_string(real.rows()) + " real, " + std::to_string(synthetic.rows()) + " synthetic");
     const Eigen::Index n = real.rows() + synthetic.rows(), d = real.cols();
     PointMatrix all(n, d);
     all << real, synthetic;

@@ -22,7 +22,7 @@ static void add_domain_gap(CLI::App& analysis) {
     cmd->add_option("--seed", seed, "fold assignment seed");
     cmd->add_option("--out", out, "RESULT.json")->required();
     cmd->callback([] {
-        check_usage([] { check_output_path(out, "--out"); });
+        check_usage([] { check_output(out, "--out", OutputKind::file, {real, synthetic}); });
         CsvTable r = read_csv(real), s = read_csv(synthetic);
         if (!classes.empty()) {
             r = rows_of_activities(r, classes, "--classes");

@@ -23,7 +23,7 @@ void run(const LaccArgs& a) {
     check_usage([&] {
         if (a.tau && !(*a.tau >= -1 && *a.tau <= 1)) throw Error("--tau", "tau", "a cosine similarity from -1 to 1", std::to_string(*a.tau));
         if (!a.tau && a.labels.empty()) throw Error("--tau", "tau", "--tau T or --labels CSV to calibrate it");
-        check_output_path(a.out, "--out");
+        check_output(a.out, "--out", OutputKind::file, {a.before, a.after, a.vocab, a.labels});
     });
     const WordVectors vectors = WordVectors::load(a.vocab);
     const SifEncoder sif(vectors, kCategorySifWeight);

@@ -25,7 +25,7 @@ static void add_signal_stats(CLI::App& analysis) {
     cmd->callback([] {
         check_usage([] {
             o.validate();
-            check_output_path(out, "--out");
+            check_output(out, "--out", OutputKind::file, {real, synthetic});
         });
         const std::vector<ImuRecording> r = read_imu_dataset(real);
         const nlohmann::json stats = synthetic.empty() ? activity_signal_statistics(r, o)
@@ -49,7 +49,7 @@ static void add_static_noise(CLI::App& analysis) {
         check_usage([&] {
             o.validate();
             device = parse_noise_model(noise);
-            check_output_path(out, "--out");
+            check_output(out, "--out", OutputKind::file, {real});
         });
         const nlohmann::json r = static_segment_noise(read_imu_dataset(real), o, device);
         write_file_atomic(out, r.dump(2) + "\n");

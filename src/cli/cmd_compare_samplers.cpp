@@ -26,7 +26,7 @@ void run(CompareArgs a) {
         o.frames = frames_for_seconds(a.seconds, "--seconds");
         o.validate();
         configs = parse_sampler_configs(a.samplers);
-        check_output_path(a.out, "--out");
+        check_output(a.out, "--out", OutputKind::file, {a.prompts, o.model, o.activity_reference, o.captured_dataset});
     });
     o.prompts = read_prompt_set(a.prompts);
     o.device = global_options().device;

@@ -34,7 +34,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
         for (const std::string& item : split_list(licences)) o.licences.insert(item);
         check_usage([] {
             o.validate();
-            check_replaceable_folder(o.out_dir, "--out");
+            check_output(o.out_dir, "--out", OutputKind::folder, {o.mocap_dir, o.captions_csv});
         });
         const BuildSummary s = build_dataset(o);
         std::printf("%s: %d clips, %.1f minutes, %d captions, %d files skipped\n", o.out_dir.c_str(), s.clips, s.minutes,

@@ -22,7 +22,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->callback([] {
         check_usage([] {
             if (split != "train" && split != "val" && split != "test" && split != "all") throw Error("--split", "split", "train, val, test or all", split);
-            check_output_path(out, "--out");
+            check_output(out, "--out", OutputKind::file, {dataset});
         });
         const Hml3dDataset data(dataset, split);
         const auto captions = training_captions(data, dataset);

@@ -20,7 +20,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("input", in, "folder of the release files")->required()->check(CLI::ExistingDirectory);
     cmd->add_option("--out", out, "output dataset folder")->required();
     cmd->callback([] {
-        check_usage([] { check_replaceable_folder(out, "--out"); });
+        check_usage([] { check_output(out, "--out", OutputKind::folder, {in}); });
         std::vector<std::string> skipped;
         const std::vector<ImuRecording> recordings = format == "hugadb"    ? import_hugadb(in)
                                                      : format == "sisfall" ? import_sisfall(in, &skipped)

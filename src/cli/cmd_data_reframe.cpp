@@ -73,7 +73,7 @@ void run(const ReframeArgs& a) {
     check_usage([&] {
         to = placement_set(a.to, "--to");
         if (!a.from.empty()) from = placement_set(a.from, "--from");
-        check_replaceable_folder(a.out, "--out");
+        check_output(a.out, "--out", OutputKind::folder, {a.dataset, a.to, a.from});
     });
     // Every rotation is resolved, so every convention checked, before any samples are read or written.
     const std::unique_ptr<BodyModel> body = make_body(parse_body_specs("preset:male_average")[0]);

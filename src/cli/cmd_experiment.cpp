@@ -20,7 +20,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->callback([] {
         check_usage([] {
             if (repeats < 0 || repeats > 1000) throw Error("--repeats", "trainings", "0 (the config's) to 1000", std::to_string(repeats));
-            check_output_folder(out, "--out");
+            check_output(out, "--out", OutputKind::folder, {config});
         });
         ExperimentConfig c = read_experiment_config(config);
         if (repeats > 0) c.har.repeats = repeats;

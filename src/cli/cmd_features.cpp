@@ -40,7 +40,7 @@ static void add_catch22_command(CLI::App& features) {
         w.min_window_samples = static_cast<long>(kCatch22MinLength);  // shorter windows give every feature nan
         check_usage([] {
             w.validate();
-            check_output_path(out, "--out");
+            check_output(out, "--out", OutputKind::file, {in, dataset});
         });
         w.positions = split_list(positions);
         const std::vector<ImuRecording> recordings = read_imu_dataset(dataset);

@@ -44,7 +44,7 @@ void run(HarArgs a) {
             throw Error("--window", std::to_string(w.window_s) + " s", "at least " + std::to_string(kDeepConvLstmMinWindow) +
                         " samples at --rate (DeepConvLSTM's four convolutions of kernel 5)");
         a.options.validate();
-        check_output_path(a.out, "--out");
+        check_output(a.out, "--out", OutputKind::file, {a.train, a.test});
     });
     if (!a.classes.empty()) {  // checked on the manifest, before any samples are read
         std::set<std::string> held;

@@ -55,7 +55,7 @@ void run(const SynthArgs& a) {
         options.realism = parse_realism(a.realism);
         fold_noise_option(a.noise, &options.realism);
         options.validate();
-        check_replaceable_folder(a.out, "--out");
+        check_output(a.out, "--out", OutputKind::folder, {a.joints});
     });
     const std::vector<BodySpec> bodies = parse_body_specs(a.body);
     const std::vector<SensorPlacement> sensors = parse_sensor_sets(a.sensors);

@@ -25,7 +25,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->callback([] {
         check_usage([] {
             check_guidance_scale(f.guidance, "--guidance");
-            check_output_path(f.out, "--out");
+            check_output(f.out, "--out", OutputKind::file, {f.weights, f.config, f.x, f.timesteps, f.text, f.lengths});
         });
         run_mdm_forward(f);
     });

@@ -50,8 +50,8 @@ void classify_synth(const MotionActivityClassifier& c, const std::string& dir, c
 void run(const ActivityArgs& a) {
     check_usage([&] {
         if (a.dataset.empty() == a.reference.empty()) throw Error("motion activity", "reference", "either --dataset DIR or --reference CSV");
-        if (!a.save_reference.empty()) check_output_path(a.save_reference, "--save-reference");
-        if (!a.out.empty()) check_output_path(a.out, "--out");
+        if (!a.save_reference.empty()) check_output(a.save_reference, "--save-reference", OutputKind::file, {a.dataset, a.reference, a.synth});
+        if (!a.out.empty()) check_output(a.out, "--out", OutputKind::file, {a.dataset, a.reference, a.synth, a.save_reference});
     });
     const MotionActivityClassifier c = a.dataset.empty() ? MotionActivityClassifier::load(a.reference)
                                                          : MotionActivityClassifier(activity_examples(a.dataset));

@@ -26,7 +26,7 @@ static void add_import_command(CLI::App& motion) {
             if (!(options.fps >= 0 && options.fps <= 1000)) throw Error("--fps", "rate", "0 (the capture rate) to 1000 fps", std::to_string(options.fps));
             if (!(options.source_fps > 0 && options.source_fps <= 1000))
                 throw Error("--source-fps", "rate", "above 0 and at most 1000 fps", std::to_string(options.source_fps));
-            check_output_path(out, "--out");
+            check_output(out, "--out", OutputKind::file, {in});
         });
         write_npy(out, joint_sequence_to_array(import_motion(in, options)));
     });
@@ -42,7 +42,7 @@ static void add_export_command(CLI::App& motion) {
     cmd->callback([] {
         check_usage([] {
             check_motion_fps(fps, "--fps");
-            check_output_path(out, "--out");
+            check_output(out, "--out", OutputKind::file, {in});
         });
         write_bvh(out, smpl22_to_bvh(joint_sequence_from_array(read_npy(in), in, 22, 1, fps)));
     });

@@ -78,7 +78,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
         check_usage([] {
             check_motion_fps(fps, "--fps");
             if (!(p >= 0 && p <= 100)) throw Error("--percentile", "percentile", "0 to 100", std::to_string(p));
-            if (!out.empty()) check_output_path(out, "--out");
+            if (!out.empty()) check_output(out, "--out", OutputKind::file, inputs);
         });
         run(inputs, fps, p, out);
     });

@@ -13,7 +13,7 @@ static void add_features_command(CLI::App& motion) {
     cmd->add_option("--joints", in, "input joints .npy")->required()->check(CLI::ExistingFile);
     cmd->add_option("--out", out, "output features .npy (float32)")->required();
     cmd->callback([] {
-        check_usage([] { check_output_path(out, "--out"); });
+        check_usage([] { check_output(out, "--out", OutputKind::file, {in}); });
         const JointSequence joints = joint_sequence_from_array(read_npy(in), in, 22, 2);
         write_npy(out, feature_matrix_to_array(joints_to_features(joints)));
     });
@@ -25,7 +25,7 @@ static void add_joints_command(CLI::App& motion) {
     cmd->add_option("--features", in, "input features .npy (not normalised)")->required()->check(CLI::ExistingFile);
     cmd->add_option("--out", out, "output joints .npy (float32)")->required();
     cmd->callback([] {
-        check_usage([] { check_output_path(out, "--out"); });
+        check_usage([] { check_output(out, "--out", OutputKind::file, {in}); });
         const FeatureMatrix features = feature_matrix_from_array(read_npy(in), in, kFeatureDim);
         if (features.rows() < 1) throw Error(in, "shape", "at least one frame", "0");
         write_npy(out, joint_sequence_to_array(recover_from_ric(features)));

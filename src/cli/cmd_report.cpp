@@ -16,7 +16,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--real", real, "a real IMU data set (manifest.csv + CSVs) whose signal statistics to show beside the synthetic ones")
         ->check(CLI::ExistingDirectory);
     cmd->callback([] {
-        check_usage([] { check_output_folder(out, "--out"); });
+        check_usage([] { check_output(out, "--out", OutputKind::folder, {in, real}); });
         const ReportSummary s = write_report(in, out, real);
         std::printf("%s/index.html: %d figures (%d synthesis reports, %d HAR results, %d L_acc tables, %d t-SNE tables, %d domain-gap results, %d traces)\n",
                     out.c_str(), s.figures, s.synth_reports, s.har_results, s.lacc_tables, s.tsne_tables, s.gap_results, s.traces);

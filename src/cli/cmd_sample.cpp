@@ -36,7 +36,7 @@ void run(SampleArgs a) {
         if (a.frames != 0) a.options.frames = a.frames;
         if (a.seconds != 0) a.options.frames = frames_for_seconds(a.seconds, "--seconds");
         a.options.validate();
-        check_output_path(a.out, "--out");
+        check_output(a.out, "--out", OutputKind::folder, {a.model, a.prompts});
     });
     const std::vector<Prompt> prompts = a.prompt.empty() ? read_prompt_set(a.prompts) : std::vector<Prompt>{{"", a.prompt}};
     std::unique_ptr<MotionModel> model = load_motion_model(a.model, global_options().device);
@@ -62,6 +62,7 @@ void run(SampleArgs a) {
     }
     // Serialised before the motions are written: samples.json is what says the folder is complete.
     const std::string samples_json = record.dump(2) + "\n";
+    claim_output_folder(a.out);
     for (size_t i = 0; i < motions.size(); ++i) {
         std::snprintf(name, sizeof name, "%04zu", i);
         write_npy(a.out + "/" + name + "_features.npy", feature_matrix_to_array(motions[i]));
@@ -85,7 +86,7 @@ static void add_eval_lacc(CLI::App& root) {
     cmd->add_option("--seed", seed, "seed of the draws (use the same for the models you compare)");
     cmd->add_option("--out", out, "output CSV")->required();
     cmd->callback([] {
-        check_usage([] { check_output_path(out, "--out"); });
+        check_usage([] { check_output(out, "--out", OutputKind::file, {model, dataset}); });
         std::unique_ptr<MotionModel> m = load_motion_model(model, global_options().device);
         const CsvTable table = evaluate_lacc(*m, dataset, split, seed);
         write_csv(out, table);

@@ -36,7 +36,7 @@ void run(SynthArgs a) {
     check_usage([&] {
         parse_shard(a.shard, o);
         o.validate();
-        check_output_folder(o.out, "--out");
+        check_output(o.out, "--out", OutputKind::folder, {o.prompts, o.activity_reference});
     });
     o.filter = !a.no_filter;
     if (o.activity_reference == kDefaultActivityReference && !std::filesystem::exists(o.activity_reference)) {

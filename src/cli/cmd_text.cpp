@@ -36,7 +36,7 @@ static void add_vocab(CLI::App& text) {
             if (converted && words_option->count() > 0) throw Error("--words", "count", "no --words with a converted .safetensors source (use --only-words-in)");
             for (const std::string& p : only_in)
                 if (!std::filesystem::exists(p)) throw Error("--only-words-in", p, "an existing file or folder");
-            check_output_path(out, "--out");
+            check_output(out, "--out", OutputKind::file, {from});
         });
         WordVectors v = converted ? WordVectors::load(from) : convert_wink_embeddings(from, words);
         if (!only_in.empty()) v = vocabulary_used_in(v, only_in);
@@ -66,7 +66,7 @@ static void add_nearest(CLI::App& text) {
     cmd->add_option("--prompts", prompts, "prompt set (activity<TAB>prompt)")->required()->check(CLI::ExistingFile);
     cmd->add_option("--out", out, "CSV: activity,prompt,nearest_caption,similarity");
     cmd->callback([] {
-        if (!out.empty()) check_usage([] { check_output_path(out, "--out"); });
+        if (!out.empty()) check_usage([] { check_output(out, "--out", OutputKind::file, {vocab, corpus, prompts}); });
         const std::vector<std::string> captions = read_caption_corpus(corpus);
         const std::vector<Prompt> set = read_prompt_set(prompts);
         std::vector<std::string> queries;

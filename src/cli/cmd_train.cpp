@@ -39,7 +39,7 @@ void run(const RunOptions& o) {
         if (!o.precision.empty()) parse_precision(o.precision, "--precision", "value");
     });
     TrainConfig c = read_train_config(o.config);
-    check_usage([&] { check_output_path(c.out, o.config + ": out"); });
+    check_usage([&] { check_output(c.out, o.config + ": out", OutputKind::folder, {o.config, o.from, c.dataset, c.vocab}); });
     if (!o.precision.empty()) c.precision = o.precision;
     c.max_minutes = o.max_minutes;
     c.threads = worker_threads();
@@ -52,6 +52,11 @@ void run(const RunOptions& o) {
     c.profile = o.profile;
     const TrainProgress p = train_mdm(c, o.resume, o.resume ? "" : o.from);
     if (c.processes.rank != 0) return;
+    if (p.steps_run == 0) {
+        std::printf("%s: no step ran: the checkpoint is at step %lld and train.steps is %lld (give --steps to go further)\n", c.out.c_str(),
+                    static_cast<long long>(p.step), static_cast<long long>(c.steps));
+        return;
+    }
     std::printf("%s: step %lld, last loss %.5f%s\n", c.out.c_str(), static_cast<long long>(p.step), p.loss,
                 p.stopped_early ? " (stopped early and saved: continue with --resume)" : "");
     if (o.profile) print_profile(p.profile, c.batch);

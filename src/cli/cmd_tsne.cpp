@@ -24,7 +24,7 @@ struct TsneArgs {
 void run(const TsneArgs& a) {
     check_usage([&] {
         a.options.validate();
-        check_output_path(a.out, "--out");
+        check_output(a.out, "--out", OutputKind::file, {a.in});
     });
     const std::set<std::string> labels(kWindowLabelColumns.begin(), kWindowLabelColumns.end());
     const TsneTable t = tsne_table(read_csv(a.in), labels, a.options, a.in);

@@ -62,8 +62,9 @@ int main(int argc, char** argv) {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         if (e.get_exit_code() == 0) return app.exit(e);  // --help and --version print what was asked for
-        // One line, like every other error (CLI11 would add a second one pointing at --help).
-        std::fprintf(stderr, "t2imu: %s\n", e.what());
+        // One line, like every other error (CLI11 would add a second one pointing at --help); what it quotes of the
+        // arguments is made printable and cut like an Error's.
+        std::fprintf(stderr, "t2imu: %s\n", t2imu::printable_text(e.what(), 2000).c_str());
         return 2;
     } catch (const UsageError& e) {
         std::fprintf(stderr, "t2imu: %s\n", e.what());
@@ -72,7 +73,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "t2imu: %s\n", e.what());
         return 1;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "t2imu: %s\n", e.what());
+        std::fprintf(stderr, "t2imu: %s\n", t2imu::printable_text(e.what(), 2000).c_str());
         return 1;
     }
     return 0;

@@ -11,7 +11,7 @@ public:
     explicit UsageError(const std::string& message) : Error(message) {}
 };
 
-// Runs the checks in `check` (options' validate(), check_output_path...) and turns their Error into UsageError.
+// Runs the checks in `check` (options' validate(), check_output...) and turns their Error into UsageError.
 template <class Check> void check_usage(Check check) {
     try {
         check();

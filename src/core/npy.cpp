@@ -86,8 +86,12 @@ struct HeaderParser {
             skip_space();
             if (i >= s.size() || !std::isdigit(static_cast<unsigned char>(s[i]))) fail("a non-negative integer");
             int64_t v = 0;
+            const size_t start = i;
             while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) {
-                if (v > (std::numeric_limits<int64_t>::max() - 9) / 10) fail("a dimension that fits in 64 bits");
+                if (v > (std::numeric_limits<int64_t>::max() - 9) / 10) {
+                    i = start;  // quote the number from its first digit, not its tail
+                    fail("a dimension that fits in 64 bits");
+                }
                 v = v * 10 + (s[i++] - '0');
             }
             // NumPy writes an L suffix in Python 2 headers.

@@ -1,6 +1,7 @@
 #include "core/output_path.hpp"
 
 #include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -18,10 +19,20 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// `path` absolute, without a trailing separator, so that parent_path() and filename() mean what they say.
-fs::path normalised(const std::string& path) {
-    fs::path p = fs::absolute(fs::path(path)).lexically_normal();
-    return p.has_filename() ? p : p.parent_path();
+// `path` absolute, as the system resolves it: the longest existing prefix through realpath (symbolic links, and
+// ".." after them, as the kernel follows them), then the rest lexically. The last part is kept as named, so a
+// link there is judged as a link, not as its target; a last part "." or ".." is resolved with the rest.
+fs::path resolved(const std::string& path) {
+    fs::path p = fs::absolute(fs::path(path));
+    while (!p.has_filename() && p.has_relative_path()) p = p.parent_path();  // "a/b/" -> "a/b"
+    std::error_code ec;
+    const fs::path name = p.filename();
+    if (name.empty() || name == "." || name == "..") {
+        const fs::path r = fs::weakly_canonical(p, ec);
+        return ec ? p.lexically_normal() : r;
+    }
+    const fs::path parent = fs::weakly_canonical(p.parent_path(), ec);
+    return (ec ? p.parent_path().lexically_normal() : parent) / name;
 }
 
 bool exists_no_throw(const fs::path& p) {
@@ -32,14 +43,38 @@ bool exists_no_throw(const fs::path& p) {
 // Best effort: a folder that cannot take the marker cannot be renamed into place either, and that error says so.
 void write_marker(const std::string& folder) {
     std::error_code ec;
-    if (fs::is_directory(folder, ec)) std::ofstream(folder + "/" + kOutputMarker) << "a folder t2imu published; t2imu may replace it whole\n";
+    if (fs::is_directory(folder, ec) && !fs::exists(fs::path(folder) / kOutputMarker, ec))
+        std::ofstream(folder + "/" + kOutputMarker) << "a folder t2imu made; t2imu may write into it or replace it whole\n";
 }
 
-}  // namespace
+// Empty "" when `folder` may be written into or replaced, else why not.
+std::string why_not_replaceable(const fs::path& folder) {
+    std::error_code ec;
+    if (!exists_no_throw(folder)) return "";
+    if (fs::is_symlink(fs::symlink_status(folder, ec))) return "a symbolic link";
+    if (!fs::is_directory(folder, ec)) return "an existing file";
+    if (fs::exists(folder / kOutputMarker, ec) || fs::is_empty(folder, ec)) return "";
+    return std::string("a folder t2imu did not make (no ") + kOutputMarker + "): choose another, or add " + kOutputMarker + " if an earlier t2imu made it";
+}
 
-void check_output_path(const std::string& path, const std::string& option) {
-    if (path.empty()) throw Error(option, "path", "an output path");
-    const fs::path target = normalised(path);
+// Whether `inner` is `outer` or lies below it (both resolved).
+bool is_within(const fs::path& inner, const fs::path& outer) {
+    auto i = inner.begin();
+    for (auto o = outer.begin(); o != outer.end(); ++o, ++i)
+        if (i == inner.end() || *i != *o) return false;
+    return true;
+}
+
+// Makes and removes a probe folder in `folder` (an existing one): "" when that worked, else the system's reason.
+std::string probe_folder(const fs::path& folder) {
+    const fs::path probe = folder / (".t2imu-probe-" + std::to_string(::getpid()));
+    if (::mkdir(probe.c_str(), 0700) != 0) return folder.string() + ": " + std::strerror(errno);
+    ::rmdir(probe.c_str());
+    return "";
+}
+
+// Proves that `target`'s folders can be made and an entry written into the deepest, leaving nothing behind.
+void check_creatable(const fs::path& target, const std::string& path, const std::string& option, OutputKind kind) {
     std::vector<fs::path> missing;  // the folders above `target` that do not exist yet, deepest first
     fs::path existing = target.parent_path();
     while (!exists_no_throw(existing)) {
@@ -48,45 +83,52 @@ void check_output_path(const std::string& path, const std::string& option) {
     }
     std::error_code ec;
     if (!fs::is_directory(existing, ec)) throw Error(option, path, "a path below folders", existing.string() + " is a file");
-    if (::access(existing.c_str(), W_OK | X_OK) != 0)
-        throw Error(option, path, "a writable folder to write into", existing.string() + ": " + std::strerror(errno));
-    if (exists_no_throw(target) && fs::is_directory(target, ec) && ::access(target.c_str(), W_OK | X_OK) != 0)
-        throw Error(option, path, "a writable folder", std::strerror(errno));
-    if (missing.empty()) return;
-    // access() says yes to root on filesystems that refuse anyway (/proc): only creating the folders proves it.
+    if (missing.empty()) {
+        std::string why = probe_folder(existing);
+        if (why.empty() && kind == OutputKind::folder && fs::is_directory(target, ec)) why = probe_folder(target);
+        if (!why.empty()) throw Error(option, path, "a folder t2imu can write into", why);
+        return;
+    }
     fs::create_directories(missing.front(), ec);
+    const std::string why = ec ? ec.message() : probe_folder(missing.front());
     for (const fs::path& p : missing) {
         std::error_code ignored;  // deepest first, so each is empty when its turn comes; absent ones were never made
         fs::remove(p, ignored);
     }
-    if (ec) throw Error(option, path, "folders that can be created", ec.message());
-}
-
-void check_output_folder(const std::string& path, const std::string& option) {
-    check_output_path(path, option);
-    std::error_code ec;
-    const fs::path target = normalised(path);
-    if (exists_no_throw(target) && !fs::is_directory(target, ec))
-        throw Error(option, path, "a folder to write (t2imu never replaces a file with a folder)", "an existing file");
-}
-
-namespace {
-
-// Empty "" when `folder` may be replaced, else why not.
-std::string why_not_replaceable(const fs::path& folder) {
-    std::error_code ec;
-    if (!exists_no_throw(folder)) return "";
-    if (fs::is_symlink(folder, ec) || !fs::is_directory(folder, ec)) return "an existing file";
-    if (fs::exists(folder / kOutputMarker, ec) || fs::is_empty(folder, ec)) return "";
-    return std::string("a folder t2imu did not make (no ") + kOutputMarker + "): remove it or choose another";
+    if (!why.empty()) throw Error(option, path, "folders that can be created", missing.back().string() + ": " + why);
 }
 
 }  // namespace
 
-void check_replaceable_folder(const std::string& path, const std::string& option) {
-    check_output_folder(path, option);
-    const std::string why = why_not_replaceable(normalised(path));
-    if (!why.empty()) throw Error(option, path, "an output folder t2imu may replace", why);
+std::string resolved_output_path(const std::string& path) { return resolved(path).string(); }
+
+void check_output(const std::string& path, const std::string& option, OutputKind kind, const std::vector<std::string>& inputs) {
+    if (path.empty()) throw Error(option, "path", "an output path");
+    const fs::path target = resolved(path);
+    std::error_code ec;
+    if (fs::is_symlink(fs::symlink_status(target, ec)))
+        throw Error(option, path, "a path that is not a symbolic link (t2imu writes only where the path names)", "a link to " + fs::read_symlink(target, ec).string());
+    for (const std::string& input : inputs) {
+        if (input.empty()) continue;
+        const fs::path in = fs::weakly_canonical(fs::absolute(input), ec);
+        if (!ec && is_within(in, target))
+            throw Error(option, path, "an output apart from the inputs", in == target ? "it is the input " + input : "it holds the input " + input);
+    }
+    if (exists_no_throw(target)) {
+        if (kind == OutputKind::file && fs::is_directory(target, ec))
+            throw Error(option, path, "a file to write (t2imu never replaces a folder with a file)", "an existing folder");
+        if (kind == OutputKind::file && !fs::is_regular_file(target, ec)) throw Error(option, path, "a file to write", "an existing special file");
+        if (kind == OutputKind::folder) {
+            const std::string why = why_not_replaceable(target);
+            if (!why.empty()) throw Error(option, path, "an output folder t2imu may write into", why);
+        }
+    }
+    check_creatable(target, path, option, kind);
+}
+
+void claim_output_folder(const std::string& path) {
+    make_directories(path, "output folder");
+    write_marker(path);
 }
 
 std::string confined_path(const std::string& folder, const std::string& relative, const std::string& field) {
@@ -112,29 +154,30 @@ void make_directories(const std::string& path, const std::string& field) {
 }
 
 std::string partial_path_for(const std::string& path) {
-    return normalised(path).string() + ".partial-" + std::to_string(::getpid());
+    return resolved(path).string() + ".partial-" + std::to_string(::getpid());
 }
 
 void publish_partial(const std::string& partial, const std::string& path) {
-    const std::string why = why_not_replaceable(normalised(path));
+    const fs::path target = resolved(path);  // the folder the guard judged, whatever links and ".." the path holds
+    const std::string why = why_not_replaceable(target);
     if (!why.empty()) throw Error(path, "output folder", "a folder t2imu may replace (the result is in " + partial + ")", why);
     write_marker(partial);
-    const std::string old = normalised(path).string() + ".old-" + std::to_string(::getpid());
+    const fs::path old = target.string() + ".old-" + std::to_string(::getpid());
     std::error_code ec;
     fs::remove_all(old, ec);
-    const bool replacing = fs::exists(path);
-    if (replacing) fs::rename(path, old, ec);
-    if (!ec) fs::rename(partial, path, ec);
+    const bool replacing = exists_no_throw(target);
+    if (replacing) fs::rename(target, old, ec);
+    if (!ec) fs::rename(partial, target, ec);
     if (ec) {
         std::error_code ignored;
-        if (replacing && !fs::exists(path)) fs::rename(old, path, ignored);
+        if (replacing && !exists_no_throw(target)) fs::rename(old, target, ignored);
         throw Error(path, "rename", "a replaceable output folder (the result is in " + partial + ")", ec.message());
     }
     fs::remove_all(old, ec);
 }
 
 void remove_stale_partials(const std::string& path) {
-    const fs::path target = normalised(path);
+    const fs::path target = resolved(path);
     const std::string prefix = target.filename().string() + ".partial-";
     std::error_code ec;
     for (const fs::directory_entry& e : fs::directory_iterator(target.parent_path(), ec)) {

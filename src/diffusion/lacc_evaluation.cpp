@@ -1,6 +1,7 @@
 #include "diffusion/lacc_evaluation.hpp"
 
 #include <cstdio>
+#include "core/number_text.hpp"
 
 #include "data/hml3d_dataset.hpp"
 #include "diffusion/gaussian_diffusion.hpp"
@@ -14,7 +15,6 @@ CsvTable evaluate_lacc(MotionModel& model, const std::string& dataset, const std
     const GaussianDiffusion diffusion(model.schedule);
     CsvTable out;
     out.header = {"id", "caption", "t", "l_acc", "l_simple"};
-    char acc[32], simple[32];
     for (size_t i = 0; i < data.clips().size(); ++i) {
         const MotionClip& clip = data.clips()[i];
         const int64_t frames = std::min<int64_t>(clip.features.rows(), kMaxMotionFrames);
@@ -33,8 +33,8 @@ CsvTable evaluate_lacc(MotionModel& model, const std::string& dataset, const std
         const torch::Tensor lengths = torch::full({1}, frames, torch::TensorOptions().dtype(torch::kInt64).device(model.device));
         const torch::Tensor x0_hat = model.mdm->forward(x_t, t, model.encode_text({caption}), false, lengths).squeeze(2).permute({0, 2, 1});
         const torch::Tensor mask = frame_mask(lengths, frames);
-        std::snprintf(acc, sizeof acc, "%.8g", acceleration_loss(x0, x0_hat, mask).item<double>());
-        std::snprintf(simple, sizeof simple, "%.8g", masked_mse(x0, x0_hat, mask).item<double>());
+        const std::string acc = general_text(acceleration_loss(x0, x0_hat, mask).item<double>(), 8);
+        const std::string simple = general_text(masked_mse(x0, x0_hat, mask).item<double>(), 8);
         out.rows.push_back({clip.id, caption, std::to_string(t.item<int64_t>()), acc, simple});
     }
     return out;

@@ -6,6 +6,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/output_path.hpp"
 #include "diffusion/samplers.hpp"
 #include "nn/state_dict.hpp"
 
@@ -109,8 +110,15 @@ void load_caption_anchor(MotionModel& model, const std::string& dir, const nlohm
     const nlohmann::json w = a.value("weight", nlohmann::json());
     if (!w.is_number() || !(w.get<double>() >= 0 && w.get<double>() <= 1)) throw Error(file, "caption_anchor.weight", "a number from 0 to 1", w.dump());
     model.anchor.weight = w.get<double>();
-    const std::string captions = (std::filesystem::path(dir) / a.at("captions").get<std::string>()).string();
-    model.anchor.index = std::make_unique<CaptionIndex>(*model.vocab, read_prompt_set(captions, PromptActivity::required), captions);
+    // Inside the model folder only (a model.json from elsewhere must not make t2imu read /etc/...), and any error
+    // of the file names the field that led to it.
+    const std::string field = file + ": caption_anchor.captions";
+    const std::string captions = confined_path(dir, a.at("captions").get<std::string>(), field);
+    try {
+        model.anchor.index = std::make_unique<CaptionIndex>(*model.vocab, read_prompt_set(captions, PromptActivity::required), captions);
+    } catch (const Error& e) {
+        throw Error(field + ": " + e.what());
+    }
 }
 
 }  // namespace

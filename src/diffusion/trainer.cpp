@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -14,6 +15,7 @@
 #include "core/error.hpp"
 #include "core/hash.hpp"
 #include "core/npy.hpp"
+#include "core/output_path.hpp"
 #include "core/toml_section.hpp"
 #include "data/hml3d_dataset.hpp"
 #include "diffusion/gaussian_diffusion.hpp"
@@ -193,6 +195,11 @@ struct Training {
     }
 };
 
+std::string shape_text(c10::IntArrayRef s) { return c10::str(s); }  // "[512, 263]"
+
+// checkpoint.pt holds two entries: "state", the training state serialised by libtorch (bytes), and "fnv1a64",
+// FNV-1a of those bytes. A damaged file (a flipped block of the same size) is refused on load, never resumed
+// from: resuming from garbage gives NaN weights that the next save would write over the model.
 void save_checkpoint(Training& tr, const Hml3dDataset& data, const std::string& path) {
     torch::serialize::OutputArchive archive;
     for (const auto& p : tr.mdm->named_parameters()) archive.write("mdm." + p.key(), p.value());
@@ -208,34 +215,83 @@ void save_checkpoint(Training& tr, const Hml3dDataset& data, const std::string& 
     rng << tr.dropout_rng;
     archive.write("dropout_rng", text_tensor(rng.str()));
     archive.write("dataset", text_tensor(data.state()));
+    std::ostringstream bytes;
+    archive.save_to(bytes);
+    const std::string state = bytes.str();
+    torch::serialize::OutputArchive file;
+    file.write("state", text_tensor(state));
+    file.write("fnv1a64", torch::tensor(static_cast<int64_t>(fnv1a64(state))));
     const std::string tmp = temporary_path_for(path);
-    archive.save_to(tmp);
+    file.save_to(tmp);
     commit_temporary(tmp, path);
 }
 
+// The first line of a libtorch error, without its C++ stack trace.
+std::string first_line(const c10::Error& e) {
+    const std::string m = e.what_without_backtrace();
+    return m.substr(0, std::min(m.find('\n'), size_t{300}));
+}
+
+// The training state's bytes from checkpoint.pt, checked against their checksum.
+std::string verified_checkpoint_state(const std::string& path) {
+    torch::serialize::InputArchive file;
+    try {
+        file.load_from(path, torch::Device(torch::kCPU));
+    } catch (const c10::Error& e) {
+        throw Error(path, "checkpoint", "a checkpoint libtorch can read (cut or damaged?)", first_line(e));
+    }
+    torch::Tensor state, sum;
+    if (!file.try_read("state", state) || !file.try_read("fnv1a64", sum) || state.scalar_type() != torch::kUInt8 || sum.numel() != 1)
+        throw Error(path, "state", "a checkpoint of this version of t2imu (a state and its fnv1a64 checksum)");
+    std::string bytes = tensor_text(state);
+    const uint64_t expected = static_cast<uint64_t>(sum.item<int64_t>()), got = fnv1a64(bytes);
+    if (expected != got)
+        throw Error(path, "fnv1a64", "the checksum of its state (the file is damaged: resume from a copy, or train afresh)",
+                    std::to_string(got) + " against " + std::to_string(expected));
+    return bytes;
+}
+
 void load_checkpoint(Training& tr, Hml3dDataset& data, const std::string& path, const torch::Device& device) {
+    const std::string bytes = verified_checkpoint_state(path);
     torch::serialize::InputArchive archive;
-    archive.load_from(path, device);  // a checkpoint written on a GPU resumes on the CPU, and back
-    torch::NoGradGuard no_grad;
-    // A fresh tensor per read: the archive's storage cannot be resized into another shape.
-    const auto read = [&](const std::string& key) {
-        torch::Tensor t;
-        archive.read(key, t);
-        return t;
-    };
-    for (auto& p : tr.mdm->named_parameters()) p.value().copy_(read("mdm." + p.key()));
-    for (auto& p : tr.text->named_parameters()) p.value().copy_(read("text." + p.key()));
-    torch::serialize::InputArchive optimiser;
-    archive.read("optimiser", optimiser);
-    tr.optimiser->load(optimiser);
-    for (size_t i = 0; i < tr.ema.size(); ++i) tr.ema[i].copy_(read("ema." + std::to_string(i)));
-    tr.step = read("step").item<int64_t>();
-    tr.generator.set_state(read("generator").to(torch::kCPU));
-    at::Generator global = at::detail::getDefaultCPUGenerator();  // a handle sharing the default generator
-    global.set_state(read("default_generator").to(torch::kCPU));
-    std::istringstream rng(tensor_text(read("dropout_rng")));
-    rng >> tr.dropout_rng;
-    data.restore_state(tensor_text(read("dataset")));
+    std::string key = "state";
+    try {
+        archive.load_from(bytes.data(), bytes.size(), device);  // a checkpoint written on a GPU resumes on the CPU, and back
+        torch::NoGradGuard no_grad;
+        // A fresh tensor per read: the archive's storage cannot be resized into another shape.
+        const auto read = [&](const std::string& name) {
+            key = name;
+            torch::Tensor t;
+            archive.read(name, t);
+            return t;
+        };
+        // A parameter of another shape is another model configuration: named, not left to copy_'s stack trace.
+        const auto restore = [&](torch::Tensor& into, const std::string& name) {
+            const torch::Tensor t = read(name);
+            if (t.sizes() != into.sizes())
+                throw Error(path, name, "shape " + shape_text(into.sizes()) + " (the config's model)", shape_text(t.sizes()));
+            into.copy_(t);
+        };
+        for (auto& p : tr.mdm->named_parameters()) restore(p.value(), "mdm." + p.key());
+        for (auto& p : tr.text->named_parameters()) restore(p.value(), "text." + p.key());
+        key = "optimiser";
+        torch::serialize::InputArchive optimiser;
+        archive.read("optimiser", optimiser);
+        tr.optimiser->load(optimiser);
+        for (size_t i = 0; i < tr.ema.size(); ++i) restore(tr.ema[i], "ema." + std::to_string(i));
+        tr.step = read("step").item<int64_t>();
+        tr.generator.set_state(read("generator").to(torch::kCPU));
+        at::Generator global = at::detail::getDefaultCPUGenerator();  // a handle sharing the default generator
+        global.set_state(read("default_generator").to(torch::kCPU));
+        std::istringstream rng(tensor_text(read("dropout_rng")));
+        rng >> tr.dropout_rng;
+        key = "dataset";
+        data.restore_state(tensor_text(read("dataset")));
+    } catch (const c10::Error& e) {
+        throw Error(path, key, "the training state this config makes", first_line(e));
+    }
+    for (const torch::Tensor& p : tr.parameters())
+        if (!torch::isfinite(p).all().item<bool>()) throw Error(path, "parameters", "finite weights", "NaN or infinite values");
 }
 
 void write_model(const Training& tr, const TrainConfig& c, const Hml3dDataset& data) {
@@ -462,8 +518,8 @@ std::vector<double> train_step(Training& tr, const StepBatch& s, const TrainConf
 }
 
 // Rank 0's log line (stderr and the metrics buffer) and, every save_every steps, the metrics appended, the
-// checkpoint and the model folder.
-void log_and_save(Training& tr, const Hml3dDataset& data, const TrainConfig& c, const std::vector<double>& r, double seconds,
+// checkpoint and the model folder; whether it saved.
+bool log_and_save(Training& tr, const Hml3dDataset& data, const TrainConfig& c, const std::vector<double>& r, double seconds,
                   int64_t first, bool last_step, std::string* metrics) {
     if (tr.step % c.log_every == 0 || last_step) {
         const double rate = static_cast<double>(tr.step - first) / std::max(seconds, 1e-9);
@@ -481,7 +537,9 @@ void log_and_save(Training& tr, const Hml3dDataset& data, const TrainConfig& c, 
         metrics->clear();
         save_checkpoint(tr, data, c.out + "/checkpoint.pt");
         write_model(tr, c, data);
+        return true;
     }
+    return false;
 }
 
 }  // namespace
@@ -501,6 +559,8 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
     // The feature space a run trains in: a fine-tuning's base model's (its weights were fitted to it, and a dataset
     // rebuilt with more clips has a slightly different Mean/Std), a resumed run's own as it saved it, else the
     // dataset's. The model folder written holds the same.
+    const std::string checkpoint = c.out + "/checkpoint.pt";  // asked for first: it, not Mean.npy, is what a resume needs
+    if (resume && !fs::exists(checkpoint)) throw Error(checkpoint, "file", "a checkpoint to resume from (train without --resume to start)");
     const std::string stats_from = resume ? c.out : init_from;
     if (!stats_from.empty()) data.use_stats(read_feature_stats(stats_from + "/Mean.npy", stats_from + "/Std.npy"));
     data.seed(c.seed);
@@ -512,12 +572,8 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
     tr.optimiser = std::make_unique<torch::optim::AdamW>(tr.parameters(), torch::optim::AdamWOptions(c.learning_rate).weight_decay(c.weight_decay));
     if (c.ema_decay > 0)
         for (const torch::Tensor& p : tr.parameters()) tr.ema.push_back(p.detach().clone());
-    if (group.is_main()) fs::create_directories(c.out);
-    if (resume) {
-        const std::string checkpoint = c.out + "/checkpoint.pt";
-        if (!fs::exists(checkpoint)) throw Error(checkpoint, "file", "a checkpoint to resume from");
-        load_checkpoint(tr, data, checkpoint, device);
-    }
+    if (group.is_main()) claim_output_folder(c.out);  // marked as t2imu's: --resume continues in it (core/output_path.hpp)
+    if (resume) load_checkpoint(tr, data, checkpoint, device);
     if (c.processes.world_size > 1) seed_rank_dropout(device, c.seed, group.rank(), tr.step);
     RunSetup run = run_setup(c, data, vocab, share, device);
     std::string metrics;
@@ -525,6 +581,7 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
     const auto start = std::chrono::steady_clock::now();
     const auto elapsed_s = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     const int64_t first = tr.step, last = stop_after > 0 ? std::min(c.steps, tr.step + stop_after) : c.steps;
+    int64_t last_saved = first;  // the step the model folder holds (0: nothing saved yet)
     g_stop_requested = false;
     bool stop = false;
     PartClock clock(device, c.profile);
@@ -536,9 +593,16 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
         const std::vector<double> r = train_step(tr, batch, c, run, group, out_of_time, clock);
         stop = r[kStop] > 0;  // any rank's request stops all of them after the same step
         ++tr.step;
+        // Every rank sees the same reduced loss, so all stop here; the step's update is never saved.
+        if (!std::isfinite(r[kTotal]))
+            throw Error(c.out, "step " + std::to_string(tr.step),
+                        last_saved > 0 ? "a finite loss (training stopped; the model folder stays at step " + std::to_string(last_saved) + ")"
+                                       : std::string("a finite loss (training stopped before anything was saved)"),
+                        std::to_string(r[kTotal]));
         progress.loss = r[kTotal];
+        ++progress.steps_run;
         if (!group.is_main()) continue;
-        log_and_save(tr, data, c, r, elapsed_s(), first, tr.step == last || stop, &metrics);
+        if (log_and_save(tr, data, c, r, elapsed_s(), first, tr.step == last || stop, &metrics)) last_saved = tr.step;
         clock.lap(clock.parts.log);
     }
     progress.profile = clock.parts;

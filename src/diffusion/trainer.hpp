@@ -84,6 +84,7 @@ struct StepProfile {
 
 struct TrainProgress {
     int64_t step = 0;
+    int64_t steps_run = 0;  // by this call: 0 when a resumed run was already at train.steps
     double loss = 0;  // the last logged total
     bool stopped_early = false;  // by a signal or max_minutes, before its last step
     StepProfile profile;

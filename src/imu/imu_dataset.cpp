@@ -2,13 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <set>
-#include <string_view>
 
 #include "core/atomic_file.hpp"
 #include "core/csv.hpp"
 #include "core/error.hpp"
+#include "core/number_text.hpp"
 #include "core/output_path.hpp"
 #include "text/utf8.hpp"
 
@@ -44,24 +43,26 @@ void load_samples(const std::string& dir, ImuRecording& r, size_t expected) {
     }
 }
 
-// At most `decimals` digits after the point, trailing zeros dropped ("0", "0.05", "-9.8066").
-void append_number(std::string& out, double v, int decimals) {
-    char buf[48];
-    const int n = std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-    std::string_view s(buf, static_cast<size_t>(n));
-    if (s.find('.') != std::string_view::npos) {
-        while (s.back() == '0') s.remove_suffix(1);
-        if (s.back() == '.') s.remove_suffix(1);
-    }
-    if (s == "-0") s = "0";
-    out.append(s);
+// A sample past these is a numerical failure upstream (an unstable filter, a corrupt import), not motion: the
+// widest MEMS ranges are about 4e3 m/s^2 (400 g) and 35 rad/s; time in s, a recording shorter than ~30 years.
+constexpr double kMaxSample = 1e6;  // m/s^2 and rad/s
+constexpr double kMaxTime = 1e9;    // s
+
+// Refuses a row the reader would refuse or that would be a wall of digits, naming the file, row and column.
+void check_sample_row(const std::string& file, size_t row, double t, const double* six) {
+    const auto refuse = [&](size_t column, double v, const char* expected) {
+        throw Error(file, "row " + std::to_string(row + 2) + " column '" + kSampleColumns[column] + "'", expected, general_text(v, 6));
+    };
+    if (!(std::isfinite(t) && std::fabs(t) <= kMaxTime)) refuse(0, t, "a finite time within 1e9 s");
+    for (size_t c = 0; c < 6; ++c)
+        if (!(std::isfinite(six[c]) && std::fabs(six[c]) <= kMaxSample)) refuse(c + 1, six[c], "a finite sample within ±1e6 (m/s², rad/s)");
 }
 
 void append_sample_row(std::string& out, double t, const double* six, int decimals) {
-    append_number(out, t, 4);  // rates to 10 kHz
+    append_fixed(out, t, 4);  // rates to 10 kHz
     for (int c = 0; c < 6; ++c) {
         out += ',';
-        append_number(out, six[c], decimals);
+        append_fixed(out, six[c], decimals);
     }
     out += '\n';
 }
@@ -106,8 +107,12 @@ void write_imu_dataset(const std::string& dir, const std::vector<ImuRecording>& 
         if (r.t.size() != r.samples.size()) throw Error(r.path, "samples", "one time per sample");
         std::string text = sample_header() + "\n";
         text.reserve(text.size() + r.t.size() * 64);
-        for (size_t i = 0; i < r.t.size(); ++i) append_sample_row(text, r.t[i], r.samples[i].data(), decimals);
-        write_file_atomic(confined_path(dir, r.path, dir + "/manifest.csv path"), text);
+        const std::string file = confined_path(dir, r.path, dir + "/manifest.csv path");
+        for (size_t i = 0; i < r.t.size(); ++i) {
+            check_sample_row(file, i, r.t[i], r.samples[i].data());
+            append_sample_row(text, r.t[i], r.samples[i].data(), decimals);
+        }
+        write_file_atomic(file, text);
         ImuRecording row = r;
         row.n_samples = r.samples.size();
         row.t.clear();
@@ -122,6 +127,7 @@ void write_imu_recording(const std::string& path, const ImuSignals& s, int decim
     text.reserve(text.size() + s.t.size() * 64);
     for (size_t k = 0; k < s.t.size(); ++k) {
         const double six[6] = {s.acc[k].x(), s.acc[k].y(), s.acc[k].z(), s.gyr[k].x(), s.gyr[k].y(), s.gyr[k].z()};
+        check_sample_row(path, k, s.t[k], six);
         append_sample_row(text, s.t[k], six, decimals);
     }
     write_file_atomic(path, text);
@@ -139,9 +145,7 @@ void write_imu_manifest(const std::string& dir, const std::vector<ImuRecording>&
     extra_columns.insert(extra_columns.end(), extra.begin(), extra.end());
     manifest.header.insert(manifest.header.end(), extra_columns.begin(), extra_columns.end());
     for (const ImuRecording& r : recordings) {
-        char rate[32];
-        std::snprintf(rate, sizeof rate, "%g", r.rate_hz);
-        std::vector<std::string> row = {r.path, r.dataset, r.subject, r.activity, r.position, rate, std::to_string(r.n_samples), kImuUnits};
+        std::vector<std::string> row = {r.path, r.dataset, r.subject, r.activity, r.position, general_text(r.rate_hz, 6), std::to_string(r.n_samples), kImuUnits};
         for (const std::string& k : extra_columns) row.push_back(r.extra.count(k) ? r.extra.at(k) : "");
         manifest.rows.push_back(row);
     }

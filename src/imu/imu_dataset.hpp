@@ -7,7 +7,9 @@
 // stairs_down (others keep their own); canonical positions (chest, forearm, head, shin, thigh, upperarm, waist,
 // foot, wrist, ankle) with left_/right_ where the side is known.
 // Numbers are written with at most `decimals` digits after the point, trailing zeros dropped ("0", "0.05",
-// "-9.8066"): 4 for the shared real copies (their sensors resolve no finer), 6 for synthetic signals.
+// "-9.8066"): 4 for the shared real copies (their sensors resolve no finer), 6 for synthetic signals. Before a
+// row is written every value is checked: finite, samples within ±1e6 (m/s², rad/s), time within 1e9 s; else an
+// Error names the file, row and column (a value past that is a numerical failure upstream, not motion).
 #pragma once
 #include <array>
 #include <map>

@@ -33,11 +33,9 @@ SplinePose evaluate_pose(const CubicSpline& ps, const CubicSpline& qs, double t)
     return {pa.head<3>(), 2.0 * (r.conjugate() * dr).vec(), r};
 }
 
-constexpr double kInternalRateHz = 1000;
-
 // The sensor on its attachment, at an internal rate, then box-filtered down to rate_hz (see the header).
 void synthesize_attached(const CubicSpline& ps, const CubicSpline& qs, double rate_hz, const AttachmentDynamics& dyn, ImuSignals* out) {
-    const int over = static_cast<int>(std::ceil(kInternalRateHz / rate_hz));
+    const int over = static_cast<int>(std::ceil(kAttachmentRateHz / rate_hz));
     const double dt = 1 / (rate_hz * over);
     const size_t n = static_cast<size_t>(std::floor(ps.duration() / dt + 1e-9)) + 1;
     std::vector<Eigen::Vector3d> acc(n), omega(n), alpha(n);

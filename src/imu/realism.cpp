@@ -27,12 +27,18 @@ RealismKey number(const char* key, const char* unit, double lo, double hi, doubl
     return {key, unit, lo, hi, zero_is_off, whole, off, on, field, nullptr, nullptr};
 }
 
-void check_damping(const SoftTissue& mode, const char* key, const std::string& source) {
+// A damping ratio, and a frequency and damping the integration stays stable with (soft_tissue.hpp; the bound is
+// derived in docs/realism.md): an overdamped mode's fast root grows without bound in RK4 at 1 kHz otherwise.
+void check_damping(const SoftTissue& mode, const char* key, const char* hz_key, const std::string& source) {
     if (mode.enabled() && !(mode.damping_ratio > 0))
         throw Error(source, key, "a damping ratio in (0, 2] when its frequency is on", std::to_string(mode.damping_ratio));
 }
 
 // The levers in the order their stages run. "on" is the value each was calibrated or measured with
+    if (mode.enabled() && rk4_growth_per_step(mode, 1 / kAttachmentRateHz) > 1)
+        throw Error(source, std::string(hz_key) + " with " + key,
+                    "2 pi " + std::string(hz_key) + " (zeta + sqrt(zeta^2 - 1)) at most 2785 per second (stable at the 1 kHz integration rate)",
+                    format_number(mode.frequency_hz) + " Hz with " + format_number(mode.damping_ratio));
 // (docs/realism.md): tilt on the shared SisFall walking trials (the sisfall preset's), soft tissue from the
 // wobbling-mass literature (soft_tissue.hpp), the strap on SisFall walking's lateral spectrum, landings on SisFall
 // walking's share of power above 3 Hz (0.30 -> 0.47), their spread and tempo as measured in the first ablations,
@@ -62,12 +68,12 @@ const std::vector<RealismLever> kLevers = {
      {number("tissue_hz", "Hz", 1, 200, 0, 10, [](RealismModel& m) -> double& { return m.tissue.frequency_hz; }, true),
       number("tissue_damping", "", 0, 2, 0, 0.5, [](RealismModel& m) -> double& { return m.tissue.damping_ratio; })},
      [](const RealismModel& m) { return m.tissue.enabled(); },
-     [](const RealismModel& m, const std::string& source) { check_damping(m.tissue, "tissue_damping", source); }},
+     [](const RealismModel& m, const std::string& source) { check_damping(m.tissue, "tissue_damping", "tissue_hz", source); }},
     {"strap", RealismStage::attachment, "the device sliding along its belt or strap: a spring-mass along the skin's horizontal tangent",
      {number("strap_hz", "Hz", 1, 200, 0, 6, [](RealismModel& m) -> double& { return m.strap.frequency_hz; }, true),
       number("strap_damping", "", 0, 2, 0, 0.25, [](RealismModel& m) -> double& { return m.strap.damping_ratio; })},
      [](const RealismModel& m) { return m.strap.enabled(); },
-     [](const RealismModel& m, const std::string& source) { check_damping(m.strap, "strap_damping", source); }},
+     [](const RealismModel& m, const std::string& source) { check_damping(m.strap, "strap_damping", "strap_hz", source); }},
     {"landings", RealismStage::attachment,
      "each foot landing's sharp velocity change at the shank (m/s), scaled by transmissibility to the sensor's segment",
      {number("impact_gain", "m/s", 0, 10, 0, 0.8, [](RealismModel& m) -> double& { return m.landings.gain_m_s; }),

@@ -1,22 +1,25 @@
 #include "imu/realworld_export.hpp"
 
 #include <cmath>
-#include <cstdio>
 
 #include "core/atomic_file.hpp"
+#include "core/number_text.hpp"
 
 namespace t2imu {
 
 namespace {
 
+// The samples were checked when the recording's CSV was written (imu_dataset.hpp); the milliseconds are whole.
 std::string realworld_file(const ImuSignals& s, bool gyro, long long start_ms) {
     std::string out = "id,attr_time,attr_x,attr_y,attr_z\n";
-    char line[160];
     for (size_t k = 0; k < s.t.size(); ++k) {
         const Eigen::Vector3d& v = gyro ? s.gyr[k] : s.acc[k];
-        const long long ms = start_ms + std::llround(s.t[k] * 1000.0);
-        const int n = std::snprintf(line, sizeof line, "%zu,%lld,%.7f,%.7f,%.7f\n", k + 1, ms, v.x(), v.y(), v.z());
-        out.append(line, static_cast<size_t>(n));
+        out += std::to_string(k + 1) + "," + std::to_string(start_ms + std::llround(s.t[k] * 1000.0));
+        for (int i = 0; i < 3; ++i) {
+            out += ',';
+            append_fixed(out, v[i], 7);
+        }
+        out += '\n';
     }
     return out;
 }

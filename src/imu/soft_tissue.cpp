@@ -1,10 +1,24 @@
 #include "imu/soft_tissue.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <complex>
 
 namespace t2imu {
 
 using Eigen::Vector3d;
+
+double rk4_growth_per_step(const SoftTissue& tissue, double dt) {
+    if (!tissue.enabled()) return 0;
+    const double w = 2 * M_PI * tissue.frequency_hz, zeta = tissue.damping_ratio;
+    const std::complex<double> root = std::sqrt(std::complex<double>(zeta * zeta - 1, 0));
+    double growth = 0;
+    for (const std::complex<double> lambda : {w * (-zeta + root), w * (-zeta - root)}) {
+        const std::complex<double> z = lambda * dt;
+        growth = std::max(growth, std::abs(1.0 + z + z * z / 2.0 + z * z * z / 6.0 + z * z * z * z / 24.0));
+    }
+    return growth;
+}
 
 SpringMassResponse spring_mass_response(const std::vector<Vector3d>& base, double dt, const SoftTissue& tissue) {
     const size_t n = base.size();

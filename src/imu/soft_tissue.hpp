@@ -21,6 +21,15 @@ struct SoftTissue {
     bool enabled() const { return frequency_hz > 0; }  // ranges: realism.cpp's table
 };
 
+// The rate the attachment is integrated at, at least: imu_synthesis.cpp runs it at the output rate times the
+// smallest whole number that reaches this, so its step is never longer than 1 / kAttachmentRateHz.
+constexpr double kAttachmentRateHz = 1000;
+
+// How much one RK4 step of dt seconds multiplies the spring-mass's fastest free mode: max |R(lambda dt)| over
+// the eigenvalues lambda = omega (-zeta ± sqrt(zeta^2 - 1)), with R(z) = 1 + z + z^2/2 + z^3/6 + z^4/24. Above 1
+// the integration grows without bound whatever the input (docs/realism.md: the stability bound).
+double rk4_growth_per_step(const SoftTissue& tissue, double dt);
+
 // The relative motion of the mass for a base acceleration sampled every dt seconds (input linear between
 // samples, RK4): per sample u, u' and u'' (units of b times s^2, s, 1). Starts at rest (u = u' = 0).
 struct SpringMassResponse {

@@ -18,6 +18,7 @@
 #include "core/csv.hpp"
 #include "core/error.hpp"
 #include "core/json_file.hpp"
+#include "core/output_path.hpp"
 #include "diffusion/lacc_evaluation.hpp"
 #include "diffusion/text_to_motion.hpp"
 #include "imu/imu_dataset.hpp"
@@ -282,7 +283,7 @@ private:
 }  // namespace
 
 ExperimentSummary run_experiment(const ExperimentConfig& config, const std::string& out, const std::function<void(const std::string&)>& log) {
-    fs::create_directories(out);
+    claim_output_folder(out);  // marked as t2imu's: a rerun continues in it (core/output_path.hpp)
     return Experiment(config, out, log).run();
 }
 

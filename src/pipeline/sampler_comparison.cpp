@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "core/error.hpp"
+#include "core/number_text.hpp"
 #include "core/parse.hpp"
 #include "data/hml3d_dataset.hpp"
 #include "diffusion/text_to_motion.hpp"
@@ -135,11 +136,7 @@ SamplerMotions captured(const std::string& dataset, const std::string& split, co
     return out;
 }
 
-std::string number(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
+std::string number(double v) { return general_text(v, 6); }
 
 }  // namespace
 

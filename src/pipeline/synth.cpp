@@ -364,6 +364,7 @@ SynthReport run_synth(const SynthOptions& o) {
     if (!o.activity_reference.empty()) classifier = MotionActivityClassifier::load(o.activity_reference);
     const double load_s = since(t0);
     const json described = source->describe();
+    claim_output_folder(o.out);  // marked as t2imu's: a rerun resumes in it (core/output_path.hpp)
     make_directories(o.out + "/jobs", "jobs folder");
     check_or_write_settings(o.out, settings_json(o, prompts, described, stage.imu.realism));
 

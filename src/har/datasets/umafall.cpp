@@ -42,6 +42,13 @@ double number(const std::string& s, const std::string& path, int line) {
     return finite_number(s, path, "line " + std::to_string(line));
 }
 
+// A SensorTag reads at most ±16 g and ±2000 °/s: a sample past 10^4 in either unit is damage, not motion.
+double sample_value(const std::string& s, const std::string& path, int line) {
+    const double v = number(s, path, line);
+    if (std::fabs(v) > 1e4) throw Error(path, "line " + std::to_string(line), "a sample within ±10^4 (g, °/s)", s);
+    return v;
+}
+
 }  // namespace
 
 std::vector<ImuRecording> read_umafall_file(const std::string& path) {
@@ -69,7 +76,9 @@ std::vector<ImuRecording> read_umafall_file(const std::string& path) {
             if (std::regex_match(line, t, tag)) {
                 std::string pos = t[2];
                 std::transform(pos.begin(), pos.end(), pos.begin(), [](unsigned char c) { return std::tolower(c); });
-                positions[release_index(t[1], path, "line " + std::to_string(n) + " sensor id")] = pos;
+                const int id = release_index(t[1], path, "line " + std::to_string(n) + " sensor id");
+                if (positions.count(id)) throw Error(path, "line " + std::to_string(n) + " sensor id", "an id listed once (two tags cannot share it)", t[1]);
+                positions[id] = pos;
             }
             continue;
         }
@@ -85,7 +94,7 @@ std::vector<ImuRecording> read_umafall_file(const std::string& path) {
         const double sample_no = number(f[1], path, n);
         if (!(sample_no >= 0 && sample_no <= 1e12 && sample_no == std::floor(sample_no)))
             throw Error(path, "line " + std::to_string(n) + " sample no", "a whole number from 0 to 10^12", "'" + f[1].substr(0, 24) + "'");
-        samples[id][type][static_cast<long>(sample_no)] = {number(f[2], path, n), number(f[3], path, n), number(f[4], path, n)};
+        samples[id][type][static_cast<long>(sample_no)] = {sample_value(f[2], path, n), sample_value(f[3], path, n), sample_value(f[4], path, n)};
     }
     std::vector<ImuRecording> out;
     for (const auto& [id, position] : positions) {
