@@ -155,7 +155,7 @@ std::vector<Row> rows() {
         {"ImuSynthRealismTomlOutOfRange", kImuSynth + "--realism {D}/r.toml --out {D}/o", standing_joints("j.npy") + Files{{"r.toml", "tissue_hz = 0.5\n"}},
          2, "tissue_hz", {"o"}},
         {"ImuSynthRealismTomlUnknownBase", kImuSynth + "--realism {D}/r.toml --out {D}/o", standing_joints("j.npy") + Files{{"r.toml", "base = \"tentacle\"\n"}},
-         2, "r.toml: base: expected none, sisfall", {"o"}},
+         2, "r.toml: base: expected none, realworld, sisfall", {"o"}},
         {"ImuSynthRealismTomlUnknownDevice", kImuSynth + "--realism {D}/r.toml --out {D}/o", standing_joints("j.npy") + Files{{"r.toml", "device = \"tentacle\"\n"}},
          2, "r.toml: device: model: expected none, smartphone", {"o"}},
         {"ImuSynthTwoDeviceModels", kImuSynth + "--realism sisfall --noise smartphone --out {D}/o", standing_joints("j.npy"), 2, "--noise", {"o"}},

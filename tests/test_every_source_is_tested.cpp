@@ -31,6 +31,7 @@ const std::map<std::string, Coverage> kCoveredBy = {
     {"diffusion/mdm_io", {"test_mdm.cpp", "model forward"}},
     {"diffusion/text_to_motion", {"test_clip.cpp", "#include \"diffusion/text_to_motion.hpp\""}},
     {"har/class_map", {"test_har.cpp", "#include \"har/class_map.hpp\""}},
+    {"har/datasets/importers", {"test_dataset_profile.cpp", "#include \"har/datasets/importers.hpp\""}},
     {"har/datasets/hugadb", {"test_imu_loaders.cpp", "#include \"har/datasets/hugadb.hpp\""}},
     {"har/datasets/sisfall", {"test_imu_loaders.cpp", "#include \"har/datasets/sisfall.hpp\""}},
     {"har/datasets/umafall", {"test_imu_loaders.cpp", "#include \"har/datasets/umafall.hpp\""}},

@@ -239,7 +239,7 @@ bool mentions(const std::string& m, const std::string& part) { return m.find(par
 TEST(Realism, PresetsTurnOnOnlyTiltAndTheirOwnDevice) {
     // realism.hpp: "none" is the ideal sensor; landings, soft tissue and tempo are off in every preset; each
     // other preset uses the device model of the same name; the calibrated ones spread the tilt over recordings.
-    EXPECT_EQ(realism_preset_names(), (std::vector<std::string>{"none", "sisfall", "umafall", "hugadb", "smartphone"}));
+    EXPECT_EQ(realism_preset_names(), (std::vector<std::string>{"none", "realworld", "sisfall", "umafall", "hugadb", "smartphone"}));
     const RealismModel none = realism_preset("none");
     EXPECT_EQ(none.tilt.mean_deg, 0);
     EXPECT_EQ(none.tilt.sd_deg, 0);

@@ -8,6 +8,7 @@
 #include "cli/usage.hpp"
 #include "core/atomic_file.hpp"
 #include "core/output_path.hpp"
+#include "imu/dataset_profile.hpp"
 #include "imu/imu_dataset.hpp"
 #include "imu/sensor_noise.hpp"
 
@@ -42,7 +43,7 @@ static void add_static_noise(CLI::App& analysis) {
     cmd->add_option("--real", real, "an IMU data set folder (manifest.csv)")->required()->check(CLI::ExistingDirectory);
     cmd->add_option("--position", o.position, "only this position (waist); default: every position");
     cmd->add_option("--window", o.window_s, "window length, s");
-    cmd->add_option("--noise", noise, "a device model to set beside the measurement (as synth --noise: sisfall, umafall, ...)");
+    cmd->add_option("--noise", noise, "a device model to set beside the measurement (as synth --noise: " + dataset_profile_names() + ", smartphone)");
     cmd->add_option("--out", out, "RESULT.json")->required();
     cmd->callback([] {
         SensorNoiseModel device;

@@ -4,11 +4,10 @@
 #include "cli/command.hpp"
 #include "cli/usage.hpp"
 #include "core/output_path.hpp"
-#include "har/datasets/hugadb.hpp"
+#include "core/error.hpp"
+#include "har/datasets/importers.hpp"
+#include "imu/dataset_profile.hpp"
 #include "imu/imu_dataset.hpp"
-#include "har/datasets/realworld.hpp"
-#include "har/datasets/sisfall.hpp"
-#include "har/datasets/umafall.hpp"
 
 namespace t2imu::cli {
 
@@ -16,16 +15,18 @@ static CommandRegistrar registrar([](CLI::App& root) {
     CLI::App& data = command_group(root, "data", "training and IMU datasets");
     auto* cmd = data.add_subcommand("import-imu", "real IMU dataset (release format) -> manifest.csv + one CSV per recording");
     static std::string format, in, out;
-    cmd->add_option("--format", format, "release format")->required()->check(CLI::IsMember({"hugadb", "realworld", "sisfall", "umafall"}));
+    cmd->add_option("--format", format, "release format: " + dataset_profile_names())->required();
     cmd->add_option("input", in, "folder of the release files")->required()->check(CLI::ExistingDirectory);
     cmd->add_option("--out", out, "output dataset folder")->required();
     cmd->callback([] {
-        check_usage([] { check_output(out, "--out", OutputKind::folder, {in}); });
+        const DatasetProfile* profile = nullptr;
+        check_usage([&] {
+            profile = find_dataset_profile(format);
+            if (!profile) throw Error("--format", "format", dataset_profile_names(), format);
+            check_output(out, "--out", OutputKind::folder, {in});
+        });
         std::vector<std::string> skipped;
-        const std::vector<ImuRecording> recordings = format == "hugadb"    ? import_hugadb(in)
-                                                     : format == "sisfall" ? import_sisfall(in, &skipped)
-                                                     : format == "realworld" ? import_realworld(in, &skipped)
-                                                                           : import_umafall(in, &skipped);
+        const std::vector<ImuRecording> recordings = import_imu_dataset(*profile, in, &skipped);
         remove_stale_partials(out);
         const std::string partial = partial_path_for(out);
         write_imu_dataset(partial, recordings);

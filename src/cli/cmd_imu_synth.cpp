@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "core/npy.hpp"
 #include "core/output_path.hpp"
+#include "imu/dataset_profile.hpp"
 #include "imu/imu_dataset.hpp"
 #include "imu/realism.hpp"
 #include "imu/realworld_export.hpp"
@@ -77,7 +78,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--joints", a.joints, "joints .npy [F,22,3], metres, Y up")->required()->check(CLI::ExistingFile);
     cmd->add_option("--fps", a.fps, "frame rate of the joints (HumanML3D: 20)");
     cmd->add_option("--body", a.body, "preset:NAME | paper8 | population:N[,seed=S,female=F,height_m|height_f=CM:SD,bmi_m|bmi_f=MEAN:SD] | height=CM,mass=KG,sex=m|f | smpl:FILE.npz[,betas=..] | none; join with +");
-    cmd->add_option("--sensors", a.sensors, "placement sets: realworld, sisfall, umafall, hugadb, FILE.toml (comma-separated)");
+    cmd->add_option("--sensors", a.sensors, "placement sets: " + dataset_profile_names() + ", FILE.toml (comma-separated)");
     cmd->add_option("--rate", a.options.rate_hz, "output sample rate, Hz");
     cmd->add_option("--noise", a.noise, "the device's errors alone (the realism model's device key): none | smartphone | hugadb | sisfall | umafall [,key=value...]");
     cmd->add_option("--realism", a.realism, realism_help());

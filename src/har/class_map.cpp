@@ -2,18 +2,17 @@
 
 #include <map>
 
+#include "imu/dataset_profile.hpp"
+
 namespace t2imu {
 
 std::string map_activity(const std::string& dataset, const std::string& activity) {
-    static const std::map<std::string, std::map<std::string, std::string>> maps = {
-        {"sisfall", {{"jogging", "running"}, {"stairs_up_down", "stairs"}, {"jump_reach", ""}}},
-        {"umafall", {{"jogging", "running"}}},
-        {"t2imu", {{"jogging", "running"}, {"stairs_up_down", "stairs"}}},
-    };
-    const auto d = maps.find(dataset);
-    if (d == maps.end()) return activity;
-    const auto a = d->second.find(activity);
-    return a == d->second.end() ? activity : a->second;
+    static const std::map<std::string, std::string> synthetic = {{"jogging", "running"}, {"stairs_up_down", "stairs"}};
+    const DatasetProfile* profile = find_dataset_profile(dataset);
+    const std::map<std::string, std::string>* map = dataset == "t2imu" ? &synthetic : profile ? &profile->class_map : nullptr;
+    if (!map) return activity;
+    const auto a = map->find(activity);
+    return a == map->end() ? activity : a->second;
 }
 
 std::string coarsen_for(const std::string& label, const std::set<std::string>& this_side, const std::set<std::string>& other_side) {

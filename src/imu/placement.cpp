@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "core/parse.hpp"
 #include "core/toml_section.hpp"
+#include "imu/dataset_profile.hpp"
 
 namespace t2imu {
 
@@ -19,58 +20,6 @@ using Eigen::Vector3d;
 
 namespace {
 
-SensorPlacement place(const char* position, int segment, double along, double around, const char* x, const char* y,
-                      const char* z, const char* note) {
-    SensorPlacement p;
-    p.position = position;
-    p.segment = segment;
-    p.along = along;
-    p.around_deg = around;
-    p.axis[0] = x;
-    p.axis[1] = y;
-    p.axis[2] = z;
-    p.note = note;
-    return p;
-}
-
-const char* kPhone = "smartphone upright, screen out (Android axes); placement per RealWorld's position name";
-const char* kEstimated = "up axis estimated from the real data's mean gravity while walking; z out of the skin assumed";
-
-std::vector<SensorPlacement> realworld_set() {
-    return {
-        place("chest", spine3, 0.3, 0, "", "up", "out", kPhone),
-        place("left_forearm", left_elbow, 0.85, 90, "distal", "", "out", "watch on the back of the wrist; side not given by the release"),
-        place("head", neck, 1.25, 90, "", "up", "out", "strapped to the side of the head; side not given by the release"),
-        place("left_shin", left_knee, 0.4, 90, "", "proximal", "out", kPhone),
-        place("left_thigh", left_hip, 0.4, 90, "", "proximal", "out", kPhone),
-        place("left_upperarm", left_shoulder, 0.45, 90, "", "proximal", "out", kPhone),
-        place("waist", pelvis, 0.3, 0, "", "up", "out", kPhone),
-    };
-}
-
-std::vector<SensorPlacement> builtin(const std::string& name) {
-    if (name == "realworld") return realworld_set();
-    if (name == "sisfall")
-        return {place("waist", pelvis, 0.3, 0, "", "down", "front", "belt, front; -y up estimated from mean gravity (0.98 g)")};
-    if (name == "umafall")
-        return {
-            place("ankle", right_knee, 0.9, -90, "proximal", "", "out", kEstimated),
-            place("waist", pelvis, 0.3, 0, "up", "", "out", kEstimated),
-            place("chest", spine3, 0.4, 0, "up", "", "out", kEstimated),
-            place("wrist", left_elbow, 0.9, 90, "distal", "", "out", "x along the forearm and z out of the skin assumed: the data's mean gravity is inconsistent across subjects"),
-        };
-    if (name == "hugadb") {
-        std::vector<SensorPlacement> s;
-        const int segs[3][2] = {{left_ankle, right_ankle}, {left_knee, right_knee}, {left_hip, right_hip}};
-        const char* names[3][2] = {{"left_foot", "right_foot"}, {"left_shin", "right_shin"}, {"left_thigh", "right_thigh"}};
-        for (int k = 0; k < 3; ++k)
-            for (int side = 0; side < 2; ++side)
-                s.push_back(place(names[k][side], segs[k][side], 0.5, 0, "distal", "", "out", "front of the segment (top of the foot); -x up estimated from mean gravity"));
-        return s;
-    }
-    return {};
-}
-
 int joint_index(const std::string& name, const std::string& file) {
     for (int j = 0; j < kNumJoints; ++j)
         if (name == kJointNames[static_cast<size_t>(j)]) return j;
@@ -79,7 +28,9 @@ int joint_index(const std::string& name, const std::string& file) {
 
 const std::set<std::string> kAxisWords = {"up", "down", "left", "right", "front", "back", "out", "in", "distal", "proximal"};
 
-void check_axes(const SensorPlacement& p, const std::string& file) {
+}  // namespace
+
+void check_placement(const SensorPlacement& p, const std::string& file) {
     int given = 0;
     for (const std::string& a : p.axis) {
         if (a.empty()) continue;
@@ -88,6 +39,8 @@ void check_axes(const SensorPlacement& p, const std::string& file) {
     }
     if (given != 2) throw Error(file, p.position + " axes", "exactly two of x, y, z", std::to_string(given));
 }
+
+namespace {
 
 Vector3d axis_direction(const std::string& word, const Vector3d& normal, const Vector3d& distal) {
     if (word == "up") return Vector3d::UnitY();
@@ -104,15 +57,17 @@ Vector3d axis_direction(const std::string& word, const Vector3d& normal, const V
 
 }  // namespace
 
-const std::vector<std::string>& builtin_placement_set_names() {
-    static const std::vector<std::string> names = {"realworld", "sisfall", "umafall", "hugadb"};
+std::vector<std::string> builtin_placement_set_names() {
+    std::vector<std::string> names;
+    for (const DatasetProfile& p : dataset_profiles()) names.push_back(p.name);
     return names;
 }
 
-PlacementSet builtin_placement_set(const std::string& name) {
-    PlacementSet set{name, builtin(name)};
-    if (set.sensors.empty()) throw Error("--sensors", "set", "realworld, sisfall, umafall, hugadb or a .toml file", name);
-    for (const SensorPlacement& p : set.sensors) check_axes(p, name);
+PlacementSet builtin_placement_set(const std::string& name, const std::string& option) {
+    const DatasetProfile* profile = find_dataset_profile(name);
+    if (!profile) throw Error(option, "set", dataset_profile_names() + " or a .toml file", name);
+    PlacementSet set{name, profile->placements};
+    for (const SensorPlacement& p : set.sensors) check_placement(p, name);
     return set;
 }
 
@@ -148,7 +103,7 @@ PlacementSet parse_placement_toml(const std::string& text, const std::string& pa
         p.vertex = static_cast<int>(vertex);
         if (!std::isfinite(p.along) || p.along < -0.5 || p.along > 2.0) throw Error(path, p.position + " along", "-0.5 to 2", std::to_string(p.along));
         if (!std::isfinite(p.around_deg)) throw Error(path, p.position + " around", "degrees");
-        check_axes(p, path);
+        check_placement(p, path);
         set.sensors.push_back(p);
     }
     return set;

@@ -45,8 +45,11 @@ struct PlacementSet {
     std::vector<SensorPlacement> sensors;
 };
 
-const std::vector<std::string>& builtin_placement_set_names();
-PlacementSet builtin_placement_set(const std::string& name);
+// The data sets' placement sets (dataset_profile.hpp), by the data set's name; Error naming `option` for another name.
+std::vector<std::string> builtin_placement_set_names();
+PlacementSet builtin_placement_set(const std::string& name, const std::string& option = "--sensors");
+// Throws Error naming `file` and the position unless exactly two axes are given, each one of the words above.
+void check_placement(const SensorPlacement& placement, const std::string& file);
 // A custom set: `name = "..."` and [[sensor]] tables with position, segment (a joint name), along, around
 // (degrees), two of x/y/z, optional vertex and note. Errors name the file and the field.
 PlacementSet read_placement_toml(const std::string& path);

@@ -9,11 +9,14 @@
 #include "core/error.hpp"
 #include "core/parse.hpp"
 #include "core/toml_section.hpp"
+#include "imu/dataset_profile.hpp"
 #include "imu/sensor_noise.hpp"
 
 namespace t2imu {
 
 namespace {
+
+std::string preset_names_text();  // "none, realworld, ..., smartphone": below, with the presets
 
 std::string format_number(double v) {  // 7.5, 0.25, 2000: as a user writes it
     std::ostringstream s;
@@ -195,7 +198,7 @@ nlohmann::json realism_record_as_today(const nlohmann::json& recorded) {
 
 std::string realism_help() {
     std::string h = "realism model: PRESET, PRESET+LEVER-LEVER (levers at their calibrated values / off) or FILE.toml\n"
-                    "(base = \"PRESET\" and keys). Presets: none (default), sisfall, umafall, hugadb, smartphone.\n"
+                    "(base = \"PRESET\" and keys). Presets: " + preset_names_text() + " (none is the default).\n"
                     "Levers, in the order their stages run, and their keys:";
     for (const RealismLever& lever : kLevers) {
         h += std::string("\n  ") + lever.name + " (" + realism_stage_name(lever.stage) + "): " + lever.physics;
@@ -213,9 +216,9 @@ namespace {
 // The presets (realism.hpp). Only the levers that raised synthetic-only HAR on the shared SisFall subjects are
 // on: tilt and the device; each other lever lowered it or left it within its spread (docs/realism.md#the-levers).
 struct Preset {
-    const char* name;
+    std::string name;
     double tilt_mean_deg, tilt_sd_deg;
-    const char* device;
+    std::string device;
 };
 
 // sisfall: the real waist tilt exceeds the synthetic one by 7.5 deg (median mean acc_z while walking, -1.59
@@ -224,27 +227,32 @@ struct Preset {
 //          spreads by 13 deg over recordings.
 // hugadb, smartphone: not calibrated (no waist data in the shared HuGaDB copy, no RealWorld data): a strap
 //          on a leg turns less than a belt clip (5 deg), a phone in a pocket more (8 deg).
-constexpr Preset kPresets[] = {
-    {"none", 0, 0, "none"},
-    {"sisfall", 7.5, 10, "sisfall"},
-    {"umafall", 0, 13, "umafall"},
-    {"hugadb", 0, 5, "hugadb"},
-    {"smartphone", 0, 8, "smartphone"},
-};
+// none, each data set's (dataset_profile.cpp: its tilt, its device), and smartphone: RealWorld's tilt with the generic
+// smartphone chip.
+std::vector<Preset> presets() {
+    std::vector<Preset> out = {{"none", 0, 0, "none"}};
+    for (const DatasetProfile& p : dataset_profiles()) out.push_back({p.name, p.tilt_mean_deg, p.tilt_sd_deg, p.name});
+    const DatasetProfile& phones = *find_dataset_profile("realworld");
+    out.push_back({"smartphone", phones.tilt_mean_deg, phones.tilt_sd_deg, "smartphone"});
+    return out;
+}
 
-}  // namespace
-
-const std::vector<std::string>& realism_preset_names() {
-    static const std::vector<std::string> names = [] {
-        std::vector<std::string> out;
-        for (const Preset& p : kPresets) out.push_back(p.name);
-        return out;
-    }();
+std::string preset_names_text() {
+    std::string names;
+    for (const Preset& p : presets()) names += (names.empty() ? "" : ", ") + p.name;
     return names;
 }
 
+}  // namespace
+
+std::vector<std::string> realism_preset_names() {
+    std::vector<std::string> out;
+    for (const Preset& p : presets()) out.push_back(p.name);
+    return out;
+}
+
 RealismModel realism_preset(const std::string& name) {
-    for (const Preset& p : kPresets) {
+    for (const Preset& p : presets()) {
         if (name != p.name) continue;
         RealismModel m;
         m.name = name;
@@ -252,7 +260,7 @@ RealismModel realism_preset(const std::string& name) {
         m.device = p.device;
         return m;
     }
-    throw Error("--realism", "preset", "none, sisfall, umafall, hugadb, smartphone (each +LEVER-LEVER) or a .toml file", name);
+    throw Error("--realism", "preset", preset_names_text() + " (each +LEVER-LEVER) or a .toml file", name);
 }
 
 RealismModel parse_realism_toml(const std::string& text, const std::string& source) {
@@ -264,7 +272,7 @@ RealismModel parse_realism_toml(const std::string& text, const std::string& sour
     try {
         m = realism_preset(base);
     } catch (const Error&) {  // the file's key is to blame, not --realism
-        throw Error(source, "base", "none, sisfall, umafall, hugadb or smartphone", base);
+        throw Error(source, "base", preset_names_text(), base);
     }
     m.name = source;
     for (const RealismLever& lever : kLevers)

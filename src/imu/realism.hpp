@@ -11,10 +11,9 @@
 // (docs/realism.md) chose the levers: mounting tilt and the device model raised synthetic-only HAR, the others
 // lowered it or left it within its spread, so they are off in every preset:
 //   none        everything off: the ideal sensor of the paper's pipeline
-//   sisfall     the SisFall belt board at the waist: tilt calibrated on the shared SisFall subjects, device sisfall
-//   umafall     UMAFall's SensorTags: tilt spread calibrated on the shared UMAFall subjects, device umafall
-//   hugadb      HuGaDB's leg straps: not calibrated (the shared copy has no waist sensor), device hugadb
-//   smartphone  RealWorld's phones: not calibrated (no RealWorld data), device smartphone
+//   DATASET     each data set's (dataset_profile.hpp): its mounting tilt and its own device; sisfall's tilt
+//               calibrated on the shared SisFall subjects, umafall's spread on the shared UMAFall subjects
+//   smartphone  RealWorld's tilt with the generic smartphone device
 //
 // Spelling a model (`--realism`, the `realism` of an experiment's [synth] and [[real]]):
 //   PRESET                       a preset above
@@ -97,7 +96,7 @@ const RealismLever& realism_lever(const std::string& name);
 // The --realism help: how to spell a model, the presets, and every lever with its stage, keys, units and ranges.
 std::string realism_help();
 
-const std::vector<std::string>& realism_preset_names();
+std::vector<std::string> realism_preset_names();
 RealismModel realism_preset(const std::string& name);  // errors name --realism
 RealismModel parse_realism_toml(const std::string& text, const std::string& source);
 // PRESET, PRESET+LEVER-LEVER or a .toml file's path (errors name --realism or the file).

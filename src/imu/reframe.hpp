@@ -24,6 +24,17 @@ Eigen::Matrix3d reframe_rotation(const BodyModel& body, const SensorPlacement& f
 // Every sample's acceleration and angular rate turned by `to_from`; times and every other field unchanged.
 void reframe_recording(const Eigen::Matrix3d& to_from, ImuRecording& recording);
 
+// A data set's placement set by its name (dataset_profile.hpp) or a placement TOML file; Error naming `option` for
+// another name.
+PlacementSet placement_set_named(const std::string& text, const std::string& option);
+
+// The recordings of the IMU dataset folder `dataset` (those at `positions`, every one when empty) turned into `to`'s
+// axes from `from`'s, or when `from` is null from the convention each recording names: its `frame` column (a
+// reframed dataset), else its `dataset` column (a data set's profile). Every rotation is resolved, so every
+// convention and position checked, before any samples are read; each recording's `frame` column becomes to.name.
+std::vector<ImuRecording> reframe_dataset(const std::string& dataset, const std::vector<std::string>& positions, const PlacementSet& to,
+                                          const PlacementSet* from);
+
 // The placement of `position` in `set`; throws Error naming `option` with the set's positions if it has none.
 const SensorPlacement& placement_at(const PlacementSet& set, const std::string& position, const std::string& option);
 

@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/parse.hpp"
+#include "imu/dataset_profile.hpp"
 
 namespace t2imu {
 
@@ -17,8 +18,9 @@ namespace {
 
 constexpr double kG = 9.80665, kDeg = M_PI / 180;
 
-// The consumer 6-axis chip of the smartphone class (BMI160 / LSM6DS3 datasheet-typical values).
-SensorNoiseModel smartphone_chip() {
+}  // namespace
+
+SensorNoiseModel smartphone_sensor() {
     SensorNoiseModel m;
     m.acc_noise_density = 180e-6 * kG;
     m.gyr_noise_density = 0.007 * kDeg;
@@ -31,32 +33,19 @@ SensorNoiseModel smartphone_chip() {
     m.acc_range = 8 * kG;
     m.gyr_range = 2000 * kDeg;
     m.bits = 16;
+    m.name = "smartphone";
     return m;
 }
 
+namespace {
+
+// none, smartphone, or a data set's device (dataset_profile.hpp).
 SensorNoiseModel preset(const std::string& name, const std::string& option) {
-    SensorNoiseModel m;
-    if (name == "smartphone" || name == "hugadb" || name == "umafall") {
-        m = smartphone_chip();
-        if (name == "hugadb") m.acc_range = 2 * kG;
-        if (name == "umafall") {  // SensorTag CC2650's MPU-9250: acc 300 ug/sqrt(Hz), gyro 0.01 deg/s/sqrt(Hz)
-            m.acc_noise_density = 300e-6 * kG;
-            m.gyr_noise_density = 0.01 * kDeg;
-        }
-    } else if (name == "sisfall") {
-        // ADXL345 (+-16 g, 13 bit: 3.9 mg/LSB; about 300 ug/sqrt(Hz); 0 g offset +-40 mg) and ITG-3200 (0.038
-        // deg/s/sqrt(Hz), +-2000 deg/s, 16 bit; its zero-rate offset left uncalibrated, sd taken as 3 deg/s).
-        m = smartphone_chip();
-        m.acc_noise_density = 300e-6 * kG;
-        m.gyr_noise_density = 0.038 * kDeg;
-        m.gyr_bias_sd = 3 * kDeg;
-        m.acc_range = 16 * kG;
-        m.bits = 13;
-    } else if (name != "none") {
-        throw Error(option, "model", "none, smartphone, hugadb, sisfall or umafall", name);
-    }
-    m.name = name;
-    return m;
+    if (name == "none") return SensorNoiseModel();
+    if (name == "smartphone") return smartphone_sensor();
+    const DatasetProfile* profile = find_dataset_profile(name);
+    if (!profile) throw Error(option, "model", "none, smartphone, " + dataset_profile_names(), name);
+    return profile->sensor;
 }
 
 void set_field(SensorNoiseModel& m, const std::string& key, double v, const std::string& option) {

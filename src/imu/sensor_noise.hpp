@@ -11,11 +11,8 @@
 //   smartphone  a consumer 6-axis IMU as in the phones of RealWorld (datasheet-typical values of the
 //               BMI160/LSM6DS3 class): acc 180 ug/sqrt(Hz), gyro 0.007 deg/s/sqrt(Hz), acc bias sd 40 mg, gyro
 //               bias sd 1 deg/s, scale sd 0.01, misalignment sd 0.5 deg, +-8 g, +-2000 deg/s, 16 bit.
-//   hugadb      the HuGaDB setting: the smartphone chip at +-2 g (clips fast walking at the feet).
-//   sisfall     SisFall's board: ADXL345 (+-16 g, 13 bit, about 300 ug/sqrt(Hz), offset sd 40 mg) and ITG-3200
-//               (0.038 deg/s/sqrt(Hz), zero-rate offset sd 3 deg/s); scale and misalignment as the smartphone.
-//   umafall     UMAFall's SensorTag (MPU-9250): the smartphone chip with acc 300 ug/sqrt(Hz), gyro 0.01
-//               deg/s/sqrt(Hz).
+//   DATASET     each data set's device, in its profile (dataset_profile.cpp): realworld the smartphone,
+//               sisfall's ADXL345/ITG-3200 board, umafall's SensorTag, hugadb's chip at +-2 g.
 // `--noise smartphone,acc_range_g=16,seed=3` overrides single fields.
 #pragma once
 #include <cstdint>
@@ -37,8 +34,11 @@ struct SensorNoiseModel {
     bool enabled() const { return name != "none"; }
 };
 
-// "none", a preset name, or a preset followed by ,key=value overrides (keys as the fields, with acc_range_g
-// and gyr_range_dps in g and deg/s). Errors name "--noise".
+// The consumer 6-axis chip of the smartphone class (BMI160 / LSM6DS3 datasheet-typical values), named "smartphone".
+SensorNoiseModel smartphone_sensor();
+
+// "none", "smartphone", a data set's device (dataset_profile.hpp), or one of these followed by ,key=value overrides
+// (keys as the fields, with acc_range_g and gyr_range_dps in g and deg/s). Errors name "--noise".
 // `option` names the text's origin in errors: "--noise", or a realism file's key ("r.toml: device").
 SensorNoiseModel parse_noise_model(const std::string& text, const std::string& option = "--noise");
 
