@@ -35,13 +35,13 @@ RealismKey number(const char* key, const char* unit, double lo, double hi, doubl
 void check_damping(const SoftTissue& mode, const char* key, const char* hz_key, const std::string& source) {
     if (mode.enabled() && !(mode.damping_ratio > 0))
         throw Error(source, key, "a damping ratio in (0, 2] when its frequency is on", std::to_string(mode.damping_ratio));
-}
-
-// The levers in the order their stages run. "on" is the value each was calibrated or measured with
     if (mode.enabled() && rk4_growth_per_step(mode, 1 / kAttachmentRateHz) > 1)
         throw Error(source, std::string(hz_key) + " with " + key,
                     "2 pi " + std::string(hz_key) + " (zeta + sqrt(zeta^2 - 1)) at most 2785 per second (stable at the 1 kHz integration rate)",
                     format_number(mode.frequency_hz) + " Hz with " + format_number(mode.damping_ratio));
+}
+
+// The levers in the order their stages run. "on" is the value each was calibrated or measured with
 // (docs/realism.md): tilt on the shared SisFall walking trials (the sisfall preset's), soft tissue from the
 // wobbling-mass literature (soft_tissue.hpp), the strap on SisFall walking's lateral spectrum, landings on SisFall
 // walking's share of power above 3 Hz (0.30 -> 0.47), their spread and tempo as measured in the first ablations,
