@@ -2,6 +2,7 @@
 // fine-tuning from a model folder, and weights that load by MDM's official names.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -303,7 +304,7 @@ TEST(Trainer, DamagedCheckpointsAndNonFiniteLossesNeverReachTheModel) {
     };
     std::vector<uint8_t> flipped = good;
     for (size_t i = flipped.size() / 2; i < flipped.size() / 2 + 4096; ++i) flipped[i] ^= 0x5a;
-    refused(flipped, config, "fnv1a64");
+    refused(flipped, config, "damaged");  // the checksum's, or libtorch's own refusal of the archive
     refused(std::vector<uint8_t>(good.begin(), good.begin() + static_cast<long>(good.size() / 2)), config, "checkpoint");
     refused({}, config, "checkpoint");
     const std::string wider = test::write_tiny_train_config(dir + "/data", data, dir + "/m", "");
@@ -326,11 +327,11 @@ TEST(Trainer, DamagedCheckpointsAndNonFiniteLossesNeverReachTheModel) {
     const std::string m = test::error_message([&] { train_mdm(fresh, true); });
     EXPECT_TRUE(test::contains(m, dir + "/empty/checkpoint.pt") && !test::contains(m, "Mean.npy")) << m;
 
-    // A NaN in every clip's features: the first step's loss is NaN, and nothing is saved.
+    // A NaN in every frame of every clip: the first step's loss is NaN, and nothing is saved.
     for (const auto& e : fs::directory_iterator(data + "/new_joint_vecs")) {
         NdArray a = read_npy(e.path().string());
         std::vector<float> v = a.to<float>();
-        v[7] = NAN;
+        for (size_t i = 7; i < v.size(); i += 263) v[i] = NAN;  // feature 7 of every frame [F, 263]
         write_npy(e.path().string(), NdArray::from(v, a.shape));
     }
     TrainConfig poisoned = read_train_config(config);
