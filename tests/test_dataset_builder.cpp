@@ -14,6 +14,7 @@
 #include "data/captions.hpp"
 #include "data/dataset_builder.hpp"
 #include "data/derived_clips.hpp"
+#include "motion/motion_attributes.hpp"
 #include "motion/humanml3d.hpp"
 #include "motion/mocap_import.hpp"
 #include "motion/skeleton.hpp"
@@ -311,4 +312,44 @@ TEST(DatasetBuilder, TrainDrawShareCountsOnlyClipsTheLoaderKeeps) {
     EXPECT_EQ(share.size(), 2u);
     EXPECT_DOUBLE_EQ(share["walking"].get<double>(), 2.0 / 3.0);
     EXPECT_DOUBLE_EQ(share["jumping"].get<double>(), 1.0 / 3.0);
+}
+
+TEST(DatasetBuilder, MeasuredCaptionsSayTheClipsMeasuredTurnAndAreTaggedInCaptionsCsv) {
+    // 07_05 tagged walking by a manifest; three measured captions each, beside its two human ones. The mirror
+    // is measured as mirrored: a turn named on one side in a clip is named on the other in its mirror.
+    const std::string mocap = make_mocap_folder("builder_mocap_measured");
+    if (mocap.empty()) GTEST_SKIP() << "shared data not found: mocap/cmu_daz_bvh_20fps.tar.xz";
+    std::ofstream(mocap + "/manifest.csv") << "file,subject,source_dataset,licence,activity_tags\n"
+                                              "bvh20/07_05.bvh,07,CMU,CMU,walking\n"
+                                              "bvh20/60_01.bvh,60,CMU,CMU,dancing\n";
+    BuildOptions o;
+    o.mocap_dir = mocap;
+    o.out_dir = test::scratch_dir("builder_measured") + "/set";
+    o.mirror = true;
+    o.measured_captions = 3;
+    o.derive = false;  // the walk's derived staircase would be captioned too
+    const BuildSummary s = build_dataset(o);
+    const CsvTable captions = read_csv(o.out_dir + "/captions.csv");
+    std::map<std::string, std::vector<std::string>> measured;
+    int human = 0;
+    for (const auto& row : captions.rows) {
+        if (row[2] == "measured") measured[row[0]].push_back(row[1]);
+        human += row[2] == "human";
+    }
+    EXPECT_EQ(static_cast<int>(captions.rows.size()), s.captions);
+    EXPECT_EQ(measured.size(), 2u);  // the walk and its mirror; the dance gets none
+    ASSERT_EQ(measured["000000"].size(), 3u);
+    ASSERT_EQ(measured["M000000"].size(), 3u);
+    EXPECT_EQ(read_caption_file(o.out_dir + "/texts/000000.txt").size(), 5u);
+    EXPECT_EQ(human, s.captions - 6);
+    const MotionAttributes a = measure_attributes(joint_sequence_from_array(read_npy(o.out_dir + "/new_joints/000000.npy"), "walk"));
+    const MotionAttributes b = measure_attributes(joint_sequence_from_array(read_npy(o.out_dir + "/new_joints/M000000.npy"), "mirror"));
+    EXPECT_NEAR(a.heading_change_deg, -b.heading_change_deg, 0.1);  // features of the mirror, recovered in float32
+    EXPECT_NEAR(a.ground_speed_m_s, b.ground_speed_m_s, 1e-4);
+    for (const std::string& c : measured["000000"]) {
+        const bool says_left = c.find("left") != std::string::npos, says_right = c.find("right") != std::string::npos;
+        EXPECT_FALSE(says_left && a.heading_change_deg < 0) << c;
+        EXPECT_FALSE(says_right && a.heading_change_deg > 0) << c;
+    }
+    EXPECT_EQ(nlohmann::json::parse(s.json)["measured_captions"], 6);
 }

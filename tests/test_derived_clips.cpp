@@ -9,6 +9,7 @@
 #include "data/hml3d_dataset.hpp"
 #include "motion/foot_contacts.hpp"
 #include "motion/mocap_import.hpp"
+#include "motion/motion_attributes.hpp"
 #include "motion/motion_edit.hpp"
 #include "motion/motion_quality.hpp"
 #include "motion/skeleton.hpp"
@@ -39,9 +40,10 @@ TEST(DerivedClips, AForwardWalkGivesAFlightOfStairsAndOnRequestARoundTrip) {
     ASSERT_EQ(derive_clips(walk, "walking", kWalk, report).size(), 1u) << "refused " << report.refused;  // the flight
     DeriveOptions trips;
     trips.stairs_round_trips = true;
+    trips.turning_walks = true;
     const std::vector<DerivedClip> clips = derive_clips(walk, "walking", kWalk, report, trips);
-    // This walk is one of every other that also gives a round trip on request.
-    ASSERT_EQ(clips.size(), 2u) << "refused " << report.refused << ", failed quality " << report.failed_quality;
+    // This walk is one of every other that also gives a round trip on request, and every forward walk a turn.
+    ASSERT_EQ(clips.size(), 3u) << "refused " << report.refused << ", failed quality " << report.failed_quality;
     const DerivedClip& c = clips[0];
     EXPECT_TRUE(c.method == "stairs_up" || c.method == "stairs_down");
     EXPECT_EQ(c.activity, c.method);
@@ -78,14 +80,28 @@ TEST(DerivedClips, AForwardWalkGivesAFlightOfStairsAndOnRequestARoundTrip) {
     place_on_floor(scored);
     EXPECT_TRUE(quality_failures(score_motion(scored), default_quality_thresholds()).empty());
     EXPECT_LT(max_bone_change(trip.joints), 1e-6);
+
+    // The turned walk is measured turning the way and about as far as drawn, and its captions name that side.
+    const DerivedClip& turn = clips[2];
+    EXPECT_EQ(turn.method, "walk_turn");
+    EXPECT_EQ(turn.activity, "walking");
+    const double drawn = turn.parameters["turn_rad"].get<double>() * 180 / M_PI, measured = measure_attributes(turn.joints_20fps).heading_change_deg;
+    EXPECT_GE(std::fabs(drawn), 60);
+    EXPECT_NEAR(measured, drawn, 15);  // the captured walk's own sway on top of the turn
+    const std::string side = std::fabs(drawn) >= 135 ? "around" : drawn > 0 ? "left" : "right";
+    for (const std::string& caption : turn.captions) EXPECT_NE(caption.find(side), std::string::npos) << caption;
+    EXPECT_LT(max_bone_change(turn.joints), 1e-6);
+    EXPECT_EQ(redrawn[2].joints.positions, turn.joints.positions);
 }
 
 TEST(DerivedClips, BackwardWalksAndMixedRecordingsGiveNothing) {
     std::string archive;
     SHARED_OR_SKIP(archive, "mocap/bandai_bvh_native.tar.xz");
     DeriveReport report;
-    EXPECT_TRUE(derive_clips(shared_clip("mocap/bandai_bvh_native.tar.xz", kWalkBack), "walking", kWalkBack, report).empty());
-    EXPECT_EQ(report.refused, 1);
+    DeriveOptions turns;  // a backward walk is not turned either: "walks forward and turns" would not say what it does
+    turns.turning_walks = true;
+    EXPECT_TRUE(derive_clips(shared_clip("mocap/bandai_bvh_native.tar.xz", kWalkBack), "walking", kWalkBack, report, turns).empty());
+    EXPECT_EQ(report.refused, 2);  // the staircase and the turn
     const JointSequence walk = shared_clip("mocap/bandai_bvh_native.tar.xz", kWalk);
     EXPECT_TRUE(derive_clips(walk, "walking;dancing", kWalk, report).empty());  // not one activity: not a source
     EXPECT_TRUE(derive_clips(walk, "running", kWalk, report).empty());

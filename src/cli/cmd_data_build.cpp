@@ -29,6 +29,9 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_flag("--stairs-round-trips", o.derived_kinds.stairs_round_trips, "add stairs clips going up a flight and down the next (off by default; docs/data.md)");
     cmd->add_flag("--no-capture-rate{false}", o.capture_rate,
                   "do not keep captured clips at their capture rate (capture_joints/, what retrieval gives the sensors), and derive clips at 20 fps");
+    cmd->add_flag("--turning-walks", o.derived_kinds.turning_walks, "add walks turned onto a curve, left, right or around (off by default; docs/attributes.md)");
+    cmd->add_option("--measured-captions", o.measured_captions,
+                    "add up to N captions per clip written from its measured motion (speed, turns, steps; docs/attributes.md)")->capture_default_str();
     cmd->add_flag("--strict", o.strict, "stop at the first clip that fails to import (default: skip and report it)");
     cmd->callback([] {
         for (const std::string& item : split_list(licences)) o.licences.insert(item);

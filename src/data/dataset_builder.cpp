@@ -11,14 +11,16 @@
 #include "core/atomic_file.hpp"
 #include "core/csv.hpp"
 #include "core/error.hpp"
+#include "core/hash.hpp"
 #include "core/npy.hpp"
 #include "core/output_path.hpp"
-#include "core/progress.hpp"
 #include "core/parse.hpp"
+#include "core/progress.hpp"
 #include "data/captions.hpp"
 #include "data/derived_clips.hpp"
 #include "data/hml3d_dataset.hpp"
 #include "data/mean_std.hpp"
+#include "data/measured_captions.hpp"
 #include "data/splits.hpp"
 #include "motion/humanml3d.hpp"
 #include "motion/mocap_import.hpp"
@@ -184,6 +186,10 @@ void BuildOptions::validate() const {
         throw Error("data build", "--lying-turns", "the derived clips it is one of (not with --no-derived)");
     if (derived_kinds.lie_down_rests && !derive)
         throw Error("data build", "--lie-down-rests", "the derived clips it is one of (not with --no-derived)");
+    if (derived_kinds.turning_walks && !derive)
+        throw Error("data build", "--turning-walks", "the derived clips it is one of (not with --no-derived)");
+    if (measured_captions < 0 || measured_captions > 20)
+        throw Error("data build", "--measured-captions", "0 (none) to 20 captions per clip", std::to_string(measured_captions));
     if (derived_kinds.stairs_round_trips && !derive)
         throw Error("data build", "--stairs-round-trips", "the derived clips it is one of (not with --no-derived)");
 }
@@ -217,6 +223,8 @@ struct Tally {
     std::map<std::string, TagTally> per_tag;  // by single tag ("jumping;standing" counts for both)
     int next_id = 0;
     double capture_minutes = 0;  // of the capture-rate copies
+    CsvTable captions_csv{"captions.csv", {"id", "caption", "source"}, {}};  // every caption line written, and its source
+    int measured_captions = 0;
     Tally() {
         clips_csv.header = {"id", "file", "source_dataset", "subject", "licence", "activity_tags", "start_frame", "end_frame",
                             "frames", "mirrored", "provenance", "capture_fps", "capture_start_s", "split"};  // "split" holds the split key until the deal
@@ -254,6 +262,12 @@ std::pair<JointSequence, double> capture_span(const JointSequence& capture, cons
     return {place_like_process_file(mirror ? mirrored(span) : span, clip), first / r - begin / kFps};
 }
 
+// Captions measured from a clip's motion (measured_captions.hpp), seeded by its id so a rebuild writes the same.
+std::vector<std::string> measured_for(const BuildOptions& o, const JointSequence& clip, const std::string& tags, const std::string& id) {
+    if (o.measured_captions == 0 || clip.num_frames < 3) return {};
+    return measured_captions(measure_attributes(clip, id), tags, o.measured_captions, fnv1a64(id));
+}
+
 // Cuts one recording into chunks (at most chunks_per_file of them, 0 = all) and writes each, and its mirror;
 // with `capture` (the recording at its capture rate), each chunk's capture-rate copy too.
 void write_recording(const BuildOptions& o, const std::string& tmp, const ClipSource& c, const std::string& key,
@@ -273,6 +287,12 @@ void write_recording(const BuildOptions& o, const std::string& tmp, const ClipSo
                 for (CaptionLine& l : lines) l.caption = swap_left_right(l.caption);
             Written w{clip_id, key, {}};
             const JointSequence clip = mirror ? mirrored(part) : part;
+            for (const CaptionLine& l : lines) tally.captions_csv.rows.push_back({clip_id, l.caption, c.provenance.is_null() ? "human" : "edited"});
+            for (const std::string& caption : measured_for(o, clip, c.tags, clip_id)) {
+                lines.push_back(CaptionLine{caption, "", 0, 0});
+                tally.captions_csv.rows.push_back({clip_id, caption, "measured"});
+                ++tally.measured_captions;
+            }
             write_clip(tmp, clip_id, clip, lines, w.features);
             std::string capture_fps, capture_start;
             if (capture) {
@@ -378,11 +398,13 @@ BuildSummary build_into(const BuildOptions& o, const std::string& tmp) {
     for (Split s : {Split::train, Split::val, Split::test}) write_file_atomic(tmp + "/" + split_name(s) + ".txt", lists[s]);
     write_file_atomic(tmp + "/all.txt", all_ids);
     write_csv(tmp + "/clips.csv", clips_csv);
+    write_csv(tmp + "/captions.csv", tally.captions_csv);
 
     nlohmann::json j;
     j["clips"] = summary.clips;
     j["minutes"] = summary.minutes;
     j["captions"] = summary.captions;
+    j["measured_captions"] = tally.measured_captions;
     j["mirrored"] = o.mirror;
     j["skipped_files"] = skipped;
     for (const auto& [tag, v] : tally.per_tag)
@@ -390,7 +412,8 @@ BuildSummary build_into(const BuildOptions& o, const std::string& tmp) {
                                       {"derived_minutes", v.minutes - v.captured_minutes}};
     j["derived"] = {{"included", o.derive}, {"lying_turns", o.derive && o.derived_kinds.lying_turns},
                     {"stairs_round_trips", o.derive && o.derived_kinds.stairs_round_trips},
-                    {"lie_down_rests", o.derive && o.derived_kinds.lie_down_rests}, {"edits_refused", derive_report.refused},
+                    {"lie_down_rests", o.derive && o.derived_kinds.lie_down_rests},
+                    {"turning_walks", o.derive && o.derived_kinds.turning_walks}, {"edits_refused", derive_report.refused},
                     {"failed_quality", derive_report.failed_quality}};
     j["train_draw_share"] = train_draw_share(clips_csv);
     j["capture_rate"] = {{"included", o.capture_rate}, {"minutes", tally.capture_minutes}};

@@ -13,6 +13,8 @@
 //                          provenance (JSON of a derived clip: source file, method, parameters, seed; empty if captured),
 //                          capture_fps and capture_start_s (the copy's rate and its first frame's time after the clip's
 //                          first, s, in (-1/capture_fps, 0]; empty without a copy), split
+//   captions.csv           id, caption, source: every caption line of texts/, from the captured clip's captions ("human"), a
+//                          derived clip's edit ("edited") or its measured motion ("measured", measured_captions.hpp)
 //   summary.json           clips, minutes, captions, per activity tag (captured and derived minutes), each tag's share
 //                          of the training draws, derived clips refused or failing quality, skipped files and why
 //
@@ -56,6 +58,9 @@ struct BuildOptions {
     // that rate (their copy is the derived clip at it; new_joints hold it at 20 fps, Catmull-Rom). false: every
     // clip, derived ones too, only at 20 fps.
     bool capture_rate = true;
+    // Captions measured from each clip's motion (data/measured_captions.hpp), at most this many per clip, beside
+    // the human ones (0 = none); captions.csv tags each caption line with its source.
+    int measured_captions = 0;
     bool strict = false;  // abort on the first clip that fails to import (default: skip it and report it)
 
     // Throws Error naming the option unless the folders are given and the lengths are in range.

@@ -14,11 +14,13 @@
 #include "motion/jump_series.hpp"
 #include "motion/lying_still.hpp"
 #include "motion/lying_turn.hpp"
+#include "motion/motion_attributes.hpp"
 #include "motion/motion_quality.hpp"
 #include "motion/resample.hpp"
 #include "motion/sit_to_stand.hpp"
 #include "motion/skeleton.hpp"
 #include "motion/stair_gait.hpp"
+#include "motion/walk_turn.hpp"
 
 namespace t2imu {
 
@@ -382,6 +384,53 @@ void derive_jump_series(const JointSequence& jump, const std::string& file, Deri
     out.push_back(std::move(c));
 }
 
+// The sentences of a walk that turns by `degrees` (+ left).
+std::vector<std::string> walk_turn_captions(double degrees) {
+    if (std::abs(degrees) >= 135)
+        return {"a person walks forward and then turns around", "someone walks, turns around and walks back", "a person walks and turns back the way they came",
+                "the person walks a few steps and turns around", "someone walks and makes a u-turn", "a man walks forward, turns around and returns"};
+    const std::string side = degrees > 0 ? "left" : "right";
+    return {"a person walks forward and turns " + side, "someone walks and then turns to the " + side, "a person walks in a curve to the " + side,
+            "the person walks and turns " + side, "someone turns " + side + " while walking", "a man walks forward and bears " + side};
+}
+
+// One walk turned onto a curve (walk_turn.hpp), its size, side and timing drawn from the file's seed.
+void derive_turning_walk(const JointSequence& walk, const std::string& file, DeriveReport& report, std::vector<DerivedClip>& out) {
+    const MotionAttributes source = measure_attributes(walk, file);
+    if (source.travel != TravelDirection::forward || std::abs(source.heading_change_deg) > 30) {
+        ++report.refused;  // a backward, sideways or already turning walk: its captions would not say what it does
+        return;
+    }
+    const uint64_t seed = file_seed(file) + 3;  // its own stream: the other kinds stay as they were
+    std::mt19937_64 rng(seed);
+    const bool around = seed % 3 == 0, left = seed / 3 % 2 == 0;
+    WalkTurnOptions o;
+    const double degrees = around ? uniform(rng, 150, 180) : uniform(rng, 60, 120);
+    o.turn_rad = (left ? 1 : -1) * degrees * M_PI / 180;
+    o.duration_s = around ? uniform(rng, 1.5, 2.5) : uniform(rng, 1.2, 2.2);
+    const double length = (walk.num_frames - 1) / walk.fps, margin = 0.8;
+    if (length < o.duration_s + 2 * margin) {
+        ++report.refused;
+        return;
+    }
+    o.start_s = uniform(rng, margin, length - margin - o.duration_s);
+    JointSequence turned = turn_walk(walk, o);
+    JointSequence at_20 = at_dataset_rate(turned);
+    if (!passes(at_20)) {
+        ++report.failed_quality;
+        return;
+    }
+    DerivedClip c;
+    c.method = "walk_turn";
+    c.activity = "walking";
+    c.joints = std::move(turned);
+    c.joints_20fps = std::move(at_20);
+    c.parameters = {{"turn_rad", o.turn_rad}, {"start_s", o.start_s}, {"duration_s", o.duration_s}};
+    c.seed = seed;
+    c.captions = pick_captions(walk_turn_captions(o.turn_rad * 180 / M_PI), rng);
+    out.push_back(std::move(c));
+}
+
 }  // namespace
 
 std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::string& tags, const std::string& file,
@@ -392,6 +441,7 @@ std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::
     if (t.count("walking")) {
         derive_stairs_clip(captured, file, report, out);
         if (options.stairs_round_trips && file_seed(file) / 2 % 2 == 0) derive_stairs_round_trip(captured, file, report, out);
+        if (options.turning_walks) derive_turning_walk(captured, file, report, out);
     }
     if (t.count("standing")) derive_sit_clips(captured, file, report, out);
     if (t.count("lying")) {

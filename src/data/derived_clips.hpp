@@ -15,6 +15,10 @@
 //             also gives one round trip, up a flight and down the next (gait_splice.hpp: the two flights, on
 //             stairs of one rise and going, joined at a stance of one foot on the landing), cut to
 //             kRoundTripMaxSeconds around the join; tag stairs (either direction).
+//             On request (turning_walks), every walk also gives one turned onto a curve (walk_turn.hpp): by the
+//             seed, two in three turn 60-120 deg over 1.2-2.2 s and one in three turns around, 150-180 deg over
+//             1.5-2.5 s, left or right by a bit of the seed, starting at least 0.8 s into the walk and ending
+//             0.8 s before its end; tag walking.
 //   standing  up to kSitsPerRecording sit-down/stand-up clips, from windows spread evenly over the recording:
 //             seat height uniform in [0.47, 0.57] x the standing hip-joint height (0.40-0.50 m for an adult's
 //             0.88 m: ordinary chairs; ReActIdle's rigs stand 0.66-0.95 m at the hip), sitting down 1.8-2.4 s and
@@ -81,9 +85,9 @@ constexpr int kJumpsPerSeriesMax = 8;
 
 struct DerivedClip {
     // "stairs_up", "stairs_down", "stairs_round_trip", "sit_down_stand_up", "lying_still", "lying_turn", "lie_down_rest",
-    // "jump_rescaled", "jump_series"
+    // "jump_rescaled", "jump_series", "walk_turn"
     std::string method;
-    std::string activity;               // its activity tag: stairs_up, stairs_down, stairs (a round trip), sitting, lying, jumping
+    std::string activity;               // its activity tag: stairs_up, stairs_down, stairs (a round trip), sitting, lying, jumping, walking
     JointSequence joints;               // at the source recording's rate, floor at y = 0 under the lowest joint
     JointSequence joints_20fps;         // the same at 20 fps (Catmull-Rom), as quality-scored and as the dataset holds it
     nlohmann::json parameters;          // the edit's options
@@ -112,6 +116,9 @@ struct DeriveOptions {
     // without them (docs/results.md#lie-down-and-rest-clips-2026-12-05-not-adopted). models/default is fine-tuned on a
     // build with them (experiments/default.toml).
     bool lie_down_rests = false;
+    // Walks turned onto a curve (motion/walk_turn.hpp), one per captured walk: the captured walks turn less than 45
+    // degrees, so a turn asked for in a prompt had no motion to learn from (docs/attributes.md).
+    bool turning_walks = false;
 };
 std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::string& tags, const std::string& file,
                                       DeriveReport& report, const DeriveOptions& options = {});
