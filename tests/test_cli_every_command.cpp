@@ -5,30 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <thread>
 
 #include "test_util.hpp"
 
 using namespace t2imu;
 
 namespace {
-
-// Runs the binary once per argument string, as many at a time as there are cores; results in the given order.
-std::vector<test::CliResult> run_cli_each(const std::vector<std::string>& calls) {
-    std::vector<test::CliResult> results(calls.size());
-    std::atomic<size_t> next{0};
-    std::vector<std::thread> workers(std::max(2u, std::thread::hardware_concurrency()));
-    for (std::thread& w : workers)
-        w = std::thread([&] {
-            for (size_t i = next++; i < calls.size(); i = next++) results[i] = test::run_cli(calls[i]);
-        });
-    for (std::thread& w : workers) w.join();
-    return results;
-}
 
 // The names listed under "Subcommands:" in a --help text.
 std::vector<std::string> subcommands_in(const std::string& help) {
@@ -62,7 +47,7 @@ const std::vector<CliLeaf>& every_leaf() {
         for (std::vector<std::string> level = {""}; !level.empty();) {
             std::vector<std::string> calls, next;
             for (const std::string& path : level) calls.push_back(path + " --help");
-            const std::vector<test::CliResult> helps = run_cli_each(calls);
+            const std::vector<test::CliResult> helps = test::run_cli_each(calls);
             for (size_t i = 0; i < level.size(); ++i) {
                 const std::vector<std::string> children = subcommands_in(helps[i].output);
                 if (children.empty() && !level[i].empty()) found.push_back({level[i], helps[i].output});
@@ -95,7 +80,7 @@ TEST(CliEveryCommand, UnknownOptionsAndMissingRequiredArgumentsAreOneLineUsageEr
         calls.push_back(leaf.path);
     }
     EXPECT_GE(with_required, 25);
-    const std::vector<test::CliResult> results = run_cli_each(calls);
+    const std::vector<test::CliResult> results = test::run_cli_each(calls);
     for (size_t i = 0; i < calls.size(); ++i) EXPECT_EQ(not_one_line_usage_error(calls[i], results[i]), "");
 }
 
@@ -196,7 +181,7 @@ TEST(CliEveryCommand, NanHugeNumbersAndAnUnwritableOutAreOneLineUsageErrors) {
         }
     }
     EXPECT_GE(calls.size(), 60u);
-    const std::vector<test::CliResult> results = run_cli_each(calls);
+    const std::vector<test::CliResult> results = test::run_cli_each(calls);
     for (size_t i = 0; i < calls.size(); ++i) {
         const std::string wrong = not_one_line_usage_error(calls[i], results[i]);
         if (!wrong.empty()) ADD_FAILURE() << wrong;

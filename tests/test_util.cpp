@@ -5,12 +5,15 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <mutex>
 #include <sstream>
+#include <thread>
 
 #include "core/error.hpp"
 
@@ -73,6 +76,18 @@ std::string scratch_dir(const std::string& name) {
 CliResult run_cli(const std::string& args) {
     const char* other = std::getenv("T2IMU_TEST_BINARY");
     return run_shell(std::string("'") + (other && *other ? other : T2IMU_BINARY) + "' " + args);
+}
+
+std::vector<CliResult> run_cli_each(const std::vector<std::string>& calls) {
+    std::vector<CliResult> results(calls.size());
+    std::atomic<size_t> next{0};
+    std::vector<std::thread> workers(std::max(2u, std::thread::hardware_concurrency()));
+    for (std::thread& w : workers)
+        w = std::thread([&] {
+            for (size_t i = next++; i < calls.size(); i = next++) results[i] = run_cli(calls[i]);
+        });
+    for (std::thread& w : workers) w.join();
+    return results;
 }
 
 CliResult run_shell(const std::string& command) {

@@ -50,6 +50,9 @@ template <class F> std::string error_message(F f) {
 CliResult run_cli(const std::string& args);
 // Runs a shell command line (its stderr joined to stdout), e.g. one of the project's scripts.
 CliResult run_shell(const std::string& command);
+// run_cli once per argument string, as many at a time as there are cores (a call's time is mostly its process
+// starting: libtorch and its shared libraries); the results in the order of `calls`.
+std::vector<CliResult> run_cli_each(const std::vector<std::string>& calls);
 
 std::string source_dir();
 
