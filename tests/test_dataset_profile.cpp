@@ -33,9 +33,9 @@ TEST(DatasetProfile, EveryProfileHasEachPartAndEveryTableDrawsFromIt) {
         EXPECT_EQ(sensor.acc_range, p.sensor.acc_range) << p.name;
         EXPECT_EQ(sensor.acc_noise_density, p.sensor.acc_noise_density) << p.name;
         const RealismModel preset = realism_preset(p.name);  // --realism
-        EXPECT_EQ(preset.device, p.name);
+        EXPECT_EQ(preset.sensor, p.name);
         EXPECT_EQ(preset.tilt.mean_deg, p.tilt_mean_deg) << p.name;
-        EXPECT_EQ(preset.tilt.sd_deg, p.tilt_sd_deg) << p.name;
+        EXPECT_EQ(preset.tilt.sd_deg, p.tilt_spread_deg) << p.name;
         for (const auto& [label, mapped] : p.class_map)
             EXPECT_EQ(map_activity(p.name, label), mapped) << p.name;  // HAR's classes
         EXPECT_TRUE(test::contains(realism_help(), p.name)) << p.name;
@@ -107,7 +107,7 @@ TEST(DatasetProfile, AMadeUpProfileRunsImportReframeAndHar) {
     toy.placements = {waist};
     toy.sensor = smartphone_sensor();
     toy.sensor.name = "toyset";
-    toy.tilt_sd_deg = 3;
+    toy.tilt_spread_deg = 3;
     toy.class_map = {{"strolling", "walking"}, {"dashing", "running"}};
     toy.importer = import_toy;
     add_dataset_profile(toy);

@@ -34,7 +34,7 @@ std::vector<double> bouncing_vertical(double device_rate_hz) {
             seq.at(f, j) = body.rest_joints()[static_cast<size_t>(j)] + Vector3d(0, 0.001 * std::sin(2 * M_PI * 14 * f / fps), 0);
     VirtualImuOptions o;
     o.rate_hz = 50;
-    o.realism.device_sample_rate_hz = device_rate_hz;
+    o.realism.sensor_sample_rate_hz = device_rate_hz;
     const BodyImu imu = synthesize_body_imu(seq, spec, parse_sensor_sets("sisfall"), o);
     std::vector<double> y;
     for (const Vector3d& a : imu.signals[0].acc) y.push_back(a.y());
@@ -84,11 +84,11 @@ TEST(DeviceRate, ABounceAboveHalfTheDeviceRateFoldsIntoTheBand) {
 }
 
 TEST(DeviceRate, RealismKeyIsValidatedAndRecorded) {
-    EXPECT_DOUBLE_EQ(parse_realism_toml("base = \"umafall\"\ndevice_rate_hz = 20\n", "r.toml").to_json()["device_rate_hz"].get<double>(), 20);
-    EXPECT_TRUE(test::contains(test::error_message([] { parse_realism_toml("device_rate_hz = 2\n", "r.toml"); }), "r.toml: device_rate_hz"));
-    EXPECT_TRUE(test::contains(test::error_message([] { parse_realism_toml("device_rate_hz = 20.5\n", "r.toml"); }), "r.toml: device_rate_hz: expected 0 (off) or 5 to 2000 Hz, whole"));
+    EXPECT_DOUBLE_EQ(parse_realism_toml("base = \"umafall\"\nsensor_rate_hz = 20\n", "r.toml").to_json()["sensor_rate_hz"].get<double>(), 20);
+    EXPECT_TRUE(test::contains(test::error_message([] { parse_realism_toml("sensor_rate_hz = 2\n", "r.toml"); }), "r.toml: sensor_rate_hz"));
+    EXPECT_TRUE(test::contains(test::error_message([] { parse_realism_toml("sensor_rate_hz = 20.5\n", "r.toml"); }), "r.toml: sensor_rate_hz: expected 0 (off) or 5 to 2000 Hz, whole"));
     VirtualImuOptions o;
     o.rate_hz = 52.5;
-    o.realism.device_sample_rate_hz = 20;
+    o.realism.sensor_sample_rate_hz = 20;
     EXPECT_TRUE(test::contains(test::error_message([&] { o.validate(); }), "--rate: rate: expected a whole number of Hz"));
 }

@@ -183,7 +183,7 @@ TEST(ExperimentConfig, ShippedConfigsReadAndEditsAreRefused) {
     // The realism ablation: one [[real]] variant per lever, each spelled from the realism table.
     const ExperimentConfig ablation = read_experiment_config(std::string(T2IMU_SOURCE_DIR) + "/experiments/realism-ablation.toml");
     ASSERT_EQ(ablation.real_sets.size(), 11u);
-    EXPECT_EQ(ablation.real_sets[1].realism, "sisfall-device");
+    EXPECT_EQ(ablation.real_sets[1].realism, "sisfall-sensor");
     for (const ExperimentRealSet& set : ablation.real_sets) EXPECT_EQ(set.dataset, "cache/imu/sisfall") << set.name;
     // Every experiment configuration in experiments/ reads (the training configs hold no [[real]]).
     for (const auto& e : fs::directory_iterator(std::string(T2IMU_SOURCE_DIR) + "/experiments")) {

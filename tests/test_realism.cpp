@@ -79,7 +79,7 @@ TEST(Realism, OffAndTempoOneAreTheIdealSensorToTheByte) {
 
 TEST(Realism, StaticBodyOnSoftTissueReadsGravityOnly) {
     RealismModel m = realism_preset("sisfall");
-    m.device = "none";
+    m.sensor = "none";
     m.tissue = {10, 0.5};
     m.strap = {6, 0.25};
     m.vibration.gain = 0.5;  // scaled by the motion's level: none here
@@ -211,17 +211,17 @@ TEST(Realism, PresetsAndTomlFilesAreReadStrictly) {
     const RealismModel m = parse_realism_toml("base = \"sisfall\"\ntilt_deg = 20\ntissue_hz = 0\n", "mine.toml");
     EXPECT_EQ(m.tilt.mean_deg, 20);
     EXPECT_FALSE(m.tissue.enabled());
-    EXPECT_EQ(m.device, "sisfall");  // kept from the base
+    EXPECT_EQ(m.sensor, "sisfall");  // kept from the base
     EXPECT_EQ(m.name, "mine.toml");
     EXPECT_THROW(parse_realism_toml("tilt_dg = 3\n", "mine.toml"), Error);
     EXPECT_THROW(parse_realism_toml("tempo_sd = 2\n", "mine.toml"), Error);
-    EXPECT_THROW(parse_realism_toml("device = \"phone\"\n", "mine.toml"), Error);
+    EXPECT_THROW(parse_realism_toml("sensor = \"phone\"\n", "mine.toml"), Error);
     RealismModel two = realism_preset("sisfall");
     const std::string e = test::error_message([&] { fold_noise_option("smartphone", &two); });  // two device models
     EXPECT_TRUE(test::contains(e, "--noise") && test::contains(e, "sisfall")) << e;
     RealismModel one = realism_preset("none");
     fold_noise_option("smartphone", &one);  // --noise alone is the realism model's device
-    EXPECT_EQ(one.device, "smartphone");
+    EXPECT_EQ(one.sensor, "smartphone");
 }
 
 namespace {
@@ -243,19 +243,19 @@ TEST(Realism, PresetsTurnOnOnlyTiltAndTheirOwnDevice) {
     const RealismModel none = realism_preset("none");
     EXPECT_EQ(none.tilt.mean_deg, 0);
     EXPECT_EQ(none.tilt.sd_deg, 0);
-    EXPECT_EQ(none.device, "none");
+    EXPECT_EQ(none.sensor, "none");
     for (const std::string& name : realism_preset_names()) {
         const RealismModel m = realism_preset(name);
         EXPECT_EQ(m.name, name);
-        EXPECT_EQ(m.device, name);
+        EXPECT_EQ(m.sensor, name);
         EXPECT_FALSE(m.tissue.enabled()) << name;
         EXPECT_FALSE(m.strap.enabled()) << name;
         for (const RealismLever& lever : realism_levers()) {
-            if (std::string(lever.name) != "tilt" && std::string(lever.name) != "device") {
+            if (std::string(lever.name) != "tilt" && std::string(lever.name) != "sensor") {
                 EXPECT_FALSE(lever.enabled(m)) << name << " " << lever.name;
             }
         }
-        EXPECT_NO_THROW(parse_noise_model(m.device)) << name;
+        EXPECT_NO_THROW(parse_noise_model(m.sensor)) << name;
     }
     EXPECT_GT(realism_preset("sisfall").tilt.sd_deg, 0);
     EXPECT_GT(realism_preset("umafall").tilt.sd_deg, 0);
@@ -292,8 +292,8 @@ TEST(Realism, ValidationNamesTheKeyOutOfRange) {
         {"impact_horizontal_sd", [](RealismModel& m) { m.landings.spread.horizontal_sd = -0.1; }},
         {"vibration_gain", [](RealismModel& m) { m.vibration.gain = 1.5; }},
         {"vibration_high_hz", [](RealismModel& m) { m.vibration.high_hz = 4; }},
-        {"device_rate_hz", [](RealismModel& m) { m.device_sample_rate_hz = 3; }},
-        {"device", [](RealismModel& m) { m.device = "phone"; }},
+        {"sensor_rate_hz", [](RealismModel& m) { m.sensor_sample_rate_hz = 3; }},
+        {"sensor", [](RealismModel& m) { m.sensor = "phone"; }},
         {"trunk_pitch_gain", [](RealismModel& m) { m.trunk.pitch_gain = 2.5; }},
         {"trunk_yaw_gain", [](RealismModel& m) { m.trunk.yaw_gain = -1.5; }},
         {"trunk_sigma_s", [](RealismModel& m) { m.trunk.sigma_s = 0; }},
@@ -321,7 +321,7 @@ TEST(Realism, JsonFormReadsBackAsTheSameModel) {
     m.tempo_log_sd = 0.1;
     m.trunk = {0.4, 0.6, 0.7};
     m.vibration = {0.2, 4, 11};
-    m.device_sample_rate_hz = 20;
+    m.sensor_sample_rate_hz = 20;
     const nlohmann::json j = m.to_json();
     // Every key but the name as a TOML file, from the "none" base: the same model.
     std::string toml;
@@ -363,16 +363,16 @@ TEST(RealismTable, VariantsSpellAPresetWithLeversOnAndOff) {
     const RealismModel strap = parse_realism("sisfall+strap+vibration");
     EXPECT_EQ(strap.name, "sisfall+strap+vibration");
     EXPECT_EQ(strap.tilt.mean_deg, 7.5);  // the preset's
-    EXPECT_EQ(strap.device, "sisfall");
+    EXPECT_EQ(strap.sensor, "sisfall");
     EXPECT_EQ(strap.strap.frequency_hz, 6);  // calibrated on SisFall walking's lateral spectrum
     EXPECT_EQ(strap.strap.damping_ratio, 0.25);
     EXPECT_EQ(strap.vibration.gain, 0.15);
-    const RealismModel tilt_alone = parse_realism("sisfall-device");
-    EXPECT_EQ(tilt_alone.device, "none");
+    const RealismModel tilt_alone = parse_realism("sisfall-sensor");
+    EXPECT_EQ(tilt_alone.sensor, "none");
     EXPECT_EQ(tilt_alone.tilt.sd_deg, 10);
     const RealismModel device_alone = parse_realism("umafall-tilt");
     EXPECT_EQ(device_alone.tilt.sd_deg, 0);
-    EXPECT_EQ(device_alone.device, "umafall");
+    EXPECT_EQ(device_alone.sensor, "umafall");
     for (const char* bad : {"sisfall+wobble", "sisfall+", "nonesuch+tilt", "+tilt"}) {
         const std::string e = realism_error([&] { parse_realism(bad); });
         EXPECT_TRUE(mentions(e, "--realism")) << bad << ": " << e;
@@ -388,7 +388,7 @@ TEST(RealismTable, TheHelpNamesEveryLeverAndKeyWithItsRange) {
         for (const RealismKey& k : lever.keys) EXPECT_TRUE(mentions(help, std::string("      ") + k.key + ": ")) << k.key;
     }
     EXPECT_TRUE(mentions(help, "tilt_deg: -90 to 90 deg; off 0, calibrated 7.5")) << help;
-    EXPECT_TRUE(mentions(help, "device_rate_hz: 0 (off) or 5 to 2000 Hz, whole")) << help;
+    EXPECT_TRUE(mentions(help, "sensor_rate_hz: 0 (off) or 5 to 2000 Hz, whole")) << help;
     // Both commands that take --realism show it.
     for (const char* command : {"synth --help", "imu synth --help"}) {
         const test::CliResult r = test::run_cli(command);
@@ -405,11 +405,19 @@ TEST(RealismTable, ARetiredLeverRecordedOffReadsAsTodaysModel) {
     EXPECT_EQ(realism_record_as_today(old), realism_preset("sisfall").to_json());
     old["roll_gain"] = 0;  // recorded on: no model of today equals it
     EXPECT_NE(realism_record_as_today(old), realism_preset("sisfall").to_json());
+    // The sensor model's keys were "device" and "device_rate_hz" (a word the torch device also uses): they read
+    // under today's names.
+    nlohmann::json renamed = realism_preset("sisfall").to_json();
+    renamed["device"] = renamed["sensor"];
+    renamed["device_rate_hz"] = renamed["sensor_rate_hz"];
+    renamed.erase("sensor");
+    renamed.erase("sensor_rate_hz");
+    EXPECT_EQ(realism_record_as_today(renamed), realism_preset("sisfall").to_json());
 }
 
 TEST(RealismTable, EveryKeyIsWrittenInAtMostTwoFilesOfTheLibrary) {
-    // Its table entry (realism.cpp) and at most the stage that records its draw (virtual_imu.cpp). "device" is
-    // also the word for libtorch's device, so it is not counted.
+    // Its table entry (realism.cpp) and at most the stage that records its draw (virtual_imu.cpp). "sensor" is
+    // also the word for every placed sensor, so it is not counted.
     namespace fs = std::filesystem;
     std::vector<std::pair<std::string, std::string>> sources;  // file name, text: read once for every key
     for (const auto& e : fs::recursive_directory_iterator(fs::path(T2IMU_SOURCE_DIR) / "src")) {
@@ -419,7 +427,7 @@ TEST(RealismTable, EveryKeyIsWrittenInAtMostTwoFilesOfTheLibrary) {
     }
     for (const RealismLever& lever : realism_levers())
         for (const RealismKey& k : lever.keys) {
-            if (std::string(k.key) == "device") continue;
+            if (std::string(k.key) == "sensor") continue;
             const std::regex word(std::string("\\b") + k.key + "\\b");
             std::vector<std::string> files;
             for (const auto& [name, text] : sources)

@@ -80,7 +80,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--body", a.body, "preset:NAME | paper8 | population:N[,seed=S,female=F,height_m|height_f=CM:SD,bmi_m|bmi_f=MEAN:SD] | height=CM,mass=KG,sex=m|f | smpl:FILE.npz[,betas=..] | none; join with +");
     cmd->add_option("--sensors", a.sensors, "placement sets: " + dataset_profile_names() + ", FILE.toml (comma-separated)");
     cmd->add_option("--rate", a.options.rate_hz, "output sample rate, Hz");
-    cmd->add_option("--noise", a.noise, "the device's errors alone (the realism model's device key): none | smartphone | hugadb | sisfall | umafall [,key=value...]");
+    cmd->add_option("--noise", a.noise, "the sensor's errors alone (the realism model's sensor key): none | smartphone | hugadb | sisfall | umafall [,key=value...]");
     cmd->add_option("--realism", a.realism, realism_help());
     cmd->add_option("--mount-jitter", a.options.mount_jitter_deg, "random mounting rotation up to DEG degrees (seeded)");
     cmd->add_option("--twist-smoothing", a.options.twist_smoothing_frames, "Gaussian smoothing of the segment twist over time, sigma in frames");

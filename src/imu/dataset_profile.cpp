@@ -48,7 +48,7 @@ DatasetProfile realworld() {
         place("waist", pelvis, 0.3, 0, "", "up", "out", kPhone),
     };
     p.sensor = named(smartphone_sensor(), p.name);
-    p.tilt_sd_deg = 8;
+    p.tilt_spread_deg = 8;
     return p;  // climbingup/down become stairs_up/down in its importer; the other names are canonical
 }
 
@@ -70,7 +70,7 @@ DatasetProfile sisfall() {
     m.acc_range = 16 * kG;
     m.bits = 13;
     p.sensor = named(m, p.name);
-    p.tilt_mean_deg = 7.5, p.tilt_sd_deg = 10;
+    p.tilt_mean_deg = 7.5, p.tilt_spread_deg = 10;
     p.class_map = {{"jogging", "running"}, {"stairs_up_down", "stairs"}, {"jump_reach", ""}};
     return p;
 }
@@ -95,7 +95,7 @@ DatasetProfile umafall() {
     m.acc_noise_density = 300e-6 * kG;
     m.gyr_noise_density = 0.01 * kDeg;
     p.sensor = named(m, p.name);
-    p.tilt_sd_deg = 13;
+    p.tilt_spread_deg = 13;
     p.class_map = {{"jogging", "running"}};
     return p;
 }
@@ -117,7 +117,7 @@ DatasetProfile hugadb() {
     SensorNoiseModel m = smartphone_sensor();
     m.acc_range = 2 * kG;
     p.sensor = named(m, p.name);
-    p.tilt_sd_deg = 5;
+    p.tilt_spread_deg = 5;
     return p;
 }
 
@@ -158,7 +158,7 @@ void check_dataset_profile(const DatasetProfile& p) {
     if (p.sensor.name != p.name)
         throw Error(source, "sensor", "a sensor model named after the data set", p.sensor.name);
     RealismModel tilt;
-    tilt.tilt = {p.tilt_mean_deg, p.tilt_sd_deg};
+    tilt.tilt = {p.tilt_mean_deg, p.tilt_spread_deg};
     tilt.validate(source);
 }
 

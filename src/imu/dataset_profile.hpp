@@ -1,5 +1,5 @@
 // The real HAR data sets, one profile each, and the one table every other table draws from: the placement sets
-// (--sensors, data reframe --to/--from), the sensor models (--noise, the realism table's device key), the realism
+// (--sensors, data reframe --to/--from), the sensor models (--noise, the realism table's sensor key), the realism
 // presets (--realism), the class maps (har/class_map.hpp), data import-imu's --format and the help texts that list
 // them. Adding a data set is one entry in dataset_profile.cpp plus its importer (docs/overview.md, "Adding a data
 // set"); a program or a test may add its own profile at run time (add_dataset_profile).
@@ -27,10 +27,10 @@ using ImuImporter =
 struct DatasetProfile {
     std::string name;   // the manifest's dataset column, and the name --sensors, --realism, --format and --to take
     std::string about;  // one line for help texts: the recording device and where it sat
-    std::vector<SensorPlacement> placements;       // its sensors' placements and axes
-    SensorNoiseModel sensor;                       // its device's errors (named after the data set)
-    double tilt_mean_deg = 0, tilt_sd_deg = 0;     // its realism preset's mounting tilt (realism.hpp), degrees
-    std::map<std::string, std::string> class_map;  // its activity label -> the evaluation class ("" = dropped)
+    std::vector<SensorPlacement> placements;        // its sensors' placements and axes
+    SensorNoiseModel sensor;                        // its device's errors (named after the data set)
+    double tilt_mean_deg = 0, tilt_spread_deg = 0;  // its realism preset's mounting tilt (realism.hpp), degrees
+    std::map<std::string, std::string> class_map;   // its activity label -> the evaluation class ("" = dropped)
     // Its release format's reader. The built-in data sets' readers sit downstream in har/datasets/ and are found
     // by name there (har/datasets/importers.hpp); a profile added at run time brings its own.
     ImuImporter importer;

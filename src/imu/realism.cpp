@@ -46,7 +46,7 @@ void check_damping(const SoftTissue& mode, const char* key, const char* hz_key, 
 // wobbling-mass literature (soft_tissue.hpp), the strap on SisFall walking's lateral spectrum, landings on SisFall
 // walking's share of power above 3 Hz (0.30 -> 0.47), their spread and tempo as measured in the first ablations,
 // the trunk sway on SisFall walking's gyroscope, body vibration on SisFall's 5-10 Hz band, the device rate at
-// UMAFall's tags' 20 Hz (where it moved the texture), the device as the sisfall preset's.
+// UMAFall's tags' 20 Hz (where it moved the texture), the sensor model as the sisfall preset's.
 //
 // Measured and retired (the rule: a lever stays if it improves a measured fidelity figure on at least one real
 // data set, or models a documented device behaviour a user can choose): the device roll (`roll_gain`,
@@ -95,14 +95,18 @@ const std::vector<RealismLever> kLevers = {
          if (!(m.vibration.high_hz > m.vibration.low_hz))
              throw Error(source, "vibration_high_hz", "above vibration_low_hz", std::to_string(m.vibration.high_hz));
      }},
-    {"device", RealismStage::device, "the sensor's own errors: noise density, bias, range and resolution of a device's data sheet",
-     {{"device", "", 0, 0, false, false, 0, 0, nullptr, [](RealismModel& m) -> std::string& { return m.device; }, "sisfall"}},
-     [](const RealismModel& m) { return m.device != "none"; },
-     [](const RealismModel& m, const std::string& source) { parse_noise_model(m.device, source + ": device"); }},
-    {"rate", RealismStage::device, "the device samples at its own rate (what lies above its Nyquist frequency folds in), then resampled",
-     {number("device_rate_hz", "Hz", 5, 2000, 0, 20, [](RealismModel& m) -> double& { return m.device_sample_rate_hz; }, true, true)},
-     [](const RealismModel& m) { return m.device_sample_rate_hz > 0; }, nullptr},
+    {"sensor", RealismStage::sensor, "the sensor's own errors: noise density, bias, range and resolution of its data sheet",
+     {{"sensor", "", 0, 0, false, false, 0, 0, nullptr, [](RealismModel& m) -> std::string& { return m.sensor; }, "sisfall"}},
+     [](const RealismModel& m) { return m.sensor != "none"; },
+     [](const RealismModel& m, const std::string& source) { parse_noise_model(m.sensor, source + ": sensor"); }},
+    {"rate", RealismStage::sensor, "the sensor samples at its own rate (what lies above its Nyquist frequency folds in), then resampled",
+     {number("sensor_rate_hz", "Hz", 5, 2000, 0, 20, [](RealismModel& m) -> double& { return m.sensor_sample_rate_hz; }, true, true)},
+     [](const RealismModel& m) { return m.sensor_sample_rate_hz > 0; }, nullptr},
 };
+
+// Keys renamed since folders recorded them (the sensor model was "device", a word the torch device also uses).
+const std::pair<const char*, const char*> kRenamedKeys[] = {{"device", "sensor"},
+                                                            {"device_rate_hz", "sensor_rate_hz"}};
 
 // Keys of retired levers and the value that recorded them off.
 const std::pair<const char*, double> kRetiredKeys[] = {{"roll_gain", 1}, {"roll_sigma_s", 0.5}};
@@ -159,7 +163,7 @@ RealismModel parse_variant(const std::string& text) {
 }  // namespace
 
 const char* realism_stage_name(RealismStage stage) {
-    static const char* const names[] = {"motion", "body", "mount", "attachment", "signal", "device"};
+    static const char* const names[] = {"motion", "body", "mount", "attachment", "signal", "sensor"};
     return names[static_cast<int>(stage)];
 }
 
@@ -191,7 +195,10 @@ nlohmann::json realism_record_as_today(const nlohmann::json& recorded) {
     for (const auto& [key, value] : recorded.items()) {
         bool retired_off = false;
         for (const auto& [retired, off] : kRetiredKeys) retired_off |= key == retired && value == nlohmann::json(off);
-        if (!retired_off) today[key] = value;
+        std::string name = key;
+        for (const auto& [before, now] : kRenamedKeys)
+            if (key == before) name = now;
+        if (!retired_off) today[name] = value;
     }
     return today;
 }
@@ -205,7 +212,7 @@ std::string realism_help() {
         for (const RealismKey& k : lever.keys) {
             h += std::string("\n      ") + k.key + ": ";
             h += k.number ? range_text(k) + "; off " + format_number(k.off) + ", calibrated " + format_number(k.on)
-                          : std::string("none, a device preset or preset,key=value overrides; off none, calibrated ") + k.text_on;
+                          : std::string("none, a sensor model or model,key=value overrides; off none, calibrated ") + k.text_on;
         }
     }
     return h;
@@ -214,11 +221,11 @@ std::string realism_help() {
 namespace {
 
 // The presets (realism.hpp). Only the levers that raised synthetic-only HAR on the shared SisFall subjects are
-// on: tilt and the device; each other lever lowered it or left it within its spread (docs/realism.md#the-levers).
+// on: tilt and the sensor model; each other lever lowered it or left it within its spread (docs/realism.md#the-levers).
 struct Preset {
     std::string name;
     double tilt_mean_deg, tilt_sd_deg;
-    std::string device;
+    std::string sensor;
 };
 
 // sisfall: the real waist tilt exceeds the synthetic one by 7.5 deg (median mean acc_z while walking, -1.59
@@ -231,9 +238,9 @@ struct Preset {
 // smartphone chip.
 std::vector<Preset> presets() {
     std::vector<Preset> out = {{"none", 0, 0, "none"}};
-    for (const DatasetProfile& p : dataset_profiles()) out.push_back({p.name, p.tilt_mean_deg, p.tilt_sd_deg, p.name});
+    for (const DatasetProfile& p : dataset_profiles()) out.push_back({p.name, p.tilt_mean_deg, p.tilt_spread_deg, p.name});
     const DatasetProfile& phones = *find_dataset_profile("realworld");
-    out.push_back({"smartphone", phones.tilt_mean_deg, phones.tilt_sd_deg, "smartphone"});
+    out.push_back({"smartphone", phones.tilt_mean_deg, phones.tilt_spread_deg, "smartphone"});
     return out;
 }
 
@@ -257,7 +264,7 @@ RealismModel realism_preset(const std::string& name) {
         RealismModel m;
         m.name = name;
         m.tilt = {p.tilt_mean_deg, p.tilt_sd_deg};
-        m.device = p.device;
+        m.sensor = p.sensor;
         return m;
     }
     throw Error("--realism", "preset", preset_names_text() + " (each +LEVER-LEVER) or a .toml file", name);

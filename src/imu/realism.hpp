@@ -18,7 +18,7 @@
 // Spelling a model (`--realism`, the `realism` of an experiment's [synth] and [[real]]):
 //   PRESET                       a preset above
 //   PRESET+LEVER-LEVER...        the preset with each +LEVER at its calibrated values and each -LEVER off
-//                                (e.g. sisfall+strap+vibration, sisfall-device: the tilt alone)
+//                                (e.g. sisfall+strap+vibration, sisfall-sensor: the tilt alone)
 //   FILE.toml                    `base = "PRESET"` (default none) and any keys of the table; an unknown key is
 //                                refused
 #pragma once
@@ -56,8 +56,8 @@ struct RealismModel {
     SoftTissue strap;
     LandingTransients landings;
     BodyVibration vibration;
-    std::string device = "none";   // a sensor_noise.hpp model: "none", a preset, overrides
-    double device_sample_rate_hz = 0;  // 0 = sampled at the output rate (device_rate.hpp)
+    std::string sensor = "none";   // the sensor model (sensor_noise.hpp): "none", a preset, overrides
+    double sensor_sample_rate_hz = 0;  // the sensor's own sample rate; 0 = sampled at the output rate (device_rate.hpp)
 
     // Throws Error naming `source` and the key for a value out of range.
     void validate(const std::string& source) const;
@@ -65,7 +65,7 @@ struct RealismModel {
 };
 
 // The stages of synthesize_body_imu, in the order they run (virtual_imu.hpp).
-enum class RealismStage { motion, body, mount, attachment, signal, device };
+enum class RealismStage { motion, body, mount, attachment, signal, sensor };
 const char* realism_stage_name(RealismStage stage);
 
 struct RealismKey {
@@ -75,8 +75,8 @@ struct RealismKey {
     bool zero_is_off;  // 0 is valid besides [lo, hi]
     bool whole;        // a whole number
     double off, on;    // the value that turns the lever off; the value it was calibrated or measured with
-    double& (*number)(RealismModel&);       // null for the device model's name
-    std::string& (*text)(RealismModel&);    // the device model's name (off "none", on `text_on`)
+    double& (*number)(RealismModel&);       // null for the sensor model's name
+    std::string& (*text)(RealismModel&);    // the sensor model's name (off "none", on `text_on`)
     const char* text_on;
 };
 
@@ -101,9 +101,10 @@ RealismModel realism_preset(const std::string& name);  // errors name --realism
 RealismModel parse_realism_toml(const std::string& text, const std::string& source);
 // PRESET, PRESET+LEVER-LEVER or a .toml file's path (errors name --realism or the file).
 RealismModel parse_realism(const std::string& text);
-// A model's JSON record (to_json) with the keys a record made before a lever was added or retired would lack or
-// hold: added keys read as their lever off, a retired lever's keys are dropped when they record it off (a record
-// of a retired lever on is returned as it is, so it compares unequal to any model of today).
+// A model's JSON record (to_json) with the keys a record made before a lever was added, renamed or retired would
+// lack or hold: added keys read as their lever off, renamed keys read under today's name (device -> sensor,
+// device_rate_hz -> sensor_rate_hz), a retired lever's keys are dropped when they record it off (a record of a
+// retired lever on is returned as it is, so it compares unequal to any model of today).
 nlohmann::json realism_record_as_today(const nlohmann::json& recorded);
 
 // Per recording draws, deterministic in the seed.

@@ -39,7 +39,7 @@ SensorNoiseModel smartphone_sensor();
 
 // "none", "smartphone", a data set's device (dataset_profile.hpp), or one of these followed by ,key=value overrides
 // (keys as the fields, with acc_range_g and gyr_range_dps in g and deg/s). Errors name "--noise".
-// `option` names the text's origin in errors: "--noise", or a realism file's key ("r.toml: device").
+// `option` names the text's origin in errors: "--noise", or a realism file's key ("r.toml: sensor").
 SensorNoiseModel parse_noise_model(const std::string& text, const std::string& option = "--noise");
 
 // Applies the model in place. Deterministic in `seed`.

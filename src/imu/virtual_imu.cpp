@@ -53,7 +53,7 @@ void sensor_track(const BodyModel& body, const FittedMotion& motion, const Senso
     }
 }
 
-SensorNoiseModel VirtualImuOptions::device() const { return parse_noise_model(realism.device); }
+SensorNoiseModel VirtualImuOptions::sensor_model() const { return parse_noise_model(realism.sensor); }
 
 void VirtualImuOptions::validate() const {
     if (!(rate_hz > 0 && rate_hz <= 2000)) throw Error("--rate", "rate", "0 < HZ <= 2000", std::to_string(rate_hz));
@@ -62,16 +62,16 @@ void VirtualImuOptions::validate() const {
     if (!(twist_smoothing_frames >= 0 && twist_smoothing_frames <= 1000))
         throw Error("--twist-smoothing", "sigma", "0 to 1000 frames", std::to_string(twist_smoothing_frames));
     realism.validate("--realism " + realism.name);
-    if (realism.device_sample_rate_hz > 0 && rate_hz != std::round(rate_hz))
-        throw Error("--rate", "rate", "a whole number of Hz with a realism model's device rate", std::to_string(rate_hz));
+    if (realism.sensor_sample_rate_hz > 0 && rate_hz != std::round(rate_hz))
+        throw Error("--rate", "rate", "a whole number of Hz with a realism model's sensor rate", std::to_string(rate_hz));
 }
 
 void fold_noise_option(const std::string& noise, RealismModel* realism) {
     const SensorNoiseModel model = parse_noise_model(noise);  // errors name --noise
     if (!model.enabled()) return;
-    if (realism->device != "none")
-        throw Error("--noise", "model", "--noise none with --realism " + realism->name + " (its device model is " + realism->device + ")", noise);
-    realism->device = noise;
+    if (realism->sensor != "none")
+        throw Error("--noise", "model", "--noise none with --realism " + realism->name + " (its sensor model is " + realism->sensor + ")", noise);
+    realism->sensor = noise;
 }
 
 namespace {
@@ -135,8 +135,8 @@ BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& spec, c
     out.leg_scale = fitted.leg_scale;
     out.mean_error_mm = fitted.mean_error_mm;
     out.max_error_mm = fitted.max_error_mm;
-    const SensorNoiseModel device = options.device();
-    const double sample_rate = realism.device_sample_rate_hz > 0 ? realism.device_sample_rate_hz : options.rate_hz;
+    const SensorNoiseModel device = options.sensor_model();
+    const double sample_rate = realism.sensor_sample_rate_hz > 0 ? realism.sensor_sample_rate_hz : options.rate_hz;
     std::vector<Vector3d> p;
     std::vector<Quat> q;
     for (const SensorPlacement& placement : sensors) {
@@ -178,7 +178,7 @@ nlohmann::json virtual_imu_meta(const std::vector<BodyImu>& bodies, const JointS
     meta["mount_jitter_deg"] = options.mount_jitter_deg;
     meta["realism"] = options.realism.to_json();
     meta["seed"] = options.seed;
-    const SensorNoiseModel device = options.device();
+    const SensorNoiseModel device = options.sensor_model();
     meta["noise"] = {{"model", device.name}, {"acc_noise_density", device.acc_noise_density},
                      {"gyr_noise_density", device.gyr_noise_density}, {"acc_bias_sd", device.acc_bias_sd},
                      {"gyr_bias_sd", device.gyr_bias_sd}, {"acc_range", device.acc_range},

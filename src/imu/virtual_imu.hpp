@@ -30,15 +30,15 @@ struct VirtualImuOptions {
     RealismModel realism;            // --realism (realism.hpp); "none" = the ideal sensor
     double twist_smoothing_frames = 0;
 
-    // The device error model in effect: the realism model's device.
-    SensorNoiseModel device() const;
+    // The sensor error model in effect: the realism model's sensor.
+    SensorNoiseModel sensor_model() const;
     // Throws Error naming the option (--rate, --mount-jitter, --twist-smoothing, --realism) for a value out of
     // range.
     void validate() const;
 };
 
-// `--noise MODEL`: the realism model's device, given on its own (sensor_noise.hpp). "none" leaves `realism` as it
-// is; a model where the realism model already names a device is refused (errors name --noise).
+// `--noise MODEL`: the realism model's sensor, given on its own (sensor_noise.hpp). "none" leaves `realism` as it
+// is; a model where the realism model already names a sensor is refused (errors name --noise).
 void fold_noise_option(const std::string& noise, RealismModel* realism);
 
 struct BodyImu {
