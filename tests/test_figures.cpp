@@ -41,7 +41,12 @@ TEST(Figures, ConfusionRowsAreNormalisedToRecall) {
     if (test::gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
     const Capture c("figures_confusion");
     // Rows are true classes: 30 + 10 -> 0.75, 0.25; 14 + 26 -> 0.35, 0.65; an empty row stays 0.
-    const nlohmann::json result = {{"classes", {"running", "walking", "sitting"}}, {"confusion", {{30, 10, 0}, {14, 26, 0}, {0, 0, 0}}}};
+    // Two runs whose confusions sum to the matrix drawn.
+    HarResult result;
+    result.classes = {"running", "walking", "sitting"};
+    result.runs.resize(2);
+    result.runs[0].confusion = {{20, 5, 0}, {4, 16, 0}, {0, 0, 0}};
+    result.runs[1].confusion = {{10, 5, 0}, {10, 10, 0}, {0, 0, 0}};
     plot_confusion(result, c.dir + "/cm.png", "Confusion");
     EXPECT_TRUE(c.png("cm.png"));
     const std::string s = c.script();
@@ -52,11 +57,32 @@ TEST(Figures, ConfusionRowsAreNormalisedToRecall) {
 TEST(Figures, BalancedAccuracyInPercent) {
     if (test::gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
     const Capture c("figures_accuracy");
-    const nlohmann::json a = {{"balanced_accuracy", {{"mean", 0.6}, {"sd", 0.05}}}};
-    const nlohmann::json b = {{"balanced_accuracy", {{"mean", 0.425}, {"sd", 0.0}}}};
-    plot_balanced_accuracy({{"mdm_acc", a}, {"retrieval", b}}, c.dir + "/ba.png");
+    const auto result_of = [](std::vector<double> runs) {
+        HarResult r;
+        for (double ba : runs) r.runs.emplace_back(), r.runs.back().balanced_accuracy = ba;
+        return r;
+    };
+    // 0.55 and 0.65: mean 60 %, sd (n - 1) 7.07107 %; one run: sd 0.
+    plot_balanced_accuracy({{"mdm_acc", result_of({0.55, 0.65})}, {"retrieval", result_of({0.425})}}, c.dir + "/ba.png");
     EXPECT_TRUE(c.png("ba.png"));
-    EXPECT_TRUE(test::contains(c.script(), "$acc << EOD\n0 \"mdm\\\\_acc\" 60 5\n1 \"retrieval\" 42.5 0\nEOD")) << c.script();
+    EXPECT_TRUE(test::contains(c.script(), "$acc << EOD\n0 \"mdm\\\\_acc\" 60 7.07107\n1 \"retrieval\" 42.5 0\nEOD")) << c.script();
+}
+
+TEST(Figures, LowDataCurveOneLineAndBandPerArm) {
+    if (test::gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
+    const Capture c("figures_low_data");
+    LowDataCurve curve{"sisfall", {"a", "b"}, {"0", "1", "all"}, {}};
+    curve.arms.push_back({"real only", {{"1", 1, {0.6, 0.7}}, {"all", 24, {0.9, 0.9}}}});
+    curve.arms.push_back({"mdm mix", {{"0", 0, {0.75}}, {"1", 1, {0.8, 0.8}}}});
+    plot_low_data_curve(curve, c.dir + "/ld.png");
+    EXPECT_TRUE(c.png("ld.png"));
+    const std::string s = c.script();
+    // x at the K's place (1 and 2 for real only), mean, mean - sd, mean + sd in percent.
+    EXPECT_TRUE(test::contains(s, "$arm0 << EOD\n1 65 57.9289 72.0711\n2 90 90 90\nEOD")) << s;
+    EXPECT_TRUE(test::contains(s, "$arm1 << EOD\n0 75 75 75\n1 80 80 80\nEOD")) << s;
+    EXPECT_TRUE(test::contains(s, "\"0\" 0, \"1\" 1, \"all\" 2")) << s;
+    EXPECT_TRUE(test::contains(s, "title \"real only\"")) << s;
+    EXPECT_TRUE(test::contains(test::error_message([&] { plot_low_data_curve(LowDataCurve{}, c.dir + "/x.png"); }), "at least one K"));
 }
 
 TEST(Figures, LaccBarsAndARangeThatHoldsZero) {

@@ -2,6 +2,7 @@
 // shape, and training that must separate classes a child could tell apart.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -13,6 +14,7 @@
 #include "har/har_metrics.hpp"
 #include "har/nn/deepconvlstm.hpp"
 #include "har/nn/har_training.hpp"
+#include "har/subject_draw.hpp"
 #include "har/windowing.hpp"
 #include "test_util.hpp"
 
@@ -192,4 +194,125 @@ TEST(HarTraining, CliLeaveOneSubjectOut) {
     EXPECT_GT(j["balanced_accuracy"]["mean"].get<double>(), 0.85);
     const auto bad = test::run_cli("har run --train " + dir + "/data --out " + dir + "/x.json");  // neither --test nor --loso
     EXPECT_EQ(bad.exit_code, 2) << bad.output;  // bad usage
+}
+
+namespace {
+
+// A synthetic-like set (subjects named as bodies) and a real-like set of `subjects` subjects, three sine classes.
+struct TwoSets {
+    std::vector<ImuRecording> synthetic, real;
+};
+
+TwoSets two_sets(int subjects) {
+    std::mt19937_64 rng(11);
+    TwoSets s;
+    const std::vector<std::pair<std::string, double>> classes = {{"walking", 0.8}, {"running", 2.5}, {"lying", 5.0}};
+    for (const auto& [name, hz] : classes)
+        for (const char* body : {"male_average", "female_tall"})
+            for (int trial = 0; trial < 2; ++trial) {
+                s.synthetic.push_back(sine_recording(body, name, "waist", hz * 1.1, 10, 50, rng, std::to_string(trial)));
+                s.synthetic.back().dataset = "t2imu";
+            }
+    for (int subject = 0; subject < subjects; ++subject)
+        for (const auto& [name, hz] : classes)
+            for (int trial = 0; trial < 2; ++trial) s.real.push_back(sine_recording("SA0" + std::to_string(subject), name, "waist", hz, 10, 50, rng, std::to_string(trial)));
+    return s;
+}
+
+}  // namespace
+
+TEST(HarTraining, FinetuneWithZeroEpochsIsPlainTrainingOnTheSyntheticSet) {
+    torch::set_num_threads(1);
+    const TwoSets s = two_sets(4);
+    const WindowSet syn = make_windows(s.synthetic, {}), real = make_windows(s.real, {});
+    HarOptions o;
+    o.repeats = 1;
+    o.max_epochs = 4;
+    o.seed = 5;
+    SeveralSetsOptions m;
+    m.protocol = HarProtocol::finetune;
+    m.test_set = 1;
+    m.train_subjects = 2;
+    m.finetune_epochs = 0;
+    const HarResult tuned = train_on_sets({{&syn, "syn"}, {&real, "real"}}, real, o, m);
+    ASSERT_EQ(tuned.runs.size(), 1u);
+    const std::vector<std::string> drawn = tuned.runs[0].train_subjects;
+    EXPECT_EQ(drawn, draw_subjects(real.subjects, 2, 5, 0));  // the draw is the recorded one
+    std::vector<ImuRecording> rest;
+    for (const ImuRecording& r : s.real)
+        if (std::find(drawn.begin(), drawn.end(), r.dataset + ":" + r.subject) == drawn.end()) rest.push_back(r);  // windows name dataset:subject
+    const HarResult plain = train_and_test(syn, make_windows(rest, {}), o);
+    EXPECT_EQ(tuned.classes, plain.classes);
+    EXPECT_EQ(tuned.runs[0].confusion, plain.runs[0].confusion);  // bitwise: the same network predicts the same windows
+    EXPECT_EQ(tuned.runs[0].balanced_accuracy, plain.runs[0].balanced_accuracy);
+    EXPECT_EQ(tuned.runs[0].epochs, plain.runs[0].epochs);
+    EXPECT_EQ(tuned.runs[0].test_subjects.size(), 2u);
+    EXPECT_EQ(tuned.runs[0].set_windows, (std::vector<size_t>{syn.size(), real.size() / 2}));  // each subject the same windows
+    // Fine-tuning on the drawn subjects moves the network off the pretrained one.
+    m.finetune_epochs = 3;
+    const HarResult more = train_on_sets({{&syn, "syn"}, {&real, "real"}}, real, o, m);
+    EXPECT_GT(more.runs[0].epochs, 0);
+    EXPECT_EQ(more.runs[0].train_subjects, drawn);
+}
+
+TEST(HarTraining, MixDrawsSubjectsPerRepeatAndTestsTheOthers) {
+    torch::set_num_threads(1);
+    const TwoSets s = two_sets(4);
+    const WindowSet syn = make_windows(s.synthetic, {}), real = make_windows(s.real, {});
+    HarOptions o;
+    o.repeats = 2;
+    o.max_epochs = 30;
+    o.batch = 16;  // an epoch at these shares: 2 x the drawn subject's windows, 4 batches
+    SeveralSetsOptions m;
+    m.test_set = 1;
+    m.train_subjects = 1;
+    m.shares = {0.5, 0.5};
+    const HarResult r = train_on_sets({{&syn, "syn"}, {&real, "real"}}, real, o, m);
+    EXPECT_EQ(r.protocol, "mix");
+    EXPECT_EQ(r.classes, (std::vector<std::string>{"lying", "running", "walking"}));
+    ASSERT_EQ(r.runs.size(), 2u);
+    for (int k = 0; k < 2; ++k) {
+        const HarRun& run = r.runs[static_cast<size_t>(k)];
+        EXPECT_EQ(run.train_subjects, draw_subjects(real.subjects, 1, 0, k));
+        EXPECT_EQ(run.test_subjects.size(), 3u);
+        EXPECT_EQ(std::count(run.test_subjects.begin(), run.test_subjects.end(), run.train_subjects[0]), 0);
+        EXPECT_EQ(run.set_windows, (std::vector<size_t>{syn.size(), real.size() / 4}));
+        EXPECT_GT(run.balanced_accuracy, 0.6);  // separable sines, well above chance (1/3)
+    }
+    EXPECT_EQ(r.test_windows, 2 * (real.size() * 3 / 4));  // summed over the two draws
+    // A subject in a training set and in the test set is refused, before any training.
+    m.test_set = -1, m.train_subjects = 0;
+    EXPECT_TRUE(test::contains(test::error_message([&] { train_on_sets({{&syn, "syn"}, {&real, "real"}}, real, o, m); }), "is in both"));
+}
+
+TEST(HarTraining, CliTrainsOnSeveralSetsAndRefusesBadSplits) {
+    const TwoSets s = two_sets(3);
+    const std::string dir = test::scratch_dir("har_cli_sets");
+    write_imu_dataset(dir + "/syn", s.synthetic);
+    write_imu_dataset(dir + "/real", s.real);
+    const std::string base = "--threads 1 har run --train " + dir + "/syn --train " + dir + "/real --test " + dir + "/real --epochs 3 ";
+    const auto r = test::run_cli(base + "--train-subjects 1 --protocol finetune --finetune-epochs 2 --repeats 2 --out " + dir + "/r.json");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const HarResult result = read_har_result(dir + "/r.json");
+    EXPECT_EQ(result.training_sets, (std::vector<std::string>{dir + "/syn", dir + "/real"}));
+    EXPECT_EQ(result.protocol, "finetune");
+    ASSERT_EQ(result.runs.size(), 2u);
+    EXPECT_EQ(result.runs[0].train_subjects.size(), 1u);
+    EXPECT_EQ(result.runs[1].test_subjects.size(), 2u);
+    // Refused in one line, exit 2, before any training (no result written).
+    std::vector<ImuRecording> unnamed = s.real;
+    for (ImuRecording& rec : unnamed) rec.subject = "";
+    write_imu_dataset(dir + "/unnamed", unnamed);
+    for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+             {"--train " + dir + "/real --test " + dir + "/real", "SA00 is in both"},
+             {base + "--train-subjects 3", "--train-subjects: 3: expected from 0 to 2"},
+             {"--train " + dir + "/syn --train " + dir + "/unnamed --test " + dir + "/unnamed --train-subjects 1", "recordings name their subject"},
+             {base + "--train-subjects 1 --train-share 0.9", "2 shares, one per --train"},
+             {base + "--protocol finetune", "--train-subjects to fine-tune on"}}) {
+        const std::string command = (args.rfind("--threads", 0) == 0 ? args : "--threads 1 har run " + args) + " --out " + dir + "/bad.json";
+        const auto bad = test::run_cli(command);
+        EXPECT_EQ(bad.exit_code, 2) << command << "\n" << bad.output;
+        EXPECT_TRUE(test::contains(bad.output, message)) << command << "\n" << bad.output;
+        EXPECT_FALSE(std::filesystem::exists(dir + "/bad.json"));
+    }
 }

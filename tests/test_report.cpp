@@ -127,9 +127,10 @@ TEST(Report, DrawsEveryRecognisedResultIntoOnePage) {
     const std::string dir = test::scratch_dir("report");
     const std::string in = dir + "/results";
     fs::create_directories(in + "/imu");
-    write_file_atomic(in + "/synthetic_to_real.json",
-                      R"({"classes":["running","walking"],"balanced_accuracy":{"mean":0.6,"sd":0.05,"runs":[0.55,0.65]},)"
-                      R"("macro_f1":{"mean":0.58,"sd":0.04,"runs":[0.54,0.62]},"confusion":[[30,10],[14,26]]})");
+    write_file_atomic(in + "/synthetic_to_real.json",  // har/har_result.hpp's layout; the report reads the run records
+                      R"({"classes":["running","walking"],"run_records":[)"
+                      R"({"name":"seed 0","balanced_accuracy":0.55,"macro_f1":0.54,"epochs":5,"seconds_per_epoch":1,"confusion":[[15,5],[7,13]]},)"
+                      R"({"name":"seed 1","balanced_accuracy":0.65,"macro_f1":0.62,"epochs":6,"seconds_per_epoch":1,"confusion":[[15,5],[7,13]]}]})");
     write_file_atomic(in + "/lacc_change.csv", "group,samples,l_acc_before,l_acc_after,change_percent\nRunning,10,2,1.6,-20\n"
                                                "Stair climbing,4,1,0.95,-5\nhigh_dynamic,10,2,1.6,-20\nlow_dynamic,4,1,0.95,-5\nall,14,1.7,1.41,-17.06\n");
     std::string tsne = "source,activity,tsne_x,tsne_y\n";
@@ -151,7 +152,7 @@ TEST(Report, DrawsEveryRecognisedResultIntoOnePage) {
     size_t images = 0;
     for (size_t p = html.find("data:image/png;base64,iVBORw0KGgo"); p != std::string::npos; p = html.find("data:image/png;base64,iVBORw0KGgo", p + 1)) ++images;
     EXPECT_EQ(images, 6u);  // every figure embedded, each a PNG (its signature in base64)
-    EXPECT_NE(html.find("60.0 &plusmn; 5.0"), std::string::npos);
+    EXPECT_NE(html.find("60.0 &plusmn; 7.1"), std::string::npos);  // mean and sd (n - 1) of 0.55 and 0.65
     EXPECT_NE(html.find("Synthesis: synth"), std::string::npos);
     EXPECT_NE(html.find("<td>walking</td><td>9</td><td>2</td><td>1</td>"), std::string::npos);
     EXPECT_NE(html.find("10 jobs in 7.5 s"), std::string::npos);

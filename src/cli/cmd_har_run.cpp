@@ -1,5 +1,7 @@
-// t2imu har run: DeepConvLSTM trained on one IMU dataset, tested on another (or leave-one-subject-out).
+// t2imu har run: DeepConvLSTM trained on one IMU dataset or several (synthetic plus a few drawn real subjects),
+// tested on another (or leave-one-subject-out).
 #include <cmath>
+#include <filesystem>
 #include <cstdio>
 #include <map>
 #include <set>
@@ -13,18 +15,63 @@
 #include "har/class_map.hpp"
 #include "har/nn/deepconvlstm.hpp"
 #include "har/nn/har_training.hpp"
+#include "har/subject_draw.hpp"
 
 namespace t2imu::cli {
 
 namespace {
 
 struct HarArgs {
-    std::string train, test, positions, test_positions, channels = "acc", classes, out;
-    int folds = 0;
+    std::vector<std::string> train;
+    std::string test, positions, test_positions, channels = "acc", classes, out, train_share, protocol;
+    int folds = 0, train_subjects = -1;
+    SeveralSetsOptions sets;
     bool loso = false;
     WindowOptions windows;
     HarOptions options;
 };
+
+// Training on several sets, a draw of subjects, shares or a protocol: train_on_sets rather than train_and_test.
+bool several(const HarArgs& a) { return a.train.size() > 1 || a.train_subjects >= 0 || !a.train_share.empty() || !a.protocol.empty(); }
+
+std::string join(const std::vector<std::string>& items, const std::string& separator) {
+    std::string out;
+    for (const std::string& item : items) out += (out.empty() ? "" : separator) + item;
+    return out;
+}
+
+bool same_folder(const std::string& x, const std::string& y) {
+    std::error_code ec;
+    return std::filesystem::equivalent(x, y, ec);
+}
+
+// The several-set options from the flags: the protocol, the shares, and which --train is also the --test set.
+void bind_sets(HarArgs& a) {
+    if (!a.protocol.empty()) a.sets.protocol = parse_har_protocol(a.protocol, "--protocol");
+    for (const std::string& share : split_list(a.train_share)) a.sets.shares.push_back(finite_number(share, "--train-share", share, "a share of a batch"));
+    if (a.train_subjects >= 0) {
+        for (size_t i = 0; i < a.train.size(); ++i)
+            if (same_folder(a.train[i], a.test)) {
+                if (a.sets.test_set >= 0) throw Error("--train", a.train[i], "the --test set named once");
+                a.sets.test_set = static_cast<int>(i);
+            }
+        if (a.sets.test_set < 0) throw Error("--train-subjects", std::to_string(a.train_subjects), "a --train that is also the --test set");
+        a.sets.train_subjects = a.train_subjects;
+    }
+    a.sets.validate(a.train.size(), a.options.batch);
+}
+
+// The subject split checked on the manifests (subject_draw.hpp's rules), before any samples are read.
+void check_manifest_subjects(const HarArgs& a) {
+    const auto subjects_of = [](const std::string& set) {
+        std::vector<std::string> s;
+        for (const ImuRecording& r : read_imu_dataset(set, false)) s.push_back(r.subject);
+        return s;
+    };
+    std::vector<std::vector<std::string>> train;
+    for (const std::string& set : a.train) train.push_back(subjects_of(set));
+    check_subject_split(train, a.train, subjects_of(a.test), a.sets.test_set, a.sets.train_subjects);
+}
 
 void run(HarArgs a) {
     WindowOptions w = a.windows;
@@ -35,6 +82,8 @@ void run(HarArgs a) {
     a.options.verbose = global_options().verbose;
     check_usage([&] {
         if (a.loso == !a.test.empty()) throw Error("har run", "--test", "either --test DATASET or --loso");
+        if (a.loso && (a.train.size() > 1 || several(a))) throw Error("--loso", "several", "one --train and no --train-subjects, --train-share or --protocol");
+        bind_sets(a);
         if (a.channels != "acc" && a.channels != "acc,gyr") throw Error("--channels", "channels", "acc or acc,gyr", a.channels);
         if (wt.positions.size() != w.positions.size())
             throw Error("--test-positions", "positions", std::to_string(w.positions.size()) + " positions, one per training position");
@@ -44,29 +93,44 @@ void run(HarArgs a) {
             throw Error("--window", std::to_string(w.window_s) + " s", "at least " + std::to_string(kDeepConvLstmMinWindow) +
                         " samples at --rate (DeepConvLSTM's four convolutions of kernel 5)");
         a.options.validate();
-        check_output(a.out, "--out", OutputKind::file, {a.train, a.test});
+        std::vector<std::string> inputs = a.train;
+        inputs.push_back(a.test);
+        check_output(a.out, "--out", OutputKind::file, inputs);
     });
     if (!a.classes.empty()) {  // checked on the manifest, before any samples are read
         std::set<std::string> held;
-        for (const ImuRecording& r : read_imu_dataset(a.train, false)) held.insert(map_activity(r.dataset, r.activity));
+        for (const std::string& set : a.train)
+            for (const ImuRecording& r : read_imu_dataset(set, false)) held.insert(map_activity(r.dataset, r.activity));
         for (const std::string& c : split_list(a.classes))
             if (!held.count(c)) throw UsageError("--classes: " + c + ": expected a class of the training set");
     }
-    WindowSet train = make_windows(read_imu_dataset(a.train), w);
-    if (!a.classes.empty()) {
-        std::map<std::string, std::string> keep;
-        for (const std::string& c : split_list(a.classes)) keep[c] = c;
-        train = relabel(train, keep);
-    }
+    if (!a.loso) check_usage([&] { check_manifest_subjects(a); });  // on the manifests, before any samples are read
+    std::map<std::string, std::string> keep;
+    for (const std::string& c : split_list(a.classes)) keep[c] = c;
+    const auto windows_of = [&](const std::string& set, const WindowOptions& options) {
+        WindowSet ws = make_windows(read_imu_dataset(set), options);
+        return keep.empty() ? ws : relabel(ws, keep);
+    };
     HarResult result;
     std::string description;
     if (a.loso) {
-        result = leave_one_subject_out(train, a.options, a.folds);
-        description = (a.folds > 0 ? std::to_string(a.folds) + "-fold leave-subjects-out on " : "leave-one-subject-out on ") + a.train;
+        result = leave_one_subject_out(windows_of(a.train[0], w), a.options, a.folds);
+        description = (a.folds > 0 ? std::to_string(a.folds) + "-fold leave-subjects-out on " : "leave-one-subject-out on ") + a.train[0];
+    } else if (!several(a)) {
+        result = train_and_test(windows_of(a.train[0], w), make_windows(read_imu_dataset(a.test), wt), a.options);
+        description = "trained on " + a.train[0] + ", tested on " + a.test;
     } else {
-        const WindowSet test = make_windows(read_imu_dataset(a.test), wt);
-        result = train_and_test(train, test, a.options);
-        description = "trained on " + a.train + ", tested on " + a.test;
+        const WindowSet test = windows_of(a.test, wt);
+        std::vector<WindowSet> sets;
+        sets.reserve(a.train.size());
+        std::vector<TrainingSet> train;
+        for (size_t i = 0; i < a.train.size(); ++i) {
+            if (static_cast<int>(i) != a.sets.test_set) sets.push_back(windows_of(a.train[i], w));
+            train.push_back({static_cast<int>(i) == a.sets.test_set ? &test : &sets.back(), a.train[i]});
+        }
+        result = train_on_sets(train, test, a.options, a.sets);
+        description = std::string(har_protocol_name(a.sets.protocol)) + ": trained on " + join(a.train, " + ") + ", tested on " + a.test +
+                      (a.sets.test_set >= 0 ? " less the " + std::to_string(a.sets.train_subjects) + " subjects drawn for each training" : "");
     }
     write_file_atomic(a.out, har_result_json(result, description));
     double mean = 0;
@@ -81,7 +145,8 @@ static CommandRegistrar registrar([](CLI::App& root) {
     CLI::App& har = command_group(root, "har", "human activity recognition on IMU datasets");
     auto* cmd = har.add_subcommand("run", "train DeepConvLSTM on --train, test on --test (or --loso); writes RESULT.json");
     static HarArgs a;
-    cmd->add_option("--train", a.train, "training dataset (manifest.csv layout)")->required()->check(CLI::ExistingDirectory);
+    cmd->add_option("--train", a.train, "training dataset (manifest.csv layout); repeat it to train on several together")
+        ->required()->check(CLI::ExistingDirectory)->expected(1)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     cmd->add_option("--test", a.test, "test dataset")->check(CLI::ExistingDirectory);
     cmd->add_flag("--loso", a.loso, "leave-one-subject-out on --train instead of a test set");
     cmd->add_option("--positions", a.positions, "training positions, comma-separated (a name without side matches either side)");
@@ -91,6 +156,12 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--window", a.windows.window_s, "window length, s");
     cmd->add_option("--overlap", a.windows.overlap, "window overlap, 0..1");
     cmd->add_option("--folds", a.folds, "with --loso: subjects dealt into this many folds (default: one per subject)");
+    cmd->add_option("--train-subjects", a.train_subjects,
+                    "draw this many subjects of the --train set that is also --test (seeded by --seed and the repeat); the others are tested");
+    cmd->add_option("--train-share", a.train_share, "share of each batch per --train, comma-separated in --train order (default: by windows)");
+    cmd->add_option("--protocol", a.protocol, "several sets: mix (one training on all) or finetune (train on the others, then fine-tune on the drawn subjects)");
+    cmd->add_option("--finetune-epochs", a.sets.finetune_epochs, "finetune: most fine-tuning epochs (early stopping; 0 = the pretrained network)");
+    cmd->add_option("--finetune-lr", a.sets.finetune_learning_rate, "finetune: the fine-tuning's learning rate");
     cmd->add_option("--classes", a.classes, "keep only these training classes (after the data set's class map)");
     cmd->add_option("--repeats", a.options.repeats, "trainings with consecutive seeds");
     cmd->add_option("--epochs", a.options.max_epochs, "most epochs per training (early stopping, patience 5)");

@@ -71,6 +71,11 @@ public:
             write_report(out_, path("report"));
             say("round " + std::to_string(k + 1) + "/" + std::to_string(c_.har.repeats) + " of HAR trainings done: " + path("summary.md"));
         }
+        if (!c_.low_data.train_subjects.empty()) {
+            run_low_data(c_, out_, [this](const std::string& dataset, const ExperimentRealSet& set) -> const WindowSet& { return windows(dataset, set); }, log_);
+            write_report(out_, path("report"));
+            say("low-data curves done: " + path("low-data/summary.md"));
+        }
         return summary;
     }
 

@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "analysis/tsne.hpp"
+#include "har/low_data_curve.hpp"
 #include "har/nn/har_training.hpp"
 #include "har/windowing.hpp"
 #include "pipeline/synth.hpp"
@@ -59,6 +60,21 @@ struct ExperimentLacc {
     double tau = 0.45;  // the paper's similarity threshold for the category Other
 };
 
+// [low_data]: the low-data curve (pipeline/experiment_low_data.cpp). Per real set, for each K real training subjects
+// (drawn `draws` times, seeds har.seed + draw, tested on that set's other subjects): real only, and each source's
+// synthetic set with each protocol (har/nn/har_training.hpp) -> low-data/<arm>/<protocol>-k<K>.json, the curves in
+// low-data/curves.json and low-data/summary.md. K = 0 is the experiment's synthetic-only row.
+struct ExperimentLowData {
+    std::vector<int> train_subjects;  // K; kAllSubjects: every subject but all_test_subjects. Empty: no curve
+    static constexpr int kAllSubjects = -1;
+    int all_test_subjects = 4;        // at K = all, drawn per draw
+    int draws = 5;
+    std::vector<HarProtocol> protocols = {HarProtocol::mix, HarProtocol::finetune};
+    double synthetic_share = 0.5;     // mix: the synthetic set's share of each batch (0: in proportion to windows)
+    int finetune_epochs = 20;
+    double finetune_learning_rate = 3e-4;
+};
+
 struct ExperimentConfig {
     SynthOptions synth;  // shared synthesis settings; prompts, model, sensors and out are set per row
     std::vector<ExperimentSource> sources;
@@ -69,10 +85,24 @@ struct ExperimentConfig {
     TsneOptions tsne;
     uint64_t feature_seed = 0;  // the two-sample test's folds and the t-SNE draw
     ExperimentLacc lacc;
+    ExperimentLowData low_data;
 };
 
 // Reads experiments/*.toml (see experiments/paper.toml for every key); unknown keys are refused.
 ExperimentConfig read_experiment_config(const std::string& path);
+
+// [low_data] of an experiment TOML (the section `low_data`), every value checked; Error names `path` and the key.
+class TomlSection;
+ExperimentLowData read_experiment_low_data(TomlSection section, const std::string& path);
+
+// The low-data curves of every real set, each step skipped when its file exists; `windows` gives a dataset folder's
+// windows for a real set (read once by the experiment). Writes low-data/curves.json and low-data/summary.md.
+std::vector<LowDataCurve> run_low_data(const ExperimentConfig& config, const std::string& out,
+                                       const std::function<const WindowSet&(const std::string&, const ExperimentRealSet&)>& windows,
+                                       const std::function<void(const std::string&)>& log);
+// low-data/summary.md: per real set, balanced accuracy per K and arm (mean ± sd over the draws, each draw), and the
+// best synthetic arm's gain over real only.
+std::string low_data_markdown(const std::vector<LowDataCurve>& curves);
 
 // summary.json: the experiment folder's table, made from its har/, gap/ and lacc/ files (each read through its
 // own reader: read_har_result, two_sample_balanced_accuracy, read_lacc_csv).

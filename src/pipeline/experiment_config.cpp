@@ -142,6 +142,7 @@ ExperimentConfig read_experiment_config(const std::string& path) {
     c.feature_seed = read_seed(features, "seed", c.feature_seed, path, "features.seed");
     features.refuse_unknown_keys();
     read_lacc(top.table("lacc"), c.lacc, path);
+    c.low_data = read_experiment_low_data(top.table("low_data"), path);
     top.refuse_unknown_keys();
     check_names(c, path);
     return c;

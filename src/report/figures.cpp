@@ -77,12 +77,11 @@ void plot_tsne(const CsvTable& t, const std::string& colour_column, const std::s
     render_png(png, data, "set title " + gnuplot_label(title) + "\nset xlabel 't-SNE 1'\nset ylabel 't-SNE 2'\nset key outside right\n" + plot, 900, 700);
 }
 
-void plot_balanced_accuracy(const std::vector<std::pair<std::string, nlohmann::json>>& results, const std::string& png) {
+void plot_balanced_accuracy(const std::vector<std::pair<std::string, HarResult>>& results, const std::string& png) {
     GnuplotData d{"acc", {}};
     for (size_t i = 0; i < results.size(); ++i) {
-        const auto& ba = results[i].second.at("balanced_accuracy");
-        d.rows.push_back({std::to_string(i), gnuplot_label(results[i].first), number(100 * ba.at("mean").get<double>()),
-                          number(100 * ba.at("sd").get<double>())});
+        const ScoreSummary ba = score_summary(results[i].second, &HarRun::balanced_accuracy);
+        d.rows.push_back({std::to_string(i), gnuplot_label(results[i].first), number(100 * ba.mean), number(100 * ba.sd)});
     }
     render_png(png, {d},
                "set title 'Balanced accuracy (mean and standard deviation over runs)'\nset ylabel 'balanced accuracy (%)'\n"
@@ -91,16 +90,16 @@ void plot_balanced_accuracy(const std::vector<std::pair<std::string, nlohmann::j
                "plot $acc using 1:3:xtic(2) with boxes lc rgb '#3b75af', $acc using 1:3:4 with yerrorbars lc rgb 'black' pt -1");
 }
 
-void plot_confusion(const nlohmann::json& result, const std::string& png, const std::string& title) {
-    const std::vector<std::string> classes = result.at("classes");
-    const auto& m = result.at("confusion");
+void plot_confusion(const HarResult& result, const std::string& png, const std::string& title) {
+    const std::vector<std::string>& classes = result.classes;
+    const Confusion m = summed_confusion(result);
     GnuplotData d{"cm", {}};
     std::string xtics;
     for (size_t i = 0; i < classes.size(); ++i) {
         long total = 0;
-        for (const auto& v : m[i]) total += v.get<long>();
+        for (long v : m[i]) total += v;
         for (size_t j = 0; j < classes.size(); ++j)
-            d.rows.push_back({std::to_string(j), std::to_string(i), number(total ? static_cast<double>(m[i][j].get<long>()) / static_cast<double>(total) : 0.0)});
+            d.rows.push_back({std::to_string(j), std::to_string(i), number(total ? static_cast<double>(m[i][j]) / static_cast<double>(total) : 0.0)});
         d.rows.push_back({});  // gnuplot's scan separator
         xtics += std::string(i ? ", " : "") + gnuplot_label(classes[i]) + " " + std::to_string(i);
     }
@@ -109,6 +108,32 @@ void plot_confusion(const nlohmann::json& result, const std::string& png, const 
                "set ytics (" + xtics + ")\nset yrange [] reverse\nset cbrange [0:1]\nset palette defined (0 'white', 1 '#3b75af')\n"
                "set view map\nplot $cm using 1:2:3 with image notitle, $cm using 1:2:(sprintf('%.2f', $3)) with labels notitle",
                760, 680);
+}
+
+void plot_low_data_curve(const LowDataCurve& curve, const std::string& png) {
+    if (curve.labels.empty() || curve.arms.empty()) throw Error(png, "low-data curve", "at least one K and one arm to plot");
+    static const char* colours[] = {"#444444", "#3b75af", "#e1812c", "#3a923a", "#c03d3e", "#9372b2"};
+    std::vector<GnuplotData> data;
+    std::string plot = "plot ";
+    std::string xtics;
+    for (size_t x = 0; x < curve.labels.size(); ++x) xtics += std::string(x ? ", " : "") + gnuplot_label(curve.labels[x]) + " " + std::to_string(x);
+    for (size_t a = 0; a < curve.arms.size(); ++a) {
+        GnuplotData d{"arm" + std::to_string(a), {}};
+        for (size_t x = 0; x < curve.labels.size(); ++x)
+            if (const LowDataPoint* p = curve.arms[a].at(curve.labels[x])) {
+                const ScoreSummary s = p->balanced_accuracy();
+                d.rows.push_back({std::to_string(x), number(100 * s.mean), number(100 * (s.mean - s.sd)), number(100 * (s.mean + s.sd))});
+            }
+        if (d.rows.empty()) continue;
+        const std::string colour = std::string("lc rgb '") + colours[a % 6] + "'";
+        plot += std::string(data.empty() ? "" : ", ") + "$" + d.name + " using 1:3:4 with filledcurves " + colour + " fs transparent solid 0.15 notitle, $" +
+                d.name + " using 1:2 with linespoints lw 2 pt 7 " + colour + " title " + gnuplot_label(curve.arms[a].name);
+        data.push_back(d);
+    }
+    render_png(png, data,
+               "set title " + gnuplot_label("Low-data curve, " + curve.real_set + ": balanced accuracy against real training subjects") +
+                   "\nset xlabel 'K real training subjects'\nset ylabel 'balanced accuracy (%)'\nset xtics (" + xtics +
+                   ")\nset xrange [-0.3:" + std::to_string(curve.labels.size() - 1) + ".3]\nset grid ytics\nset key bottom right\n" + plot);
 }
 
 void plot_signal_stats(const std::vector<ActivityStats>& groups, const std::string& png, const std::string& title) {

@@ -11,6 +11,8 @@
 #include "core/csv.hpp"
 #include "core/error.hpp"
 #include "core/output_path.hpp"
+#include "har/har_result.hpp"
+#include "har/low_data_curve.hpp"
 #include "imu/imu_dataset.hpp"
 #include "report/figures.hpp"
 #include "report/html_page.hpp"
@@ -26,16 +28,16 @@ std::string stem(const fs::path& p) { return p.stem().string(); }
 
 bool has(const CsvTable& t, const char* column) { return t.has_column(column); }
 
-void har_section(const std::vector<std::pair<std::string, nlohmann::json>>& results, Page& page) {
+void har_section(const std::vector<std::pair<std::string, HarResult>>& results, Page& page) {
     if (results.empty()) return;
     page.body += "<h2>Human activity recognition (DeepConvLSTM)</h2>\n<table><tr><th>result</th><th>balanced accuracy (%)</th>"
                  "<th>macro F1 (%)</th><th>runs</th><th>classes</th></tr>\n";
     char buf[256];
     for (const auto& [name, r] : results) {
+        const ScoreSummary ba = score_summary(r, &HarRun::balanced_accuracy), f1 = score_summary(r, &HarRun::macro_f1);
         std::snprintf(buf, sizeof buf, "<tr><td>%s</td><td>%.1f &plusmn; %.1f</td><td>%.1f &plusmn; %.1f</td><td>%zu</td><td>%s</td></tr>\n",
-                      html_escape(name).c_str(), 100 * r["balanced_accuracy"]["mean"].get<double>(), 100 * r["balanced_accuracy"]["sd"].get<double>(),
-                      100 * r["macro_f1"]["mean"].get<double>(), 100 * r["macro_f1"]["sd"].get<double>(), r["balanced_accuracy"]["runs"].size(),
-                      html_escape(nlohmann::json(r["classes"]).dump()).c_str());
+                      html_escape(name).c_str(), 100 * ba.mean, 100 * ba.sd, 100 * f1.mean, 100 * f1.sd, r.runs.size(),
+                      html_escape(nlohmann::json(r.classes).dump()).c_str());
         page.body += buf;
     }
     page.body += "</table>\n";
@@ -44,6 +46,41 @@ void har_section(const std::vector<std::pair<std::string, nlohmann::json>>& resu
     for (const auto& [name, r] : results) {
         plot_confusion(r, page.out_dir + "/confusion_" + name + ".png", "Confusion (recall per true class): " + name);
         page.figure("confusion_" + name + ".png", "Confusion matrix, " + name + " (rows: true class, summed over runs)");
+    }
+}
+
+// Per real set: the curve and its table (mean ± sd over the draws per K and arm, the best synthetic arm's gain).
+void low_data_section(const std::vector<LowDataCurve>& curves, Page& page) {
+    for (const LowDataCurve& c : curves) {
+        page.body += "<h2>Low-data curve: " + html_escape(c.real_set) + "</h2>\n<p>Balanced accuracy (%) with K real training subjects "
+                     "(drawn anew for each draw, tested on the others), mean &plusmn; sd over the draws; K = 0 is synthetic only.</p>\n"
+                     "<table><tr><th>K</th>";
+        for (const LowDataArm& a : c.arms) page.body += "<th>" + html_escape(a.name) + "</th>";
+        page.body += "<th>best synthetic arm &minus; real only</th></tr>\n";
+        char buf[96];
+        for (const std::string& label : c.labels) {
+            page.body += "<tr><td>" + html_escape(label) + "</td>";
+            double best = -1;
+            for (const LowDataArm& a : c.arms) {
+                const LowDataPoint* p = a.at(label);
+                std::string cell;
+                if (p) {
+                    const ScoreSummary s = p->balanced_accuracy();
+                    std::snprintf(buf, sizeof buf, "%.1f &plusmn; %.1f (%zu)", 100 * s.mean, 100 * s.sd, s.runs.size());
+                    cell = buf;
+                    if (&a != &c.arms.front()) best = std::max(best, s.mean);
+                }
+                page.body += "<td>" + cell + "</td>";
+            }
+            const LowDataPoint* real = c.arms.front().at(label);
+            buf[0] = '\0';
+            if (real && best >= 0) std::snprintf(buf, sizeof buf, "%+.1f", 100 * (best - real->balanced_accuracy().mean));
+            page.body += "<td>" + std::string(buf) + "</td></tr>\n";
+        }
+        page.body += "</table>\n";
+        const std::string png = "low_data_" + c.real_set + ".png";
+        plot_low_data_curve(c, page.out_dir + "/" + png);
+        page.figure(png, "Low-data curve, " + c.real_set + ": one line per arm, the band ± one sd over the draws");
     }
 }
 
@@ -57,9 +94,10 @@ std::string synth_title(const fs::path& synth_dir, const std::string& results_di
 // What a results folder holds, found by content (so any layout of t2imu's outputs works): HAR results, domain
 // gaps, synthesis reports, L_acc tables, t-SNE tables and up to three IMU traces.
 struct FoundResults {
-    std::vector<std::pair<std::string, nlohmann::json>> har;
+    std::vector<std::pair<std::string, HarResult>> har;
     std::vector<std::pair<std::string, DomainGap>> gaps;
     std::vector<SynthFolder> synth;
+    std::vector<LowDataCurve> low_data;
     std::vector<std::pair<std::string, CsvTable>> lacc, tsne, traces;
 };
 
@@ -71,8 +109,11 @@ void classify_json(const fs::path& p, const std::string& results_dir, FoundResul
         return;  // not a result of ours
     }
     if (!j.is_object()) return;
-    if (j.contains("balanced_accuracy") && j.contains("confusion")) found->har.push_back({stem(p), j});
-    else if (j.contains("classifier_two_sample_test")) found->gaps.push_back({stem(p), parse_domain_gap(j, p.string())});
+    if (is_har_result(j)) found->har.push_back({stem(p), parse_har_result(j, p.string())});
+    else if (is_low_data_curves(j)) {
+        const std::vector<LowDataCurve> curves = parse_low_data_curves(j, p.string());
+        found->low_data.insert(found->low_data.end(), curves.begin(), curves.end());
+    } else if (j.contains("classifier_two_sample_test")) found->gaps.push_back({stem(p), parse_domain_gap(j, p.string())});
     else if (j.contains("per_activity") && j.contains("motions_kept"))
         found->synth.push_back({p.parent_path().string(), synth_title(p.parent_path(), results_dir), parse_synth_report(j, p.string())});
 }
@@ -170,6 +211,7 @@ ReportSummary write_report(const std::string& results_dir, const std::string& re
     page.out_dir = report_dir;
     const bool compare_real = !real_dir.empty() && !found.synth.empty();
     synth_section(found.synth, compare_real ? read_imu_dataset(real_dir) : std::vector<ImuRecording>{}, real_dir, page);
+    low_data_section(found.low_data, page);
     har_section(found.har, page);
     lacc_section(found.lacc, page);
     tsne_section(found.tsne, page);
@@ -180,6 +222,7 @@ ReportSummary write_report(const std::string& results_dir, const std::string& re
     summary.figures = page.figures;
     summary.synth_reports = static_cast<int>(found.synth.size());
     summary.har_results = static_cast<int>(found.har.size());
+    summary.low_data_curves = static_cast<int>(found.low_data.size());
     summary.lacc_tables = static_cast<int>(found.lacc.size());
     summary.tsne_tables = static_cast<int>(found.tsne.size());
     summary.gap_results = static_cast<int>(found.gaps.size());

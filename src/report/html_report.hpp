@@ -3,7 +3,8 @@
 // the synthetic motions' BVH files point outside it, relative to the report folder).
 //
 // Recognised by content, anywhere under the folder:
-//   HAR results (JSON with balanced_accuracy and confusion)  -> balanced accuracy per result, confusion matrices
+//   HAR results (har/har_result.hpp's JSON, read typed)       -> balanced accuracy per result, confusion matrices
+//   low-data curves (har/low_data_curve.hpp's JSON)           -> accuracy against K real subjects per arm, a table
 //   L_acc analyses (CSV with group, change_percent)          -> L_acc change per category
 //   t-SNE tables (CSV with tsne_x, tsne_y)                    -> scatter by `source` (or the first label column),
 //                                                               and for high-dynamic activities when labelled
@@ -21,7 +22,7 @@
 namespace t2imu {
 
 struct ReportSummary {
-    int figures = 0, synth_reports = 0, har_results = 0, lacc_tables = 0, tsne_tables = 0, gap_results = 0, traces = 0;
+    int figures = 0, synth_reports = 0, har_results = 0, low_data_curves = 0, lacc_tables = 0, tsne_tables = 0, gap_results = 0, traces = 0;
 };
 
 // `real_dir`: a real IMU data set (imu/imu_dataset.hpp layout) to compare the synthetic signals with; "" for none.

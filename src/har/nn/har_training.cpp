@@ -4,13 +4,14 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <nlohmann/json.hpp>
 #include <random>
 #include <set>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
-#include "core/json_file.hpp"
+#include "har/subject_draw.hpp"
 #include "core/progress.hpp"
 #include "har/class_map.hpp"
 #include "har/nn/deepconvlstm.hpp"
@@ -23,6 +24,13 @@ struct Labelled {
     const WindowSet* w;
     std::vector<size_t> index;  // windows used
     std::vector<int> label;     // class per used window
+    std::vector<int> set;       // training set per used window (train_on_sets; 0 otherwise)
+
+    void add(size_t i, int l, int s = 0) {
+        index.push_back(i);
+        label.push_back(l);
+        set.push_back(s);
+    }
 };
 
 struct Normaliser {
@@ -91,43 +99,105 @@ void split_validation(const Labelled& all, double share, uint64_t seed, Labelled
         if (groups.size() < 2) take = 0;
         held_out.insert(groups.begin(), groups.begin() + static_cast<std::ptrdiff_t>(std::min(take, groups.size() - 1)));
     }
-    *fit = Labelled{all.w, {}, {}};
-    *val = Labelled{all.w, {}, {}};
-    for (size_t k = 0; k < all.index.size(); ++k) {
-        Labelled* side = held_out.count(all.w->groups[all.index[k]]) ? val : fit;
-        side->index.push_back(all.index[k]);
-        side->label.push_back(all.label[k]);
-    }
+    *fit = Labelled{all.w, {}, {}, {}};
+    *val = Labelled{all.w, {}, {}, {}};
+    for (size_t k = 0; k < all.index.size(); ++k)
+        (held_out.count(all.w->groups[all.index[k]]) ? val : fit)->add(all.index[k], all.label[k], all.set[k]);
 }
 
-HarRun fit_and_test(const Labelled& train, const Labelled& test, int classes, const HarOptions& o, uint64_t seed) {
-    torch::manual_seed(seed);
-    Labelled fit, val;
-    split_validation(train, o.validation_share, seed, &fit, &val);
-    if (fit.index.empty()) throw Error("har", "training windows", "at least one window per class to train on");
-    const Normaliser norm = fit_normaliser(fit);
-    DeepConvLstm model(train.w->channels, classes);
-    torch::optim::Adam optimiser(model->parameters(), torch::optim::AdamOptions(o.learning_rate));
+// The class weights of the loss: inverse to class frequency in `fit` (0 for a class it lacks).
+torch::Tensor class_weights(const Labelled& fit, int classes) {
     std::vector<double> count(static_cast<size_t>(classes), 0.0);
     for (int l : fit.label) count[static_cast<size_t>(l)] += 1;
     std::vector<float> weight(static_cast<size_t>(classes));
     for (int k = 0; k < classes; ++k)
         weight[static_cast<size_t>(k)] = count[static_cast<size_t>(k)] > 0 ? static_cast<float>(fit.label.size() / (classes * count[static_cast<size_t>(k)])) : 0.f;
-    const torch::Tensor class_weight = torch::tensor(weight);
-    std::mt19937_64 rng(seed);
-    std::vector<size_t> order(fit.index.size());
-    std::iota(order.begin(), order.end(), 0);
-    HarRun run;
+    return torch::tensor(weight);
+}
+
+// Positions into `fit` of one epoch's batches. Without shares: every window once, in an order shuffled per epoch.
+// With shares: subject_draw.hpp's batch_counts, each set's windows taken in its own shuffled order, reshuffled when
+// used up (so an epoch is bounded by the set that runs out first at its share).
+class BatchOrder {
+public:
+    BatchOrder(const Labelled& fit, const std::vector<double>& shares, int batch, uint64_t seed)
+        : shares_(shares), batch_(batch), rng_(seed), order_(fit.index.size()) {
+        std::iota(order_.begin(), order_.end(), 0);
+        if (shares_.empty()) return;
+        pools_.resize(shares_.size());
+        for (size_t k = 0; k < fit.index.size(); ++k) pools_[static_cast<size_t>(fit.set[k])].push_back(k);
+        next_.assign(shares_.size(), 0);
+        for (auto& pool : pools_) std::shuffle(pool.begin(), pool.end(), rng_);
+    }
+
+    std::vector<std::vector<size_t>> epoch() {
+        std::vector<std::vector<size_t>> batches;
+        if (shares_.empty()) {
+            std::shuffle(order_.begin(), order_.end(), rng_);
+            for (size_t start = 0; start < order_.size(); start += static_cast<size_t>(batch_))
+                batches.emplace_back(order_.begin() + static_cast<std::ptrdiff_t>(start),
+                                     order_.begin() + static_cast<std::ptrdiff_t>(std::min(order_.size(), start + static_cast<size_t>(batch_))));
+            return batches;
+        }
+        std::vector<size_t> sizes;
+        for (const auto& pool : pools_) sizes.push_back(pool.size());
+        for (const std::vector<size_t>& counts : batch_counts(shares_, sizes, batch_)) {
+            batches.emplace_back();
+            for (size_t i = 0; i < counts.size(); ++i)
+                for (size_t n = 0; n < counts[i]; ++n) batches.back().push_back(take(i));
+        }
+        return batches;
+    }
+
+private:
+    size_t take(size_t set) {
+        if (next_[set] == pools_[set].size()) {
+            std::shuffle(pools_[set].begin(), pools_[set].end(), rng_);
+            next_[set] = 0;
+        }
+        return pools_[set][next_[set]++];
+    }
+
+    std::vector<double> shares_;
+    int batch_;
+    std::mt19937_64 rng_;
+    std::vector<size_t> order_;
+    std::vector<std::vector<size_t>> pools_;
+    std::vector<size_t> next_;
+};
+
+struct StageSettings {
+    double learning_rate = 1e-3;
+    int max_epochs = 40;
+    std::vector<double> shares;
+    bool start_competes = false;  // the starting state is epoch 0's candidate (fine-tuning)
+};
+
+// Trains `model` on `fit`, early stopping on `val`'s balanced accuracy (patience o.patience), and leaves it at its
+// best epoch. Fills the run's epochs and seconds per epoch.
+void train_stage(DeepConvLstm& model, const Normaliser& norm, const Labelled& fit, const Labelled& val, int classes, const HarOptions& o,
+                 const StageSettings& stage, uint64_t seed, HarRun* run) {
+    torch::optim::Adam optimiser(model->parameters(), torch::optim::AdamOptions(stage.learning_rate));
+    const torch::Tensor class_weight = class_weights(fit, classes);
+    const Labelled& monitor = val.index.empty() ? fit : val;
+    const auto score_now = [&] { return balanced_accuracy(confusion_matrix(monitor.label, predict(model, monitor, norm), classes)); };
+    BatchOrder order(fit, stage.shares, o.batch, seed);
     double best = -1, seconds = 0;
     int since_best = 0;
     std::vector<torch::Tensor> best_state;
-    for (int epoch = 0; epoch < o.max_epochs && since_best < o.patience; ++epoch) {
+    const auto keep_best = [&](double score) {
+        if (score <= best) return ++since_best, void();
+        best = score;
+        since_best = 0;
+        best_state.clear();
+        for (const torch::Tensor& p : model->parameters()) best_state.push_back(p.detach().clone());
+    };
+    if (stage.start_competes) keep_best(score_now());
+    run->epochs = 0;
+    for (int epoch = 0; epoch < stage.max_epochs && since_best < o.patience; ++epoch) {
         const auto t0 = std::chrono::steady_clock::now();
         model->train();
-        std::shuffle(order.begin(), order.end(), rng);
-        for (size_t start = 0; start < order.size(); start += static_cast<size_t>(o.batch)) {
-            std::vector<size_t> which(order.begin() + static_cast<std::ptrdiff_t>(start),
-                                      order.begin() + static_cast<std::ptrdiff_t>(std::min(order.size(), start + static_cast<size_t>(o.batch))));
+        for (const std::vector<size_t>& which : order.epoch()) {
             std::vector<int64_t> y;
             for (size_t i : which) y.push_back(fit.label[i]);
             optimiser.zero_grad();
@@ -138,29 +208,49 @@ HarRun fit_and_test(const Labelled& train, const Labelled& test, int classes, co
             optimiser.step();
         }
         seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        ++run.epochs;
-        const Labelled& monitor = val.index.empty() ? fit : val;
-        const double score = balanced_accuracy(confusion_matrix(monitor.label, predict(model, monitor, norm), classes));
+        ++run->epochs;
+        const double score = score_now();
         if (o.verbose) std::fprintf(stderr, "  epoch %d: validation balanced accuracy %.4f\n", epoch + 1, score);
-        if (score > best) {
-            best = score;
-            since_best = 0;
-            best_state.clear();
-            for (const torch::Tensor& p : model->parameters()) best_state.push_back(p.detach().clone());
-        } else {
-            ++since_best;
-        }
+        keep_best(score);
     }
-    {
+    if (!best_state.empty()) {
         torch::NoGradGuard no_grad;
         const auto params = model->parameters();
         for (size_t i = 0; i < params.size(); ++i) params[i].copy_(best_state[i]);
     }
-    run.seconds_per_epoch = seconds / std::max(run.epochs, 1);
-    run.confusion = confusion_matrix(test.label, predict(model, test, norm), classes);
-    run.balanced_accuracy = balanced_accuracy(run.confusion);
-    run.macro_f1 = macro_f1(run.confusion);
-    return run;
+    run->seconds_per_epoch = seconds / std::max(run->epochs, 1);
+}
+
+void score_test(DeepConvLstm& model, const Normaliser& norm, const Labelled& test, int classes, HarRun* run) {
+    run->confusion = confusion_matrix(test.label, predict(model, test, norm), classes);
+    run->balanced_accuracy = balanced_accuracy(run->confusion);
+    run->macro_f1 = macro_f1(run->confusion);
+}
+
+// A network trained from scratch: its normalisation and its state at the best validation epoch.
+struct TrainedNet {
+    DeepConvLstm model{nullptr};
+    Normaliser norm;
+    HarRun run;
+};
+
+// From scratch with `seed`: the validation trials are split off `fit` unless `val` is given (several sets).
+TrainedNet train_from_scratch(const Labelled& train, const Labelled* val_given, int classes, const HarOptions& o,
+                              const std::vector<double>& shares, uint64_t seed) {
+    torch::manual_seed(seed);
+    Labelled fit, val;
+    if (val_given) fit = train, val = *val_given;
+    else split_validation(train, o.validation_share, seed, &fit, &val);
+    if (fit.index.empty()) throw Error("har", "training windows", "at least one window per class to train on");
+    TrainedNet net{DeepConvLstm(train.w->channels, classes), fit_normaliser(fit), {}};
+    train_stage(net.model, net.norm, fit, val, classes, o, {o.learning_rate, o.max_epochs, shares, false}, seed, &net.run);
+    return net;
+}
+
+HarRun fit_and_test(const Labelled& train, const Labelled& test, int classes, const HarOptions& o, uint64_t seed) {
+    TrainedNet net = train_from_scratch(train, nullptr, classes, o, {}, seed);
+    score_test(net.model, net.norm, test, classes, &net.run);
+    return net.run;
 }
 
 // Class names of each side after the per-data-set maps and the coarsening rule; the shared ones, sorted.
@@ -178,13 +268,11 @@ std::vector<std::string> shared_classes(const WindowSet& a, const WindowSet& b, 
 // The windows whose class is one of `classes`; with `held_out`, only those of (or, with exclude, not of) those subjects.
 Labelled labelled(const WindowSet& w, const std::vector<std::string>& classes, const std::map<std::string, std::string>& rename,
                   const std::set<std::string>* held_out = nullptr, bool exclude = false) {
-    Labelled d{&w, {}, {}};
+    Labelled d{&w, {}, {}, {}};
     for (size_t i = 0; i < w.size(); ++i) {
         if (held_out && (held_out->count(w.subjects[i]) > 0) == exclude) continue;
         const auto it = std::find(classes.begin(), classes.end(), rename.at(w.labels[i]));
-        if (it == classes.end()) continue;
-        d.index.push_back(i);
-        d.label.push_back(static_cast<int>(it - classes.begin()));
+        if (it != classes.end()) d.add(i, static_cast<int>(it - classes.begin()));
     }
     return d;
 }
@@ -250,96 +338,207 @@ HarResult leave_one_subject_out(const WindowSet& data, const HarOptions& o, int 
     return r;
 }
 
-ScoreSummary score_summary(const HarResult& r, double HarRun::*score) {
-    ScoreSummary s;
-    for (const HarRun& run : r.runs) s.runs.push_back(run.*score);
-    double var = 0;
-    for (double x : s.runs) s.mean += x / static_cast<double>(s.runs.size());
-    for (double x : s.runs) var += (x - s.mean) * (x - s.mean);
-    s.sd = s.runs.size() > 1 ? std::sqrt(var / static_cast<double>(s.runs.size() - 1)) : 0.0;
+HarProtocol parse_har_protocol(const std::string& name, const std::string& option) {
+    if (name == "mix") return HarProtocol::mix;
+    if (name == "finetune") return HarProtocol::finetune;
+    throw Error(option, name, "mix or finetune");
+}
+
+const char* har_protocol_name(HarProtocol protocol) { return protocol == HarProtocol::mix ? "mix" : "finetune"; }
+
+void SeveralSetsOptions::validate(size_t sets, int batch) const {
+    if (sets < 1) throw Error("har run", "--train", "at least one training set");
+    check_shares(shares, sets, batch, "--train-share");
+    if (test_set >= static_cast<int>(sets)) throw Error("har", "test_set", "one of the " + std::to_string(sets) + " training sets");
+    if (test_set < 0 && train_subjects != 0)
+        throw Error("--train-subjects", std::to_string(train_subjects), "a --train that is also the --test set to draw the subjects from");
+    if (protocol == HarProtocol::finetune) {
+        if (test_set < 0 || sets < 2)
+            throw Error("--protocol", "finetune", "a set to pretrain on and a --train that is also --test, with --train-subjects to fine-tune on");
+        if (!shares.empty()) throw Error("--train-share", "finetune", "--protocol mix (fine-tuning trains on one set)");
+    }
+    if (finetune_epochs < 0) throw Error("--finetune-epochs", std::to_string(finetune_epochs), "0 or more epochs");
+    if (!(finetune_learning_rate > 0 && std::isfinite(finetune_learning_rate)))
+        throw Error("--finetune-lr", std::to_string(finetune_learning_rate), "a positive learning rate");
+}
+
+namespace {
+
+// The training sets' windows side by side, labels renamed to the evaluation's classes (class_map.hpp's coarsening
+// against the test set; where the test set's labels coarsen against any set, every side uses the coarse name),
+// groups prefixed by the set's index so trials of two sets never merge.
+struct SetsWindows {
+    WindowSet all;
+    std::vector<int> set_of;               // per window of `all`
+    std::vector<std::string> classes;      // those the test set and every training set hold, sorted
+    std::map<std::string, std::string> rename_test;
+};
+
+SetsWindows sets_windows(const std::vector<TrainingSet>& train, const WindowSet& test) {
+    SetsWindows s;
+    const std::set<std::string> lt(test.labels.begin(), test.labels.end());
+    std::vector<std::set<std::string>> li;
+    for (const TrainingSet& t : train) li.emplace_back(t.windows->labels.begin(), t.windows->labels.end());
+    for (const std::string& l : lt) {
+        s.rename_test[l] = l;
+        for (const std::set<std::string>& other : li)
+            if (coarsen_for(l, lt, other) != l) s.rename_test[l] = coarsen_for(l, lt, other);
+    }
+    std::set<std::string> shared;
+    for (const auto& [l, c] : s.rename_test) shared.insert(c);
+    s.all.length = test.length, s.all.channels = test.channels;
+    for (size_t i = 0; i < train.size(); ++i) {
+        const WindowSet& w = *train[i].windows;
+        if (w.channels != test.channels || w.length != test.length)
+            throw Error(train[i].name, "windows", "the test set's channels and length", std::to_string(w.channels) + " channels");
+        std::map<std::string, std::string> rename;
+        std::set<std::string> mine;
+        for (const std::string& l : li[i]) {
+            std::string c = coarsen_for(l, li[i], lt);
+            if (s.rename_test.count(c)) c = s.rename_test[c];
+            mine.insert(rename[l] = c);
+        }
+        std::set<std::string> keep;
+        std::set_intersection(shared.begin(), shared.end(), mine.begin(), mine.end(), std::inserter(keep, keep.end()));
+        shared = keep;
+        s.all.data.insert(s.all.data.end(), w.data.begin(), w.data.end());
+        for (size_t j = 0; j < w.size(); ++j) {
+            s.all.labels.push_back(rename[w.labels[j]]);
+            s.all.subjects.push_back(w.subjects[j]);
+            s.all.groups.push_back(std::to_string(i) + ":" + w.groups[j]);
+            s.set_of.push_back(static_cast<int>(i));
+        }
+    }
+    s.classes.assign(shared.begin(), shared.end());
+    if (s.classes.size() < 2) throw Error("har", "classes", "at least two classes every data set has", std::to_string(s.classes.size()));
     return s;
 }
 
-nlohmann::json score_summary_json(const ScoreSummary& s) { return {{"mean", s.mean}, {"sd", s.sd}, {"runs", s.runs}}; }
-
-std::string har_result_json(const HarResult& r, const std::string& description) {
-    const auto summary = [&](double HarRun::*score) { return score_summary_json(score_summary(r, score)); };
-    const size_t K = r.classes.size();
-    Confusion total(K, std::vector<long>(K, 0));
-    std::vector<double> recall(K, 0.0);
-    std::vector<int> recall_n(K, 0);
-    double epochs = 0, seconds = 0;
-    for (const HarRun& run : r.runs) {
-        const std::vector<double> rc = per_class_recall(run.confusion);
-        for (size_t i = 0; i < K; ++i) {
-            for (size_t j = 0; j < K; ++j) total[i][j] += run.confusion[i][j];
-            if (!std::isnan(rc[i])) recall[i] += rc[i], ++recall_n[i];
-        }
-        epochs += run.epochs;
-        seconds += run.seconds_per_epoch * run.epochs;
+// The windows of `s` whose set and subject `take` accepts, with their class.
+template <class Take>
+Labelled pick_windows(const SetsWindows& s, const Take& take) {
+    Labelled d{&s.all, {}, {}, {}};
+    for (size_t i = 0; i < s.all.size(); ++i) {
+        const auto it = std::find(s.classes.begin(), s.classes.end(), s.all.labels[i]);
+        if (it != s.classes.end() && take(s.set_of[i], s.all.subjects[i])) d.add(i, static_cast<int>(it - s.classes.begin()), s.set_of[i]);
     }
-    nlohmann::json per_class, records = nlohmann::json::array();
-    for (size_t k = 0; k < r.runs.size(); ++k) {
-        const HarRun& run = r.runs[k];
-        records.push_back({{"name", k < r.run_names.size() ? r.run_names[k] : ""}, {"balanced_accuracy", run.balanced_accuracy},
-                           {"macro_f1", run.macro_f1}, {"epochs", run.epochs}, {"seconds_per_epoch", run.seconds_per_epoch},
-                           {"confusion", run.confusion}});
-    }
-    for (size_t i = 0; i < K; ++i) per_class[r.classes[i]] = recall_n[i] ? nlohmann::json(recall[i] / recall_n[i]) : nlohmann::json(nullptr);
-    nlohmann::json j = {{"description", description}, {"classes", r.classes}, {"balanced_accuracy", summary(&HarRun::balanced_accuracy)},
-                        {"macro_f1", summary(&HarRun::macro_f1)}, {"per_class_recall", per_class}, {"confusion", total},
-                        {"run_names", r.run_names}, {"train_windows", r.train_windows}, {"test_windows", r.test_windows},
-                        {"epochs_total", epochs}, {"seconds_per_epoch", epochs > 0 ? seconds / epochs : 0.0},
-                        {"run_records", records}};
-    return j.dump(2) + "\n";
+    return d;
 }
 
-HarResult read_har_result(const std::string& path) {
-    const nlohmann::json j = read_json_file(path);
+Labelled joined_windows(const Labelled& a, const Labelled& b) {
+    Labelled d = a;
+    for (size_t k = 0; k < b.index.size(); ++k) d.add(b.index[k], b.label[k], b.set[k]);
+    return d;
+}
+
+std::vector<size_t> windows_per_set(const Labelled& d, size_t sets) {
+    std::vector<size_t> n(sets, 0);
+    for (int s : d.set) ++n[static_cast<size_t>(s)];
+    return n;
+}
+
+}  // namespace
+
+struct HarPretrained::State {
+    TrainedNet net;
+    std::vector<std::string> sets, classes;
+    uint64_t seed = 0;
+};
+HarPretrained::HarPretrained() = default;
+HarPretrained::~HarPretrained() = default;
+
+namespace {
+
+// The pretrained network of `names` at `seed`: the one `keep` holds, or trained now (and kept there).
+const TrainedNet& pretrained_net(const Labelled& others, const std::vector<std::string>& names, const std::vector<std::string>& classes,
+                                 const HarOptions& o, HarPretrained* keep, TrainedNet* local) {
+    if (keep && keep->state) {
+        if (keep->state->sets != names || keep->state->classes != classes || keep->state->seed != o.seed)
+            throw Error("har", "pretrained", "a network pretrained on the same sets, classes and seed");
+        return keep->state->net;
+    }
+    *local = train_from_scratch(others, nullptr, static_cast<int>(classes.size()), o, {}, o.seed);
+    if (!keep) return *local;
+    keep->state = std::make_unique<HarPretrained::State>(HarPretrained::State{*local, names, classes, o.seed});
+    return keep->state->net;
+}
+
+}  // namespace
+
+HarResult train_on_sets(const std::vector<TrainingSet>& train, const WindowSet& test, const HarOptions& o, const SeveralSetsOptions& m,
+                        HarPretrained* keep) {
+    o.validate();
+    m.validate(train.size(), o.batch);
+    if (m.test_set >= 0 && train[static_cast<size_t>(m.test_set)].windows != &test)
+        throw Error("har", "test_set", "the training set that is also the test set");
+    std::vector<std::vector<std::string>> subjects;
+    std::vector<std::string> names;
+    for (const TrainingSet& t : train) subjects.push_back(t.windows->subjects), names.push_back(t.name);
+    check_subject_split(subjects, names, test.subjects, m.test_set, m.train_subjects);
+    const SetsWindows s = sets_windows(train, test);
+    const int classes = static_cast<int>(s.classes.size());
     HarResult r;
-    for (const nlohmann::json& c : json_array(j, "classes", path)) {
-        if (!c.is_string()) throw Error(path, "classes", "class names", c.dump());
-        r.classes.push_back(c.get<std::string>());
-    }
-    r.train_windows = j.contains("train_windows") ? json_count(j, "train_windows", path) : 0;
-    r.test_windows = j.contains("test_windows") ? json_count(j, "test_windows", path) : 0;
-    const nlohmann::json& records = json_array(j, "run_records", path);
-    for (size_t k = 0; k < records.size(); ++k) {
-        const std::string where = "run_records." + std::to_string(k);
+    r.classes = s.classes;
+    for (const TrainingSet& t : train) r.training_sets.push_back(t.name);
+    r.shares = m.shares;
+    r.protocol = har_protocol_name(m.protocol);
+    if (m.protocol == HarProtocol::finetune) r.finetune_epochs = m.finetune_epochs, r.finetune_learning_rate = m.finetune_learning_rate;
+    std::vector<std::vector<std::string>> draws(static_cast<size_t>(o.repeats));  // drawn now: a refusal comes before any training
+    if (m.test_set >= 0)
+        for (int k = 0; k < o.repeats; ++k) draws[static_cast<size_t>(k)] = draw_subjects(test.subjects, m.train_subjects, o.seed, k);
+    const Labelled others = pick_windows(s, [&](int set, const std::string&) { return set != m.test_set; });
+    TrainedNet local;
+    const TrainedNet* pretrained = nullptr;
+    if (m.protocol == HarProtocol::finetune) pretrained = &pretrained_net(others, r.training_sets, s.classes, o, keep, &local);
+    Progress progress("HAR", static_cast<size_t>(o.repeats), "trainings");
+    for (int k = 0; k < o.repeats; ++k) {
+        const uint64_t seed = o.seed + static_cast<uint64_t>(k);
         HarRun run;
-        run.balanced_accuracy = json_number(records[k], "balanced_accuracy", path, where);
-        run.macro_f1 = json_number(records[k], "macro_f1", path, where);
-        run.epochs = static_cast<int>(json_count(records[k], "epochs", path, where));
-        run.seconds_per_epoch = json_number(records[k], "seconds_per_epoch", path, where);
-        for (const nlohmann::json& row : json_array(records[k], "confusion", path, where)) {
-            if (!row.is_array() || row.size() != r.classes.size()) throw Error(path, where + ".confusion", std::to_string(r.classes.size()) + " counts per row");
-            run.confusion.emplace_back();
-            for (const nlohmann::json& n : row) {
-                if (!n.is_number_integer() || n.get<long>() < 0) throw Error(path, where + ".confusion", "whole counts from 0", n.dump());
-                run.confusion.back().push_back(n.get<long>());
+        std::set<std::string> drawn;
+        if (m.test_set >= 0) {
+            run.train_subjects = draws[static_cast<size_t>(k)];
+            drawn.insert(run.train_subjects.begin(), run.train_subjects.end());
+            for (const std::string& subject : std::set<std::string>(test.subjects.begin(), test.subjects.end()))
+                if (!drawn.count(subject)) run.test_subjects.push_back(subject);
+        }
+        const Labelled real = pick_windows(s, [&](int set, const std::string& subject) { return set == m.test_set && drawn.count(subject); });
+        Labelled real_fit, real_val;
+        split_validation(real, o.validation_share, seed, &real_fit, &real_val);
+        const std::vector<size_t> per_set = windows_per_set(joined_windows(others, real), train.size());
+        for (size_t i = 0; i < m.shares.size(); ++i)
+            if (per_set[i] == 0) throw Error("--train-share", train[i].name, "windows of every set that has a share (this draw has none)");
+        TrainedNet net;
+        if (m.protocol == HarProtocol::finetune) {
+            torch::manual_seed(seed);
+            net = TrainedNet{DeepConvLstm(test.channels, classes), pretrained->norm, pretrained->run};
+            {
+                torch::NoGradGuard no_grad;
+                const auto to = net.model->parameters(), from = pretrained->model->parameters();
+                for (size_t i = 0; i < to.size(); ++i) to[i].copy_(from[i]);
             }
+            if (m.finetune_epochs > 0 && !real_fit.index.empty())
+                train_stage(net.model, net.norm, real_fit, real_val, classes, o, {m.finetune_learning_rate, m.finetune_epochs, {}, true}, seed, &net.run);
+        } else if (!real.index.empty()) {
+            net = train_from_scratch(joined_windows(others, real_fit), &real_val, classes, o, m.shares, seed);
+        } else {
+            net = train_from_scratch(others, nullptr, classes, o, m.shares, seed);
         }
-        if (run.confusion.size() != r.classes.size()) throw Error(path, where + ".confusion", std::to_string(r.classes.size()) + " rows, one per class");
-        r.runs.push_back(run);
-        r.run_names.push_back(json_string(records[k], "name", path, where));
+        Labelled te{&test, {}, {}, {}};
+        for (size_t i = 0; i < test.size(); ++i) {
+            const auto it = std::find(s.classes.begin(), s.classes.end(), s.rename_test.at(test.labels[i]));
+            if (it != s.classes.end() && !drawn.count(test.subjects[i])) te.add(i, static_cast<int>(it - s.classes.begin()));
+        }
+        score_test(net.model, net.norm, te, classes, &net.run);
+        net.run.train_subjects = run.train_subjects, net.run.test_subjects = run.test_subjects;
+        net.run.set_windows = per_set;
+        r.train_windows += others.index.size() + real.index.size();
+        r.test_windows += te.index.size();
+        r.runs.push_back(net.run);
+        r.run_names.push_back((m.test_set >= 0 ? "draw " + std::to_string(k) + ", " : "") + "seed " + std::to_string(seed));
+        progress.advance();
     }
+    if (m.test_set < 0) r.train_windows /= static_cast<size_t>(o.repeats), r.test_windows /= static_cast<size_t>(o.repeats);
     return r;
-}
-
-HarResult merge_har_results(const std::vector<HarResult>& parts) {
-    HarResult all;
-    for (const HarResult& p : parts) {
-        if (&p == &parts.front()) {
-            all.classes = p.classes;
-            all.train_windows = p.train_windows;
-            all.test_windows = p.test_windows;
-        } else if (p.classes != all.classes || p.train_windows != all.train_windows || p.test_windows != all.test_windows) {
-            throw Error("har results", "classes", "the same classes and windows in every part");
-        }
-        all.runs.insert(all.runs.end(), p.runs.begin(), p.runs.end());
-        all.run_names.insert(all.run_names.end(), p.run_names.begin(), p.run_names.end());
-    }
-    return all;
 }
 
 }  // namespace t2imu

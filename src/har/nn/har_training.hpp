@@ -7,13 +7,16 @@
 // (weights inverse to class frequency) so a rare class counts as much as a frequent one; Adam, learning rate
 // 1e-3, batch 64. Adam rather than the paper's RMSProp: the same per-parameter step scaling plus momentum,
 // and the default of HAR re-implementations; the choice changes results by less than run-to-run variation.
+// Several training sets (train_on_sets): one normalisation over all of them; the validation trials come from the set
+// that is also the test set where there is one (the target domain), so the other sets train in full.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
-#include "har/har_metrics.hpp"
+#include "har/har_result.hpp"
 #include "har/windowing.hpp"
 
 namespace t2imu {
@@ -29,20 +32,6 @@ struct HarOptions {
     void validate() const;
 };
 
-struct HarRun {
-    double balanced_accuracy = 0, macro_f1 = 0;
-    int epochs = 0;
-    double seconds_per_epoch = 0;
-    Confusion confusion;
-};
-
-struct HarResult {
-    std::vector<std::string> classes;
-    std::vector<HarRun> runs;
-    std::vector<std::string> run_names;  // "seed 3" or the held-out subject
-    size_t train_windows = 0, test_windows = 0;
-};
-
 // The classes both sets share (class_map.hpp rules), then `repeats` trainings with seeds seed, seed+1, ...
 HarResult train_and_test(const WindowSet& train, const WindowSet& test, const HarOptions& options);
 // One fold per subject: train on the others, test on that subject (each fold trained once). With folds > 0,
@@ -50,21 +39,45 @@ HarResult train_and_test(const WindowSet& train, const WindowSet& test, const Ha
 // data sets with many subjects where one training per subject costs too much.
 HarResult leave_one_subject_out(const WindowSet& data, const HarOptions& options, int folds = 0);
 
-// One score over a result's runs: mean, sample sd (n - 1; 0 for one run) and the runs themselves.
-struct ScoreSummary {
-    double mean = 0, sd = 0;
-    std::vector<double> runs;
-};
-ScoreSummary score_summary(const HarResult& r, double HarRun::*score);
-nlohmann::json score_summary_json(const ScoreSummary& s);  // {mean, sd, runs}
+// Training on several sets (synthetic and a few real subjects): mix trains once on all of them together; finetune
+// trains on every set but the one that is also the test set (seed --seed, once for all repeats), then goes on training
+// on that set's drawn subjects with its own learning rate and at most `finetune_epochs` (early stopping; the
+// pretrained state competes as epoch 0). Zero fine-tuning epochs is plain training on the other sets.
+enum class HarProtocol { mix, finetune };
+HarProtocol parse_har_protocol(const std::string& name, const std::string& option);  // "mix" or "finetune"
+const char* har_protocol_name(HarProtocol protocol);
 
-// RESULT.json: classes, balanced_accuracy {mean, sd, runs}, macro_f1 {...}, per_class_recall (mean over runs),
-// confusion (summed over runs, rows = true class), plus counts and timings, and `run_records`: each run's name,
-// scores, epochs and its own confusion, so results of separate runs can be read back and merged.
-std::string har_result_json(const HarResult& r, const std::string& description);
-// The HarResult a har_result_json document holds (its run_records); throws Error naming `path` when it has none.
-HarResult read_har_result(const std::string& path);
-// The runs of several results over the same classes and data, in order (e.g. one file per seed).
-HarResult merge_har_results(const std::vector<HarResult>& parts);
+struct TrainingSet {
+    const WindowSet* windows = nullptr;
+    std::string name;  // its dataset folder, as the result records it
+};
+
+struct SeveralSetsOptions {
+    HarProtocol protocol = HarProtocol::mix;
+    std::vector<double> shares;  // of each batch, one per training set (empty: in proportion to their windows)
+    int test_set = -1;           // the training set that is also the test set (its subjects are drawn); -1: none
+    int train_subjects = 0;      // with test_set: subjects drawn from it for each repeat (seed --seed, the repeat)
+    int finetune_epochs = 20;
+    double finetune_learning_rate = 3e-4;
+
+    // Throws Error naming the option (--train-share, --protocol, --finetune-epochs, ...) for a bad combination.
+    void validate(size_t sets, int batch) const;
+};
+
+// The finetune protocol's pretrained network, kept between calls (another number of subjects) so the other sets
+// are trained on once; it remembers its sets and seed and is refused for others.
+class HarPretrained {
+public:
+    HarPretrained();
+    ~HarPretrained();
+    struct State;
+    std::unique_ptr<State> state;
+};
+
+// `repeats` trainings (seeds seed, seed+1, ...), each with its own draw of subjects when test_set >= 0; the test is
+// `test` (with test_set: the same WindowSet as that training set) less the drawn subjects. Classes: those the test
+// set and every training set share. Refuses a subject that is both trained and tested on.
+HarResult train_on_sets(const std::vector<TrainingSet>& train, const WindowSet& test, const HarOptions& options,
+                        const SeveralSetsOptions& sets, HarPretrained* pretrained = nullptr);
 
 }  // namespace t2imu
