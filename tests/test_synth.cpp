@@ -111,6 +111,34 @@ TEST(Synth, WritesAnImuDatasetWithItsMotions) {
     EXPECT_TRUE(fs::exists(out + "/motions/j00003.bvh"));
 }
 
+TEST(Synth, APromptTheCaptionsDoNotCoverIsRecordedAndOnRequestRefusedBeforeAnyOutput) {
+    // The tiny model's captions are walking ones ("a person walks forward slowly"): ironing is an activity they lack.
+    const std::string dir = test::scratch_dir("synth_coverage");
+    SynthOptions o = tiny_options(dir + "/out");
+    o.prompts = dir + "/prompts.tsv";
+    o.samples_per_prompt = 1;
+    std::ofstream(o.prompts) << "walking\ta person walks forward slowly\nironing\tsomeone irons a shirt\n";
+    run_synth(o);
+    const std::vector<JobMarker> markers = read_job_markers(o.out);
+    ASSERT_EQ(markers.size(), 2u);
+    ASSERT_TRUE(markers[0].coverage && markers[1].coverage);
+    EXPECT_TRUE(markers[0].coverage->covered);
+    EXPECT_EQ(markers[0].coverage->nearest.front(), "a person walks forward slowly");
+    EXPECT_FALSE(markers[1].coverage->covered);
+    EXPECT_EQ(markers[1].coverage->summary, "activity 'ironing' has no training captions");
+    SynthOptions strict = o;
+    strict.out = dir + "/strict";
+    strict.require_coverage = true;
+    try {
+        run_synth(strict);
+        ADD_FAILURE() << "an uncovered prompt was accepted with require_coverage";
+    } catch (const Error& e) {
+        EXPECT_TRUE(test::contains(e.what(), "prompt 2")) << e.what();
+        EXPECT_TRUE(test::contains(e.what(), "--require-coverage")) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(strict.out));
+}
+
 TEST(Synth, ResumeRedoesOnlyUnfinishedJobs) {
     const std::string out = test::scratch_dir("synth_resume");
     run_synth(tiny_options(out));

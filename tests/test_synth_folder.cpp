@@ -13,11 +13,14 @@ using nlohmann::json;
 
 namespace {
 
-// A marker as t2imu synth writes one for a kept job with an activity check, a retrieval draw and the capture rate.
+// A marker as t2imu synth writes one for a kept job with an activity check, a retrieval draw, the capture rate and
+// a prompt the source's captions do not cover.
 const char* kMarker = R"({
  "activity": "walking",
  "activity_check": {"agreement": 0.8, "passed": true, "shown": "walking"},
  "attempts": [{"activity_agreement": 0.3, "failures": ["activity"], "seed": 7}, {"activity_agreement": 0.8, "failures": [], "seed": 1007}],
+ "coverage": {"covered": false, "nearest": ["a person walks forward"], "similarity": [0.75], "summary": "the training captions of 'walking' never name: pace_slow",
+              "uncovered": ["pace_slow"]},
  "frames": 120,
  "index": 7,
  "job": "j00007",
@@ -49,6 +52,10 @@ TEST(SynthFolder, AJobMarkerReadsBackAsWrittenToTheByte) {
     ASSERT_TRUE(m.motions && m.activity_check && m.sensor_motion_fps);
     EXPECT_EQ(m.motions->at(1).path, "motions/j00007.bvh");
     EXPECT_EQ(m.activity_check->shown, "walking");
+    ASSERT_TRUE(m.coverage);
+    EXPECT_FALSE(m.coverage->covered);
+    EXPECT_EQ(m.coverage->uncovered, (std::vector<std::string>{"pace_slow"}));
+    EXPECT_EQ(m.coverage->similarity, (std::vector<double>{0.75}));
     EXPECT_EQ(job_marker_json(m).dump(1), doc.dump(1));
     // Through a folder: jobs/<job>.json, and read_job_markers in job order.
     const std::string dir = test::scratch_dir("synth_folder");
@@ -86,6 +93,7 @@ TEST(SynthFolder, AnOlderMarkerReadsWithTheStatedDefaults) {
     EXPECT_EQ(m.frames, -1);
     EXPECT_EQ(m.recordings[0].bytes, -1);
     EXPECT_EQ(m.recordings[0].tempo, 1);
+    EXPECT_FALSE(m.coverage);  // recorded since prompts are checked against the source's captions
     EXPECT_EQ(m.recordings[0].mount_tilt_deg, 0);
     EXPECT_FALSE(m.motions || m.activity_check || m.sensor_motion_fps);
     EXPECT_TRUE(m.source_draw.is_null());

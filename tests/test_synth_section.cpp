@@ -52,6 +52,9 @@ TEST(SynthSection, CountsAndKeptMotionsWithoutAManifest) {
     // j00001 was kept on its second draw; its first failed a quality check ("activity" is not a quality failure).
     EXPECT_TRUE(test::contains(h, "quality: passed (draw 2 of 2)</span> &middot; activity check: shows walking, agreement 0.40, below the minimum")) << h;
     EXPECT_TRUE(test::contains(h, "<a class=\"bvh\" href=\"../synth/motions/j00000.bvh\">j00000.bvh</a>")) << h;
+    // What each kept motion measurably does: the fixture's walk travels 1 m/s along +Z, its start facing.
+    EXPECT_EQ(occurrences(h, "<p class=\"outcome\">measured: 1.00 m/s, "), 2u) << h;
+    EXPECT_TRUE(test::contains(h, "travels forward")) << h;
     EXPECT_FALSE(test::contains(h, "Signal statistics"));
     EXPECT_EQ(page.figures, 0);
 }

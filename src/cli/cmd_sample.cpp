@@ -15,6 +15,7 @@
 #include "diffusion/text_to_motion.hpp"
 #include "motion/activity_names.hpp"
 #include "motion/humanml3d.hpp"
+#include "text/prompt_coverage.hpp"
 #include "text/prompt_set.hpp"
 
 namespace t2imu::cli {
@@ -23,6 +24,7 @@ namespace {
 
 struct SampleArgs {
     std::string model, prompt, prompts, out;
+    bool require_coverage = false;
     double seconds = 0;  // 0: not given (then frames, then SampleOptions' default length)
     int frames = 0;
     SampleOptions options;
@@ -41,6 +43,8 @@ void run(SampleArgs a) {
     const std::vector<Prompt> prompts = a.prompt.empty() ? read_prompt_set(a.prompts) : std::vector<Prompt>{{"", a.prompt}};
     std::unique_ptr<MotionModel> model = load_motion_model(a.model, global_options().device);
     const double anchor_weight = model->caption_anchor_weight(a.options.caption_anchor);
+    std::vector<PromptCoverage> coverage;
+    if (model->anchor.index) coverage = check_prompts_covered(*model->anchor.index, prompts, a.prompts.empty() ? "--prompt" : a.prompts, a.require_coverage);
     std::vector<std::string> texts;
     for (const Prompt& p : prompts) {
         texts.push_back(p.text);
@@ -59,6 +63,7 @@ void run(SampleArgs a) {
     for (size_t i = 0; i < motions.size(); ++i) {
         std::snprintf(name, sizeof name, "%04zu", i);
         record["samples"].push_back({{"id", name}, {"prompt", prompts[i].text}, {"activity", prompts[i].activity}, {"activity_asked", a.options.activities[i]}, {"seed", a.options.seed + i}});
+        if (!coverage.empty()) record["samples"].back()["coverage"] = coverage[i].summary();
     }
     // Serialised before the motions are written: samples.json is what says the folder is complete.
     const std::string samples_json = record.dump(2) + "\n";
@@ -112,6 +117,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
                                      "weight 0..1 of the training captions nearest the prompt in its text feature (default: the model folder's; 0 = the prompt alone)");
     cmd->add_option("--eta", a.options.eta, "ddim noise (0 = deterministic)");
     cmd->add_option("--seed", a.options.seed, "seed of sample 0; sample i uses seed + i");
+    cmd->add_flag("--require-coverage", a.require_coverage, "refuse a prompt the model's training captions do not cover (default: warn)");
     cmd->add_option("--batch", a.options.batch, "prompts per batch (does not change the samples)");
     cmd->add_option("--out", a.out, "output folder")->required();
     cmd->callback([] { run(a); });

@@ -86,6 +86,8 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--min-activity-agreement", o.min_activity_agreement, "activity check threshold, 0..1");
     cmd->add_flag("--drop-activity-failures", o.drop_activity_failures,
                   "drop a motion whose every draw fails the activity check (default: keep its best-agreeing draw)");
+    cmd->add_flag("--require-coverage", o.require_coverage,
+                  "refuse a prompt the source's training captions do not cover: an unknown activity or an attribute none names (default: warn)");
     cmd->add_option("--retries", o.max_retries, "draws after the first for a motion the filter rejects");
     cmd->add_option("--shard", a.shard, "I/N: run the I-th of N contiguous blocks of jobs (default 1/1)");
     cmd->add_option("--out", o.out, "output folder (resumed when it holds the same synthesis)")->required();

@@ -1,15 +1,17 @@
-// t2imu text vocab | similarity | nearest: the default text encoder's word vectors, caption similarity, and how
-// near a prompt set's wording comes to a caption corpus.
+// t2imu text vocab | similarity | nearest | coverage: the default text encoder's word vectors, caption similarity,
+// how near a prompt set's wording comes to a caption corpus, and what a model's training captions cover.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
 #include "cli/command.hpp"
 #include "cli/usage.hpp"
+#include "core/atomic_file.hpp"
 #include "core/csv.hpp"
 #include "core/error.hpp"
 #include "core/output_path.hpp"
 #include "data/captions.hpp"
+#include "text/prompt_coverage.hpp"
 #include "text/prompt_set.hpp"
 #include "text/sentence_similarity.hpp"
 #include "text/word_tokenizer.hpp"
@@ -58,6 +60,34 @@ static void add_similarity(CLI::App& text) {
     });
 }
 
+static void add_coverage(CLI::App& text) {
+    auto* cmd = text.add_subcommand("coverage", "what a model's training captions cover: per activity and attribute (Markdown), or per prompt of a set");
+    static std::string model, prompts, vocab = "cache/text/glove-100k.safetensors", out;
+    cmd->add_option("--model", model, "model folder with captions.tsv (its training captions)")->required()->check(CLI::ExistingDirectory);
+    cmd->add_option("--prompts", prompts, "prompt set: one line per prompt, covered or what is not (default: the Markdown table)")->check(CLI::ExistingFile);
+    cmd->add_option("--vocab", vocab, "the converted vocabulary, to find each prompt's nearest captions")->capture_default_str();
+    cmd->add_option("--out", out, "write here (default: print)");
+    cmd->callback([] {
+        check_usage([] {
+            if (!prompts.empty() && !std::filesystem::exists(vocab)) throw Error("--vocab", vocab, "an existing vocabulary file");
+            if (!out.empty()) check_output(out, "--out", OutputKind::file, {model, prompts, vocab});
+        });
+        const std::vector<Prompt> captions = read_prompt_set(model + "/captions.tsv", PromptActivity::required);
+        std::string text = coverage_markdown(captions, model);
+        if (!prompts.empty()) {
+            const WordVectors v = WordVectors::load(vocab);
+            const CaptionIndex index(v, captions, model + "/captions.tsv");
+            text.clear();
+            for (const Prompt& p : read_prompt_set(prompts)) {
+                const PromptCoverage c = prompt_coverage(index, p.activity, p.text);
+                text += p.activity + "\t" + p.text + "\t" + c.summary() + (c.nearest.empty() ? "" : "; nearest: " + c.nearest.front()) + "\n";
+            }
+        }
+        if (out.empty()) std::fputs(text.c_str(), stdout);
+        else write_file_atomic(out, text);
+    });
+}
+
 static void add_nearest(CLI::App& text) {
     auto* cmd = text.add_subcommand("nearest", "for each prompt, the most similar caption of a corpus (SIF cosine): how unlike the training captions a prompt set is");
     static std::string vocab, corpus, prompts, out;
@@ -98,6 +128,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     add_vocab(text);
     add_similarity(text);
     add_nearest(text);
+    add_coverage(text);
 });
 
 }  // namespace t2imu::cli

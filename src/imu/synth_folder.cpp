@@ -80,6 +80,9 @@ json job_marker_json(const JobMarker& m) {
         if (v >= 0) j[key] = v;  // absent from markers older than the field
     if (m.sensor_motion_fps) j["sensor_motion_fps"] = *m.sensor_motion_fps;
     if (!m.source_draw.is_null()) j["source_draw"] = m.source_draw;
+    if (m.coverage)
+        j["coverage"] = {{"covered", m.coverage->covered}, {"summary", m.coverage->summary}, {"nearest", m.coverage->nearest},
+                         {"similarity", m.coverage->similarity}, {"uncovered", m.coverage->uncovered}};
     if (m.activity_check)
         j["activity_check"] = {{"shown", m.activity_check->shown}, {"agreement", m.activity_check->agreement}, {"passed", m.activity_check->passed}};
     if (m.motions) {
@@ -127,6 +130,18 @@ JobMarker parse_job_marker(const json& doc, const std::string& path) {
                                          json_bool(c, "passed", path, "activity_check")};
     }
     if (doc.contains("source_draw")) m.source_draw = json_object(doc, "source_draw", path);
+    if (doc.contains("coverage")) {
+        const json& c = json_object(doc, "coverage", path);
+        MarkerCoverage& v = m.coverage.emplace();
+        v.covered = json_bool(c, "covered", path, "coverage");
+        v.summary = json_string(c, "summary", path, "coverage");
+        v.nearest = strings(c, "nearest", path, "coverage");
+        for (const json& x : json_array(c, "similarity", path, "coverage")) {
+            if (!x.is_number()) throw Error(path, "coverage.similarity", "numbers", x.dump());
+            v.similarity.push_back(x.get<double>());
+        }
+        v.uncovered = strings(c, "uncovered", path, "coverage");
+    }
     return m;
 }
 

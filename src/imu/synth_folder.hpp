@@ -46,6 +46,15 @@ struct ActivityCheck {
     bool passed = false;
 };
 
+// How well the motion source's training captions cover the job's prompt (text/prompt_coverage.hpp).
+struct MarkerCoverage {
+    bool covered = true;
+    std::string summary;                   // "covered", or what is not ("activity 'ironing' has no training captions")
+    std::vector<std::string> nearest;      // the nearest training captions of its activity
+    std::vector<double> similarity;        // their SIF cosine
+    std::vector<std::string> uncovered;    // attributes asked that no caption of the activity names
+};
+
 struct JobMarker {
     std::string job;  // "j00003"
     int index = -1, sample = -1, frames = -1;
@@ -59,6 +68,7 @@ struct JobMarker {
     std::optional<double> sensor_motion_fps;         // when the sensors saw another copy (the capture rate)
     std::optional<ActivityCheck> activity_check;
     nlohmann::json source_draw;                      // the source's own record of the draw (retrieval: the clip), or null
+    std::optional<MarkerCoverage> coverage;          // absent for a source without training captions
 };
 
 // A job's name ("j00003" for job 3) and its files relative to the folder: the one place they are spelled.

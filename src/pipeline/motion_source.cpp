@@ -60,6 +60,8 @@ public:
                 {"caption_anchor_neighbours", model_->anchor.neighbours}};
     }
 
+    const CaptionIndex* caption_index() const override { return model_->anchor.index.get(); }
+
 private:
     std::string dir_;
     SampleOptions sampling_;
@@ -158,7 +160,14 @@ public:
             shown_.push_back(classifier ? classifier->classify(describe_motion(recover_from_ric(c.features))).best : "");
         }
         if (classifier) classes_ = classifier->classes();
+        std::vector<Prompt> captions;  // each caption under each of its clip's activities, for coverage
+        for (size_t i = 0; i < clips_.size(); ++i)
+            for (const CaptionLine& l : clips_[i].captions)
+                for (const std::string& tag : tags_[i].empty() ? std::vector<std::string>{"other"} : tags_[i]) captions.push_back({tag, l.caption});
+        index_ = std::make_unique<CaptionIndex>(vocab_, captions, dataset);
     }
+
+    const CaptionIndex* caption_index() const override { return index_.get(); }
 
     std::vector<JointSequence> generate(const std::vector<std::string>& prompts, const std::vector<std::string>& activities,
                                         const std::vector<uint64_t>& seeds, int frames) override {
@@ -259,6 +268,7 @@ private:
     std::vector<std::vector<std::string>> tags_;  // canonical activity names per clip
     std::vector<std::string> shown_;              // the classifier's class per clip ("" without one)
     std::vector<std::string> classes_;            // the classifier's classes (empty without one)
+    std::unique_ptr<CaptionIndex> index_;         // every caption under its clip's activities
     std::map<std::string, CaptureCopy> capture_;   // by clip file id: the clips with a capture-rate copy
     std::vector<nlohmann::json> records_;         // per motion of the last generate()
     std::vector<std::optional<JointSequence>> capture_rate_;  // likewise
@@ -293,6 +303,7 @@ public:
     }
 
     nlohmann::json draw_record(size_t i) const override { return retrieval_.draw_record(i); }
+    const CaptionIndex* caption_index() const override { return diffusion_.caption_index(); }
 
 private:
     RetrievalSource retrieval_;

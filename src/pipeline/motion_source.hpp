@@ -52,6 +52,9 @@ public:
     // that holds capture-rate copies (dataset_builder.hpp) has one; derived clips and the models' motions do not.
     // Placed like the 20 fps motion up to a turn about the vertical and a shift, which no body-frame sensor reads.
     virtual std::optional<JointSequence> capture_rate_motion(size_t) const { return std::nullopt; }
+    // The captions the source draws from, by activity: what a prompt's coverage is judged against
+    // (text/prompt_coverage.hpp): a model's caption anchor, retrieval's clips. Null when it has none.
+    virtual const CaptionIndex* caption_index() const { return nullptr; }
 };
 
 // `spec`: a model folder, retrieval:DATASET, or hybrid:MODEL_FOLDER,DATASET,STRENGTH: the clip retrieval would

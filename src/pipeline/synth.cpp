@@ -23,6 +23,7 @@
 #include "motion/normalization.hpp"
 #include "pipeline/motion_source.hpp"
 #include "imu/synth_folder.hpp"
+#include "text/prompt_coverage.hpp"
 #include "text/prompt_set.hpp"
 
 namespace t2imu {
@@ -159,10 +160,12 @@ void clear_job_outputs(const std::string& out, const std::string& name) {
         if (e.path().filename().string().rfind("." + name, 0) == 0) fs::remove(e.path(), ignored);
 }
 
-void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt& prompt, int sample, const Drawn& d) {
+void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt& prompt, const std::optional<MarkerCoverage>& coverage, int sample,
+               const Drawn& d) {
     const std::string name = job_name(job);
     clear_job_outputs(o.out, name);
     JobMarker marker;
+    marker.coverage = coverage;
     marker.job = name, marker.index = job, marker.sample = sample, marker.frames = d.joints.num_frames;
     marker.prompt = prompt.text, marker.activity = prompt.activity;
     marker.seed = d.seed, marker.attempts = d.attempts, marker.quality = quality_map(d.quality), marker.kept = d.kept;
@@ -347,6 +350,16 @@ SynthReport synth_report(const std::vector<JobMarker>& markers, int total_jobs, 
     return r;
 }
 
+// Per prompt, how the source's captions cover it (text/prompt_coverage.hpp), checked before any output; none for a
+// source without captions.
+std::vector<std::optional<MarkerCoverage>> check_coverage(const MotionSource& source, const std::vector<Prompt>& prompts, const SynthOptions& o) {
+    std::vector<std::optional<MarkerCoverage>> out(prompts.size());
+    if (source.caption_index() == nullptr) return out;
+    const std::vector<PromptCoverage> c = check_prompts_covered(*source.caption_index(), prompts, o.prompts, o.require_coverage);
+    for (size_t i = 0; i < prompts.size(); ++i) out[i] = MarkerCoverage{c[i].covered(), c[i].summary(), c[i].nearest, c[i].similarity, c[i].attributes_uncovered};
+    return out;
+}
+
 }  // namespace
 
 SynthReport run_synth(const SynthOptions& o) {
@@ -364,6 +377,7 @@ SynthReport run_synth(const SynthOptions& o) {
     if (!o.activity_reference.empty()) classifier = MotionActivityClassifier::load(o.activity_reference);
     const double load_s = since(t0);
     const json described = source->describe();
+    const std::vector<std::optional<MarkerCoverage>> coverage = check_coverage(*source, prompts, o);
     claim_output_folder(o.out);  // marked as t2imu's: a rerun resumes in it (core/output_path.hpp)
     make_directories(o.out + "/jobs", "jobs folder");
     check_or_write_settings(o.out, settings_json(o, prompts, described, stage.imu.realism));
@@ -390,7 +404,8 @@ SynthReport run_synth(const SynthOptions& o) {
         parallel_for(jobs.size(), o.threads, [&](size_t i) {
             const int k = jobs[i];
             if (!todo[static_cast<size_t>(k - first)]) return;  // done before the interruption, with these very bytes
-            write_job(o, stage, k, prompts[static_cast<size_t>(k / o.samples_per_prompt)], k % o.samples_per_prompt, drawn[i]);
+            const size_t p = static_cast<size_t>(k / o.samples_per_prompt);
+            write_job(o, stage, k, prompts[p], coverage[p], k % o.samples_per_prompt, drawn[i]);
             progress.advance();
         });
         imu_s += since(t0);

@@ -71,6 +71,9 @@ struct SynthOptions {
     std::string activity_reference;      // "" = no activity check
     double min_activity_agreement = 0.55;
     bool drop_activity_failures = false;
+    // A prompt the source's training captions do not cover (text/prompt_coverage.hpp: an activity without
+    // captions, an attribute none of its captions names) is an error instead of a warning.
+    bool require_coverage = false;
     int shard = 0, shards = 1;           // this run does shard `shard` (0-based) of `shards`
     std::string device = "cpu";
     int threads = 1;                     // workers for the bodies/IMU stage

@@ -7,6 +7,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/npy.hpp"
+#include "motion/motion_attributes.hpp"
 #include "report/figures.hpp"
 #include "report/pose_strip.hpp"
 #include "report/signal_stats.hpp"
@@ -66,6 +67,28 @@ std::string activity_outcome(const JobMarker& m) {
     return "activity check: shows " + html_escape(c.shown) + ", agreement " + format("%.2f", c.agreement) + (c.passed ? ", passed" : ", below the minimum");
 }
 
+// What the motion measurably does (motion_attributes.hpp), the fields a caption could say: a user sees what they got.
+std::string measured_outcome(const JointSequence& motion) {
+    const MotionAttributes a = measure_attributes(motion);
+    std::string s = "measured: " + format("%.2f", a.ground_speed_m_s) + " m/s, " + format("%.0f", a.cadence_steps_min) + " steps/min, heading " +
+                    format("%+.0f", a.heading_change_deg) + "&deg;, travels " + travel_direction_name(a.travel);
+    if (a.steps_up + a.steps_down > 0) s += ", steps up " + std::to_string(a.steps_up) + " / down " + std::to_string(a.steps_down);
+    if (a.jumps > 0) s += ", " + std::to_string(a.jumps) + " jumps of " + format("%.2f", a.jump_height_m) + " m";
+    if (a.seated_s > 0) s += ", seated " + format("%.1f", a.seated_s) + " s";
+    if (a.lying_s > 0) s += ", lying " + format("%.1f", a.lying_s) + " s on the " + lying_side_name(a.lying_side);
+    for (const auto& [name, value] : attribute_fields(a))
+        if (name == "transitions" && !value.empty()) s += ", " + html_escape(value);
+    return s;
+}
+
+// Whether the source's training captions cover the job's prompt (text/prompt_coverage.hpp), with its nearest one.
+std::string coverage_outcome(const JobMarker& m) {
+    if (!m.coverage) return "";
+    const MarkerCoverage& c = *m.coverage;
+    const std::string nearest = c.nearest.empty() ? "" : " (nearest caption &ldquo;" + html_escape(c.nearest.front()) + "&rdquo;)";
+    return " &middot; coverage: " + std::string(c.covered ? "covered" : "<b>" + html_escape(c.summary) + "</b>") + nearest;
+}
+
 // The BVH of a kept job as a link relative to the report folder (the page's own folder).
 std::string bvh_link(const std::string& synth_dir, const std::string& job, const std::string& report_dir) {
     const fs::path bvh = fs::path(synth_dir) / job_bvh_file(job);
@@ -88,9 +111,11 @@ void kept_motions(const std::string& dir, const std::vector<JobMarker>& markers,
             if (!m.kept || m.activity != activity) continue;
             const std::string& job = m.job;
             const std::string joints = dir + "/" + job_joints_file(job);
+            const JointSequence motion = joint_sequence_from_array(read_npy(joints), joints);
             page.body += "<div class=\"job\"><p><b>" + html_escape(job) + "</b> &ldquo;" + html_escape(m.prompt) + "&rdquo;</p>\n" +
-                         pose_strip_svg(joint_sequence_from_array(read_npy(joints), joints)) + "\n<p class=\"outcome\">" + quality_outcome(m) +
-                         " &middot; " + activity_outcome(m) + " &middot; " + bvh_link(dir, job, page.out_dir) + "</p></div>\n";
+                         pose_strip_svg(motion) + "\n<p class=\"outcome\">" + quality_outcome(m) + " &middot; " + activity_outcome(m) +
+                         " &middot; " + bvh_link(dir, job, page.out_dir) + "</p>\n<p class=\"outcome\">" +
+                         (motion.num_frames >= 3 ? measured_outcome(motion) : std::string("measured: too short")) + coverage_outcome(m) + "</p></div>\n";
         }
     }
 }
