@@ -127,6 +127,7 @@ const std::vector<KnownArgument> kKnownArguments = {
     {"motion activity", "--reference", "FILE"},
     {"analysis lacc", "--tau", "0.5"},
     {"data reframe", "--to", "sisfall"},
+    {"data import-imu", "--format", "sisfall"},
 };
 
 // A call that satisfies the parser: each required argument a stand-in of its type (an empty file, an empty

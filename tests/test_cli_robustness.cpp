@@ -86,7 +86,7 @@ Files model_json(const std::string& num_layers) {
 const Files kPrompts = {{"p.tsv", "walking\tA man walks forward\n"}};
 const Files kFile = {{"file", "a regular file, not a folder\n"}};
 const std::string kSynth = "synth --prompts {D}/p.tsv --activity-reference '' --model {D}/no-model ";
-const std::string kHar = "har run --train {D}/imu --test {D}/imu --positions chest ";
+const std::string kHar = "har run --train {D}/imu --train-subjects 1 --test {D}/imu --positions chest ";  // trains on one subject, tests the other
 const std::string kSample = "sample --model {D} --prompt 'a man walks' ";
 const std::string kImuSynth = "imu synth --joints {D}/j.npy --body preset:male_average ";
 
@@ -126,7 +126,7 @@ std::vector<Row> rows() {
          {{"e.toml", "[[source]]\nname = \"r\"\nmodel = \"retrieval:x\"\n[[real]]\nname = \"s\"\ndataset = \"x\"\nprompts = \"p\"\nsensors = \"sisfall\"\n[har]\nmax_epochs = 0\n"}},
          1, "e.toml: har: expected valid HAR settings", {"o"}},
         // The check creates missing folders to prove it can, and removes them: a run refused later leaves none.
-        {"HarCheckedOutFoldersRemoved", "har run --train {D}/imu --test {D}/imu --positions tentacle --repeats 1 --out {D}/a/b/o.json",
+        {"HarCheckedOutFoldersRemoved", "har run --train {D}/imu --train-subjects 1 --test {D}/imu --positions tentacle --repeats 1 --out {D}/a/b/o.json",
          imu_dataset("imu"), 1, "tentacle", {"a"}},
         // 4: model.json's fields are read by name with their range.
         {"ModelLayersNotANumber", "sample --model {D}/model --prompt walks --out {D}/o", model_json(R"("four")"), 1, "mdm.num_layers: expected an integer from 1", {"o"}},
@@ -166,7 +166,7 @@ std::vector<Row> rows() {
         {"DataReframeOutInProc", "data reframe {D}/imu --from realworld --to umafall --out /proc/x/o", imu_dataset("imu"), 2, "--out: /proc/x/o", {}},
         {"DataReframePositionNotPlaced", "data reframe {D}/imu --from realworld --to sisfall --out {D}/o", imu_dataset("imu"), 1,
          "--to: chest: expected a position the set sisfall places (waist)", {"o"}},
-        {"DataReframeSyntheticNeedsFrom", "data reframe {D}/imu --to umafall --out {D}/o", imu_dataset("imu"), 1, "dataset: expected a placement set's name", {"o"}},
+        {"DataReframeSyntheticNeedsFrom", "data reframe {D}/imu --to umafall --out {D}/o", imu_dataset("imu"), 1, "dataset: expected a data set's name", {"o"}},
         {"DataReframeUnknownPosition", "data reframe {D}/imu --from realworld --to umafall --positions tentacle --out {D}/o", imu_dataset("imu"), 1,
          "--positions: tentacle: expected a position the data set holds", {"o"}},
         {"DataReframeRuns", "data reframe {D}/imu --from realworld --to umafall --out {D}/o", imu_dataset("imu"), 0, "4 recordings in the axes of umafall", {}},
@@ -182,16 +182,16 @@ std::vector<Row> rows() {
         {"ImuSynthOutIsAUserFolder", kImuSynth + "--out {D}/mine", standing_joints("j.npy") + Files{{"mine/notes.txt", "mine\n"}}, 2,
          "a folder t2imu did not make", {}},
         {"HarManifestNegativeCount", kHar + "--repeats 1 --out {D}/o.json",
-         Files{{"imu/manifest.csv", "path,dataset,subject,activity,position,rate_hz,n_samples,units\na.csv,t2imu,s1,walking,chest,20,-1,-\n"}}, 1,
+         Files{{"imu/manifest.csv", "path,dataset,subject,activity,position,rate_hz,n_samples,units\na.csv,t2imu,s1,walking,chest,20,-1,-\n"}}, 2,
          "manifest.csv: row 2 column 'n_samples': expected a whole number of samples from 0 (got '-1')", {"o.json"}},
         {"HarManifestNanCount", kHar + "--repeats 1 --out {D}/o.json",
-         Files{{"imu/manifest.csv", "path,dataset,subject,activity,position,rate_hz,n_samples,units\na.csv,t2imu,s1,walking,chest,20,nan,-\n"}}, 1,
+         Files{{"imu/manifest.csv", "path,dataset,subject,activity,position,rate_hz,n_samples,units\na.csv,t2imu,s1,walking,chest,20,nan,-\n"}}, 2,
          "column 'n_samples'", {"o.json"}},
         {"HarManifestNotUtf8", kHar + "--repeats 1 --out {D}/o.json",
-         Files{{"imu/manifest.csv", "path,dataset,subject,activity,position,rate_hz,n_samples,units\na.csv,t2imu,s\xff,walking,chest,20,2,-\n"}}, 1,
+         Files{{"imu/manifest.csv", "path,dataset,subject,activity,position,rate_hz,n_samples,units\na.csv,t2imu,s\xff,walking,chest,20,2,-\n"}}, 2,
          "row 2 column 'subject': expected UTF-8 text", {"o.json"}},
         // 10: HAR names the position, the window and the damaged cell.
-        {"HarUnknownPosition", "har run --train {D}/imu --test {D}/imu --positions tentacle --repeats 1 --out {D}/o.json", imu_dataset("imu"), 1,
+        {"HarUnknownPosition", "har run --train {D}/imu --train-subjects 1 --test {D}/imu --positions tentacle --repeats 1 --out {D}/o.json", imu_dataset("imu"), 1,
          "--positions: tentacle: expected a position the data set holds (chest)", {"o.json"}},
         {"HarWindowLongerThanTrials", kHar + "--window 100 --repeats 1 --out {D}/o.json", imu_dataset("imu"), 1, "--window: expected at most the longest trial", {"o.json"}},
         {"MotionImportNegativeFps", "motion import {D}/j.npy --fps -5 --out {D}/o.npy", standing_joints("j.npy"), 2,

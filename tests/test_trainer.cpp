@@ -327,11 +327,12 @@ TEST(Trainer, DamagedCheckpointsAndNonFiniteLossesNeverReachTheModel) {
     const std::string m = test::error_message([&] { train_mdm(fresh, true); });
     EXPECT_TRUE(test::contains(m, dir + "/empty/checkpoint.pt") && !test::contains(m, "Mean.npy")) << m;
 
-    // A NaN in every frame of every clip: the first step's loss is NaN, and nothing is saved.
+    // 1e30 in every frame of every clip (finite, so the loader takes it; its square overflows float): the first
+    // step's loss is not finite, and nothing is saved.
     for (const auto& e : fs::directory_iterator(data + "/new_joint_vecs")) {
         NdArray a = read_npy(e.path().string());
         std::vector<float> v = a.to<float>();
-        for (size_t i = 7; i < v.size(); i += 263) v[i] = NAN;  // feature 7 of every frame [F, 263]
+        for (size_t i = 7; i < v.size(); i += 263) v[i] = 1e30f;  // feature 7 of every frame [F, 263]
         write_npy(e.path().string(), NdArray::from(v, a.shape));
     }
     TrainConfig poisoned = read_train_config(config);

@@ -93,6 +93,7 @@ void run(HarArgs a) {
             throw Error("--window", std::to_string(w.window_s) + " s", "at least " + std::to_string(kDeepConvLstmMinWindow) +
                         " samples at --rate (DeepConvLSTM's four convolutions of kernel 5)");
         a.options.validate();
+        a.sets.validate_values();
         std::vector<std::string> inputs = a.train;
         inputs.push_back(a.test);
         check_output(a.out, "--out", OutputKind::file, inputs);

@@ -55,7 +55,7 @@ DatasetProfile realworld() {
 // SisFall: one board on the belt at the front of the waist: ADXL345 (+-16 g, 13 bit: 3.9 mg/LSB; about 300
 // ug/sqrt(Hz)) and ITG-3200 (0.038 deg/s/sqrt(Hz), +-2000 deg/s; its zero-rate offset left uncalibrated, sd taken as
 // 3 deg/s). Axes not documented: y down, z forwards, from the data's mean gravity while walking. Its tilt: the real
-// waist's mean tilt and its spread over recordings beyond the synthetic one (docs/realism.md, "Mounting tilt").
+// waist's mean tilt and its spread over recordings beyond the synthetic one (docs/realism.md, "The levers").
 // Its "jogging" trials are slow runs; stairs_up_down goes up and down in one trial; jump_reach is mostly standing.
 DatasetProfile sisfall() {
     DatasetProfile p;

@@ -357,9 +357,14 @@ void SeveralSetsOptions::validate(size_t sets, int batch) const {
             throw Error("--protocol", "finetune", "a set to pretrain on and a --train that is also --test, with --train-subjects to fine-tune on");
         if (!shares.empty()) throw Error("--train-share", "finetune", "--protocol mix (fine-tuning trains on one set)");
     }
+    validate_values();
+}
+
+void SeveralSetsOptions::validate_values() const {
     if (finetune_epochs < 0) throw Error("--finetune-epochs", std::to_string(finetune_epochs), "0 or more epochs");
-    if (!(finetune_learning_rate > 0 && std::isfinite(finetune_learning_rate)))
-        throw Error("--finetune-lr", std::to_string(finetune_learning_rate), "a positive learning rate");
+    // Adam's step is about the learning rate: above 1 it would move a weight by more than its typical size per step.
+    if (!(finetune_learning_rate > 0 && finetune_learning_rate <= 1))
+        throw Error("--finetune-lr", std::to_string(finetune_learning_rate), "a learning rate above 0 and at most 1");
 }
 
 namespace {

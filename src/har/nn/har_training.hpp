@@ -62,6 +62,8 @@ struct SeveralSetsOptions {
 
     // Throws Error naming the option (--train-share, --protocol, --finetune-epochs, ...) for a bad combination.
     void validate(size_t sets, int batch) const;
+    // The fine-tuning's epochs and learning rate alone, in range whatever the mode (the CLI checks them always).
+    void validate_values() const;
 };
 
 // The finetune protocol's pretrained network, kept between calls (another number of subjects) so the other sets
