@@ -70,6 +70,26 @@ TEST(CaptionIndex, SearchesOnlyTheAskedActivityNearestFirst) {
     EXPECT_EQ(unknown[0].similarity, 0.0);
 }
 
+// "slowly" and "quickly" are near neighbours in GloVe; a caption naming the prompt's attribute ranks first although
+// another caption is nearer by meaning, and among captions naming as many, the nearer first.
+TEST(CaptionIndex, CaptionsNamingThePromptsAttributesRankFirst) {
+    const WordVectors vocab = axis_vocabulary({{"walks", {1, 0, 0, 0}}, {"forward", {0, 1, 0, 0}}, {"slowly", {0, 0, 1, 0}},
+                                               {"quickly", {0, 0, 0.95f, 0.3f}}, {"lies", {0, 0, 0, 1}}});
+    const CaptionIndex index(vocab, {{"walking", "walks forward quickly"}, {"walking", "walks slowly"}, {"walking", "walks forward"},
+                                     {"lying", "lies"}},
+                             "captions.tsv");
+    const std::string prompt = "walks forward slowly";
+    const auto by_words = index.nearest(prompt, 3, "walking");
+    ASSERT_EQ(by_words.size(), 3u);
+    EXPECT_EQ(index.captions()[by_words[0].index].text, "walks slowly");  // names pace_slow
+    EXPECT_GT(by_words[1].similarity, by_words[0].similarity);            // the others are nearer by meaning
+    EXPECT_EQ(index.captions()[by_words[1].index].text, "walks forward quickly");
+    EXPECT_EQ(index.captions()[by_words[2].index].text, "walks forward");
+    // Without an attribute word the order is by meaning alone.
+    const auto plain = index.nearest("walks forward", 1, "walking");
+    EXPECT_EQ(index.captions()[plain[0].index].text, "walks forward");
+}
+
 TEST(CaptionIndex, RefusesCaptionsWithoutAKnownWordNamingTheFile) {
     const WordVectors vocab = axis_vocabulary({{"walks", {1}}});
     try {

@@ -84,6 +84,22 @@ TEST(MotionSource, RetrievalDrawsFromEveryClipTiedWithTheKth) {
     EXPECT_EQ(clips_drawn(*source, "a person walks", "walking"), (std::set<std::string>{"c0", "c1", "c2", "c3", "c4", "c5"}));
 }
 
+TEST(MotionSource, RetrievalRanksClipsNamingThePromptsAttributesFirst) {
+    // Five walks captioned "a person walks" match "a person walks slowly" best by meaning ("slowly" is not in the
+    // vocabulary); the one whose caption says "slowly" ranks above them and is drawn.
+    const std::string data = misleading_dataset("retrieval_attributes");
+    CsvTable clips;
+    clips.header = {"id", "activity_tags", "split"};
+    for (int k = 0; k < 6; ++k) {
+        std::ofstream(data + "/texts/c" + std::to_string(k) + ".txt") << (k == 5 ? "a person jogs slowly" : "a person walks") << "##0.0#0.0\n";
+        clips.rows.push_back({"c" + std::to_string(k), "walking", "train"});
+    }
+    write_csv(data + "/clips.csv", clips);
+    auto source = open_motion_source("retrieval:" + data, SampleOptions{}, "cpu", data + "/vocab.safetensors");
+    EXPECT_EQ(clips_drawn(*source, "a person walks", "walking"), (std::set<std::string>{"c0", "c1", "c2", "c3", "c4"}));
+    EXPECT_TRUE(clips_drawn(*source, "a person walks slowly", "walking").count("c5"));
+}
+
 TEST(MotionSource, RetrievalPrefersTaggedClipsTheClassifierAgreesWith) {
     // The reference places every clip's motion (all cut from one captured walk) in walking, running far away:
     // walking prompts get the tags+classifier tier; running ones fall back to the tags alone.

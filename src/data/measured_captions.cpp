@@ -231,7 +231,7 @@ const std::vector<AttributeWords>& attribute_words() {
         {"curve", {"curve", "curving"}},
         {"backward", {"backwards", "backward"}},
         {"sideways", {"sideways", "sidesteps"}},
-        {"stride_long", {"long", "strides"}},
+        {"stride_long", {"long"}},
         {"stride_short", {"short", "small"}},
         {"lean", {"leaning", "bent"}},
         {"lying_side", {"side", "stomach", "face"}},
@@ -252,6 +252,12 @@ std::vector<std::string> attributes_asked(const std::string& text) {
                 break;
             }
     return out;
+}
+
+size_t attributes_shared(const std::vector<std::string>& asked, const std::vector<std::string>& named) {
+    size_t n = 0;
+    for (const std::string& a : asked) n += std::find(named.begin(), named.end(), a) != named.end();
+    return n;
 }
 
 }  // namespace t2imu

@@ -49,4 +49,9 @@ const std::vector<AttributeWords>& attribute_words();
 // The attributes a text asks for: every attribute one of whose words it contains (case-insensitive whole words).
 std::vector<std::string> attributes_asked(const std::string& text);
 
+// How many of `asked` (attributes_asked of a prompt) are among `named` (attributes_asked of a caption): what the
+// caption anchor and retrieval rank by before meaning, since in GloVe "slowly" and "quickly", "left" and "right"
+// are neighbours and a caption's other words outweigh them.
+size_t attributes_shared(const std::vector<std::string>& asked, const std::vector<std::string>& named);
+
 }  // namespace t2imu

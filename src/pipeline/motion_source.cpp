@@ -15,6 +15,7 @@
 #include "core/parse.hpp"
 #include "data/clip_activities.hpp"
 #include "data/hml3d_dataset.hpp"
+#include "data/measured_captions.hpp"
 #include "motion/activity_names.hpp"
 #include "motion/humanml3d.hpp"
 #include "motion/motion_activity.hpp"
@@ -153,8 +154,10 @@ public:
         if (!activity_reference.empty()) classifier = MotionActivityClassifier::load(activity_reference);
         for (const MotionClip& c : clips_) {
             std::vector<Eigen::VectorXd> e;
-            for (const CaptionLine& l : c.captions) e.push_back(sif_.embed(l.caption));
+            std::vector<std::vector<std::string>> named;
+            for (const CaptionLine& l : c.captions) e.push_back(sif_.embed(l.caption)), named.push_back(attributes_asked(l.caption));
             caption_embeddings_.push_back(std::move(e));
+            caption_attributes_.push_back(std::move(named));
             const auto t = tags.find(clip_file_id(c.id));
             tags_.push_back(t == tags.end() ? std::vector<std::string>{} : t->second);
             shown_.push_back(classifier ? classifier->classify(describe_motion(recover_from_ric(c.features))).best : "");
@@ -243,20 +246,31 @@ private:
         return all;
     }
 
+    // Clips by their best caption: the most of the prompt's attributes named, then the most similar (as the caption
+    // anchor ranks, text/caption_index.hpp).
     std::vector<size_t> nearest_clips(const std::string& prompt, const std::vector<size_t>& candidates) const {
         const Eigen::VectorXd p = sif_.embed(prompt);
-        std::vector<std::pair<double, size_t>> scored;
+        const std::vector<std::string> asked = attributes_asked(prompt);
+        struct Scored { size_t shared; double similarity; size_t clip; };
+        std::vector<Scored> scored;
         for (size_t c : candidates) {
-            double best = -2;
-            for (const Eigen::VectorXd& e : caption_embeddings_[c]) best = std::max(best, cosine_similarity(p, e));
-            scored.push_back({-best, c});  // ascending: most similar first
+            Scored best{0, -2, c};
+            for (size_t j = 0; j < caption_embeddings_[c].size(); ++j) {
+                const Scored s{attributes_shared(asked, caption_attributes_[c][j]), cosine_similarity(p, caption_embeddings_[c][j]), c};
+                if (s.shared > best.shared || (s.shared == best.shared && s.similarity > best.similarity)) best = s;
+            }
+            scored.push_back(best);
         }
-        std::sort(scored.begin(), scored.end());
-        // The k best and every clip as similar as the k-th (identical captions embed identically).
+        const auto better = [](const Scored& a, const Scored& b) {
+            if (a.shared != b.shared) return a.shared > b.shared;
+            return a.similarity != b.similarity ? a.similarity > b.similarity : a.clip < b.clip;
+        };
+        std::sort(scored.begin(), scored.end(), better);
+        // The k best and every clip as good as the k-th (identical captions embed identically).
         size_t k = std::min<size_t>(kRetrievalTopK, scored.size());
-        while (k < scored.size() && scored[k].first <= scored[k - 1].first + 1e-9) ++k;
+        while (k < scored.size() && scored[k].shared == scored[k - 1].shared && scored[k].similarity >= scored[k - 1].similarity - 1e-9) ++k;
         std::vector<size_t> out;
-        for (size_t i = 0; i < k; ++i) out.push_back(scored[i].second);
+        for (size_t i = 0; i < k; ++i) out.push_back(scored[i].clip);
         return out;
     }
 
@@ -265,6 +279,7 @@ private:
     SifEncoder sif_;
     std::vector<MotionClip> clips_;
     std::vector<std::vector<Eigen::VectorXd>> caption_embeddings_;
+    std::vector<std::vector<std::vector<std::string>>> caption_attributes_;  // per clip, per caption: the attributes it names
     std::vector<std::vector<std::string>> tags_;  // canonical activity names per clip
     std::vector<std::string> shown_;              // the classifier's class per clip ("" without one)
     std::vector<std::string> classes_;            // the classifier's classes (empty without one)

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "data/measured_captions.hpp"
 #include "motion/activity_names.hpp"
 
 namespace t2imu {
@@ -16,6 +17,7 @@ CaptionIndex::CaptionIndex(const WordVectors& vectors, const std::vector<Prompt>
         if (seen.insert({c.activity, c.text}).second) {
             captions_.push_back(c);
             texts.push_back(c.text);
+            named_.push_back(attributes_asked(c.text));
         }
     sif_.fit_common_component(texts);
     unit_ = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(captions_.size()), WordVectors::kDims);
@@ -38,8 +40,12 @@ std::vector<CaptionNeighbour> CaptionIndex::nearest(const std::string& prompt, s
     const Eigen::VectorXd e = sif_.embed(prompt);
     const double norm = e.norm();
     const Eigen::VectorXd cosines = norm > 0 ? Eigen::VectorXd(unit_ * (e / norm)) : Eigen::VectorXd::Zero(unit_.rows());
+    const std::vector<std::string> asked = attributes_asked(prompt);
+    std::vector<size_t> shared(captions_.size(), 0);
+    for (size_t i : candidates) shared[i] = attributes_shared(asked, named_[i]);
     std::sort(candidates.begin(), candidates.end(), [&](size_t a, size_t b) {
         const double ca = cosines[static_cast<Eigen::Index>(a)], cb = cosines[static_cast<Eigen::Index>(b)];
+        if (shared[a] != shared[b]) return shared[a] > shared[b];
         return ca != cb ? ca > cb : a < b;
     });
     // Only the nearest caption's own activity: a direction-agnostic "stairs" takes one direction, never a blend of

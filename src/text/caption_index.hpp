@@ -33,10 +33,11 @@ public:
     // naming `source` otherwise). `vectors` must outlive the index.
     CaptionIndex(const WordVectors& vectors, const std::vector<Prompt>& captions, const std::string& source);
 
-    // The k captions of activity `activity` (canonical; shows_activity, so "stairs" takes either direction) most
-    // similar to `prompt`, most similar first (ties: the earlier caption); fewer when the activity has fewer, none
+    // The k captions of activity `activity` (canonical; shows_activity, so "stairs" takes either direction) that
+    // name the most of the prompt's attributes (data/measured_captions.hpp: slowly, left, then, ...), among those
+    // the most similar to `prompt`, best first (ties: the earlier caption); fewer when the activity has fewer, none
     // when it is "" or has none. Across activities the nearest caption by words is too often another activity's
-    // (see above; as an anchor it cost first draws). All k share the activity of the most similar one, so
+    // (see above; as an anchor it cost first draws). All k share the activity of the best one, so
     // "stairs" gives one direction: a blend of up and down captions conditions a walk on the level (docs/results.md,
     // "One stairs direction per anchor, and the main job's filter (2026-12-05, later)").
     std::vector<CaptionNeighbour> nearest(const std::string& prompt, size_t k, const std::string& activity) const;
@@ -45,6 +46,7 @@ public:
 private:
     SifEncoder sif_;
     std::vector<Prompt> captions_;
+    std::vector<std::vector<std::string>> named_;  // per caption: the attributes it names
     Eigen::MatrixXd unit_;  // [captions, dims]: each caption's embedding at unit length (zero rows stay zero)
 };
 
