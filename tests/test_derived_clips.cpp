@@ -64,17 +64,22 @@ TEST(DerivedClips, AForwardWalkGivesAFlightOfStairsAndOnRequestARoundTrip) {
     EXPECT_EQ(redrawn[0].joints.positions, c.joints.positions);
     EXPECT_EQ(redrawn[1].joints.positions, clips[1].joints.positions);
 
-    // The round trip climbs a flight and comes down the next: its pelvis rises at least 1 m above where it starts
-    // and falls at least 1 m below its top by the end; at 20 fps it is a clip the training keeps, passing quality.
+    // The round trip climbs a flight and comes down the next: its pelvis rises at least two steps above where it
+    // starts and falls at least two below its top by the end, over the length drawn; at 20 fps it is a clip the
+    // training keeps, passing quality.
     const DerivedClip& trip = clips[1];
     EXPECT_EQ(trip.method, "stairs_round_trip");
     EXPECT_EQ(trip.activity, "stairs");  // either direction: not under stairs_down alone, where it drew climbs
     EXPECT_EQ(trip.captions.size(), 3u);
     double top = -1e9;
     for (int f = 0; f < trip.joints.num_frames; ++f) top = std::max(top, trip.joints.at(f, 0).y());
-    EXPECT_GT(top - trip.joints.at(0, 0).y(), 1.0);
-    EXPECT_GT(top - trip.joints.at(trip.joints.num_frames - 1, 0).y(), 1.0);
-    EXPECT_LE(trip.joints.num_frames, frames_of(kRoundTripMaxSeconds, walk.fps));
+    const double two_steps = 2 * trip.parameters.at("rise_m").get<double>();
+    EXPECT_GT(top - trip.joints.at(0, 0).y(), two_steps);
+    EXPECT_GT(top - trip.joints.at(trip.joints.num_frames - 1, 0).y(), two_steps);
+    const double seconds = trip.parameters.at("seconds").get<double>();
+    EXPECT_GE(seconds, kRoundTripMinSeconds);
+    EXPECT_LE(seconds, kRoundTripMaxSeconds);
+    EXPECT_LE(trip.joints.num_frames, frames_of(seconds, walk.fps));
     EXPECT_TRUE(Hml3dDataset::usable_length(trip.joints_20fps.num_frames)) << trip.joints_20fps.num_frames << " frames";
     JointSequence scored = trip.joints_20fps;
     place_on_floor(scored);

@@ -61,6 +61,20 @@ TEST(MeasuredCaptions, ASlowWalkIsCaptionedSlowAndABriskOneFast) {
     EXPECT_TRUE(every_contains_one_of(sprint, {"sprint", "very fast"}));
 }
 
+// Running's pace words only in its tails: an easy jog (< 2.2 m/s) is slow, a fast run (> 3.3 m/s) fast, and the
+// paces between (a 2.6 m/s jog, a 2.8 m/s run) name neither.
+TEST(MeasuredCaptions, RunningPaceWordsNameOnlyTheTails) {
+    for (uint64_t seed = 0; seed < 10; ++seed) {
+        EXPECT_TRUE(every_contains_one_of(measured_captions(walk(2.0), "running", 3, seed), {"slow", "easy"}));
+        EXPECT_TRUE(every_contains_one_of(measured_captions(walk(3.6), "running", 3, seed), {"fast", "quickly"}));
+        for (double v : {2.6, 2.8}) {
+            const auto middle = measured_captions(walk(v), "running", 3, seed);
+            ASSERT_FALSE(middle.empty());
+            EXPECT_TRUE(none_contains(middle, "slow") && none_contains(middle, "easy") && none_contains(middle, "fast") && none_contains(middle, "quick"));
+        }
+    }
+}
+
 TEST(MeasuredCaptions, TurnsAndTravelNameTheirSide) {
     MotionAttributes a = walk(1.2);
     a.heading_change_deg = a.path_turn_deg = 90;

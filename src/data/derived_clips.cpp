@@ -161,7 +161,8 @@ void derive_stairs_round_trip(const JointSequence& walk, const std::string& file
         ++report.refused;  // no staircase fits the walk, or no stance to join the flights at
         return;
     }
-    const int keep = frames_of(kRoundTripMaxSeconds, walk.fps);
+    const double seconds = uniform(rng, kRoundTripMinSeconds, kRoundTripMaxSeconds);
+    const int keep = frames_of(seconds, walk.fps);
     const int begin = std::clamp(trip.splice_frame - keep / 2, 0, std::max(0, trip.motion.num_frames - keep));
     DerivedClip c;
     c.joints = slice_frames(trip.motion, begin, std::min(trip.motion.num_frames, begin + keep));
@@ -177,7 +178,7 @@ void derive_stairs_round_trip(const JointSequence& walk, const std::string& file
     c.activity = "stairs";
     c.parameters = {{"rise_m", rise}, {"going_m", going}, {"cadence_factor_up", o[0].cadence_factor}, {"cadence_factor_down", o[1].cadence_factor},
                     {"trunk_lean_rad_up", o[0].trunk_lean_rad}, {"trunk_lean_rad_down", o[1].trunk_lean_rad},
-                    {"swing_clearance_m", o[0].swing_clearance_m}, {"blend_s", GaitSpliceOptions{}.blend_s}, {"seconds", kRoundTripMaxSeconds}};
+                    {"swing_clearance_m", o[0].swing_clearance_m}, {"blend_s", GaitSpliceOptions{}.blend_s}, {"seconds", seconds}};
     c.seed = seed;
     c.captions = pick_captions(captions_for(c.method), rng);
     out.push_back(std::move(c));
@@ -213,10 +214,10 @@ void derive_sit_clips(const JointSequence& standing, const std::string& file, De
         ChairOptions o;
         o.seat_height_m = uniform(rng, 0.47, 0.57) * hip_height;
         o.sit_down_s = pace_factor * uniform(rng, 1.8, 2.4);
-        o.seated_s = uniform(rng, 2.0, 3.0);
+        o.seated_s = uniform(rng, 1.0, 3.0);
         o.stand_up_s = pace_factor * uniform(rng, 1.5, 2.0);
-        o.stand_before_s = uniform(rng, 0.5, 1.0);
-        o.stand_after_s = uniform(rng, 0.5, 1.0);
+        o.stand_before_s = uniform(rng, 0.3, 1.0);
+        o.stand_after_s = uniform(rng, 0.3, 1.0);
         o.trunk_flexion_peak_rad = uniform(rng, 0.55, 0.85);
         fit_still_phases(o);
         const int frames = stand_sit_stand_frames(o, standing.fps);

@@ -13,8 +13,9 @@
 //             that the edit refuses (under 1.5 m of travel, backward or sideways, turning, fewer than four
 //             footholds) give nothing. On request (stairs_round_trips), every other walk (by a bit of its seed)
 //             also gives one round trip, up a flight and down the next (gait_splice.hpp: the two flights, on
-//             stairs of one rise and going, joined at a stance of one foot on the landing), cut to
-//             kRoundTripMaxSeconds around the join; tag stairs (either direction).
+//             stairs of one rise and going, joined at a stance of one foot on the landing), cut to a length
+//             uniform in [kRoundTripMinSeconds, kRoundTripMaxSeconds] around the join (a 6 s prompt, the main
+//             job's length, then has round trips of its length to follow); tag stairs (either direction).
 //             On request (turning_walks), every walk also gives one turned onto a curve (walk_turn.hpp): by the
 //             seed, two in three turn 60-120 deg over 1.2-2.2 s and one in three turns around, 150-180 deg over
 //             1.5-2.5 s, left or right by a bit of the seed, starting at least 0.8 s into the walk and ending
@@ -23,7 +24,7 @@
 //             seat height uniform in [0.47, 0.57] x the standing hip-joint height (0.40-0.50 m for an adult's
 //             0.88 m: ordinary chairs; ReActIdle's rigs stand 0.66-0.95 m at the hip), sitting down 1.8-2.4 s and
 //             standing up 1.5-2.0 s (self-paced, sit_to_stand.hpp) times a pace factor uniform in
-//             [kSitPaceFactorMin, kSitPaceFactorMax], seated 2-3 s, 0.5-1.0 s of standing before and after (the
+//             [kSitPaceFactorMin, kSitPaceFactorMax], seated 1-3 s, 0.3-1.0 s of standing before and after (the
 //             three still phases shrunk in proportion where a slow pace leaves less room: at most 9.4 s, one
 //             training clip), peak trunk flexion 0.55-0.85 rad. Windows where the idle stand steps away are
 //             refused (sit_to_stand.hpp's kMaxStandingDriftM).
@@ -68,8 +69,9 @@ constexpr int kSitsPerRecording = 6;
 // the self-paced trials of UMAFall to SisFall's slow ones (header above).
 constexpr double kSitPaceFactorMin = 0.9;
 constexpr double kSitPaceFactorMax = 1.45;
-// A stairs round trip (up a flight, down the next) is cut to at most this long around its splice: under the
-// 10 s (199 frames at 20 fps) that MDM's data rules keep.
+// A stairs round trip (up a flight, down the next) is cut to a length in this range around its splice: at most
+// under the 10 s (199 frames at 20 fps) that MDM's data rules keep, at least long enough for two steps each way.
+constexpr double kRoundTripMinSeconds = 5.5;
 constexpr double kRoundTripMaxSeconds = 9.5;
 constexpr int kLyingPerRecording = 2;
 constexpr int kLyingTurnsPerRecording = 2;

@@ -80,9 +80,13 @@ std::string walking_verb(const MotionAttributes& a, Phrasing& p) {
 
 std::string running_verb(const MotionAttributes& a, Phrasing& p) {
     switch (running_pace(a.ground_speed_m_s)) {
-        case RunningPace::jog: return p.pick({"jogs", "jogs slowly", "runs slowly", "jogs at an easy pace"});
+        case RunningPace::jog:
+            if (a.ground_speed_m_s < kEasyJog) return p.pick({"jogs slowly", "runs slowly", "jogs at an easy pace", "jogs at a slow pace"});
+            return p.pick({"jogs", "jogs at a steady pace"});
         case RunningPace::sprint: return p.pick({"sprints", "runs very fast", "sprints quickly"});
-        default: return p.pick({"runs", "runs fast", "runs at a steady pace", "runs quickly"});
+        default:
+            if (a.ground_speed_m_s > kFastRun) return p.pick({"runs fast", "runs quickly", "runs at a fast pace"});
+            return p.pick({"runs", "runs at a steady pace"});
     }
 }
 

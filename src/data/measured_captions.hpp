@@ -24,6 +24,11 @@ constexpr double kSlowWalk = 1.0;    // m/s: below, a slow walk
 constexpr double kBriskWalk = 1.5;   // m/s: above, a brisk walk
 constexpr double kJogLimit = 2.7;    // m/s: below, a jog
 constexpr double kSprintSpeed = 5.0; // m/s: above, a sprint
+// Running's pace words go to its tails only, so "slowly" and "fast" name speeds apart (a 2.6 m/s jog and a
+// 2.8 m/s run are one pace): "slowly" below an easy jog's 2.2 m/s, "fast" above a fast run's 3.3 m/s
+// (docs/attributes.md).
+constexpr double kEasyJog = 2.2;     // m/s
+constexpr double kFastRun = 3.3;     // m/s
 
 WalkingPace walking_pace(double ground_speed_m_s);
 RunningPace running_pace(double ground_speed_m_s);
