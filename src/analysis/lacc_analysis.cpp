@@ -5,6 +5,7 @@
 
 #include "core/csv.hpp"
 #include "core/error.hpp"
+#include "core/number_text.hpp"
 
 namespace t2imu {
 
@@ -61,11 +62,8 @@ std::string lacc_analysis_csv(const LaccAnalysis& a) {
     rows.push_back(a.high_dynamic);
     rows.push_back(a.low_dynamic);
     rows.push_back(a.all);
-    char line[256];
-    for (const LaccGroup& g : rows) {
-        std::snprintf(line, sizeof line, "%s,%zu,%.6g,%.6g,%.2f\n", g.name.c_str(), g.samples, g.before, g.after, g.change_percent());
-        out += line;
-    }
+    for (const LaccGroup& g : rows)
+        out += g.name + "," + std::to_string(g.samples) + "," + general_text(g.before, 6) + "," + general_text(g.after, 6) + "," + fixed_text(g.change_percent(), 2) + "\n";
     return out;
 }
 

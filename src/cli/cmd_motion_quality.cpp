@@ -8,6 +8,7 @@
 #include "cli/usage.hpp"
 #include "core/atomic_file.hpp"
 #include "core/npy.hpp"
+#include "core/number_text.hpp"
 #include "core/output_path.hpp"
 #include "core/parse.hpp"
 #include "motion/motion_quality.hpp"
@@ -46,9 +47,10 @@ void run(const std::vector<std::string>& inputs, double fps, double p, const std
     std::vector<std::vector<double>> columns(kNumQualityScores);
     for (const std::string& file : joint_files(inputs)) {
         const auto v = quality_scores(score_motion(joint_sequence_from_array(read_npy(file), file, 22, 3, fps)));
-        char row[256];
-        std::snprintf(row, sizeof row, ",%.4f,%.4f,%.4f,%.3f,%.2f,%.2f\n", v[0], v[1], v[2], v[3], v[4], v[5]);
-        csv += file + row;
+        csv += file;
+        const int decimals[] = {4, 4, 4, 3, 2, 2};
+        for (size_t i = 0; i < kNumQualityScores; ++i) csv += "," + fixed_text(v[i], decimals[i]);
+        csv += "\n";
         for (size_t i = 0; i < kNumQualityScores; ++i) columns[i].push_back(v[i]);
     }
     if (columns[0].empty()) throw Error("motion quality", "inputs", "at least one joints .npy");

@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "core/hash.hpp"
 #include "core/npy.hpp"
+#include "core/number_text.hpp"
 #include "core/output_path.hpp"
 #include "core/parse.hpp"
 #include "core/progress.hpp"
@@ -114,11 +115,7 @@ std::vector<std::pair<int, int>> spread(const std::vector<std::pair<int, int>>& 
     return out;
 }
 
-std::string decimal(double x) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.9g", x);
-    return buf;
-}
+std::string decimal(double x) { return general_text(x, 9); }
 
 // The recording at its capture rate (capture_fps_for), or nothing when that is 20 fps or less: the clip itself
 // then is the capture.

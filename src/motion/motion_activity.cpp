@@ -6,6 +6,7 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "core/number_text.hpp"
 #include "motion/activity_names.hpp"
 
 namespace t2imu {
@@ -48,13 +49,9 @@ CsvTable MotionActivityClassifier::reference_table() const {
     CsvTable t;
     t.header = {"activity", "subject"};
     for (const char* name : kMotionDescriptorNames) t.header.push_back(name);
-    char buf[32];
     for (const ActivityExample& e : reference_) {
         std::vector<std::string> row = {e.activity, e.subject};
-        for (double v : e.descriptors) {
-            std::snprintf(buf, sizeof buf, "%.6g", v);
-            row.push_back(buf);
-        }
+        for (double v : e.descriptors) row.push_back(general_text(v, 6));
         t.rows.push_back(row);
     }
     return t;

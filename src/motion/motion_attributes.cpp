@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "core/number_text.hpp"
 #include "motion/foot_contacts.hpp"
 #include "motion/foot_landings.hpp"
 #include "motion/motion_descriptors.hpp"
@@ -374,11 +375,7 @@ MotionAttributes measure_attributes(const JointSequence& m, const std::string& s
 }
 
 std::vector<std::pair<std::string, std::string>> attribute_fields(const MotionAttributes& a) {
-    const auto num = [](double v, int decimals) {
-        char buf[64];
-        std::snprintf(buf, sizeof buf, "%.*f", decimals, std::abs(v) < 1e9 ? v : 0.0);
-        return std::string(buf);
-    };
+    const auto num = [](double v, int decimals) { return fixed_text(v, decimals); };
     std::string transitions;
     for (Transition t : a.transitions) transitions += (transitions.empty() ? "" : "+") + std::string(transition_name(t));
     return {{"duration_s", num(a.duration_s, 2)},
