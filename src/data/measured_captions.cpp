@@ -238,7 +238,8 @@ const std::vector<AttributeWords>& attribute_words() {
         {"stride_long", {"long"}},
         {"stride_short", {"short", "small"}},
         {"lean", {"leaning", "bent"}},
-        {"lying_side", {"side", "stomach", "face"}},
+        {"lying_side", {"side"}},
+        {"lying_front", {"stomach", "front"}},  // not "face": face up and face down share it
         {"sequence", {"then", "again"}},
         {"count", {"once", "twice", "times", "several", "repeatedly"}},
         {"jump_high", {"high"}},
