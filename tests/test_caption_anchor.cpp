@@ -79,14 +79,19 @@ TEST(CaptionIndex, CaptionsNamingThePromptsAttributesRankFirst) {
                                      {"lying", "lies"}},
                              "captions.tsv");
     const std::string prompt = "walks forward slowly";
-    const auto by_words = index.nearest(prompt, 3, "walking");
+    // By meaning alone (the default) the nearer captions come first.
+    const auto by_meaning = index.nearest(prompt, 3, "walking");
+    ASSERT_EQ(by_meaning.size(), 3u);
+    EXPECT_NE(index.captions()[by_meaning[0].index].text, "walks slowly");
+    EXPECT_GE(by_meaning[0].similarity, by_meaning[1].similarity);
+    const auto by_words = index.nearest(prompt, 3, "walking", true);
     ASSERT_EQ(by_words.size(), 3u);
     EXPECT_EQ(index.captions()[by_words[0].index].text, "walks slowly");  // names pace_slow
     EXPECT_GT(by_words[1].similarity, by_words[0].similarity);            // the others are nearer by meaning
     EXPECT_EQ(index.captions()[by_words[1].index].text, "walks forward quickly");
     EXPECT_EQ(index.captions()[by_words[2].index].text, "walks forward");
     // Without an attribute word the order is by meaning alone.
-    const auto plain = index.nearest("walks forward", 1, "walking");
+    const auto plain = index.nearest("walks forward", 1, "walking", true);
     EXPECT_EQ(index.captions()[plain[0].index].text, "walks forward");
 }
 
@@ -206,6 +211,7 @@ TEST(CaptionAnchor, ModelJsonFieldsAreCheckedAndAFolderWithoutOneRefusesAWeight)
     };
     expect_refused([](nlohmann::json& j) { j["caption_anchor"]["weight"] = 1.5; }, "caption_anchor.weight");
     expect_refused([](nlohmann::json& j) { j["caption_anchor"]["neighbours"] = 0; }, "caption_anchor.neighbours");
+    expect_refused([](nlohmann::json& j) { j["caption_anchor"]["match_attributes"] = "yes"; }, "caption_anchor.match_attributes");
     expect_refused([](nlohmann::json& j) { j["caption_anchor"].erase("captions"); }, "caption_anchor.captions");
     expect_refused([](nlohmann::json& j) { j["caption_anchor"]["captions"] = "missing.tsv"; }, "missing.tsv");
     // The file is read only inside the model folder, and its errors name the field that led to it.

@@ -110,6 +110,9 @@ void load_caption_anchor(MotionModel& model, const std::string& dir, const nlohm
     const nlohmann::json w = a.value("weight", nlohmann::json());
     if (!w.is_number() || !(w.get<double>() >= 0 && w.get<double>() <= 1)) throw Error(file, "caption_anchor.weight", "a number from 0 to 1", w.dump());
     model.anchor.weight = w.get<double>();
+    const nlohmann::json match = a.value("match_attributes", nlohmann::json(false));
+    if (!match.is_boolean()) throw Error(file, "caption_anchor.match_attributes", "true or false", match.dump());
+    model.anchor.match_attributes = match.get<bool>();
     // Inside the model folder only (a model.json from elsewhere must not make t2imu read /etc/...), and any error
     // of the file names the field that led to it.
     const std::string field = file + ": caption_anchor.captions";
@@ -136,7 +139,7 @@ torch::Tensor MotionModel::condition(const std::vector<std::string>& prompts, co
     std::vector<std::string> neighbours;  // prompt-major: K per prompt, fewer when its activity has fewer captions
     std::vector<int64_t> first{0};
     for (size_t i = 0; i < prompts.size(); ++i) {
-        for (const CaptionNeighbour& n : anchor.index->nearest(prompts[i], anchor.neighbours, activities.empty() ? "" : activities[i]))
+        for (const CaptionNeighbour& n : anchor.index->nearest(prompts[i], anchor.neighbours, activities.empty() ? "" : activities[i], anchor.match_attributes))
             neighbours.push_back(anchor.index->captions()[n.index].text);
         first.push_back(static_cast<int64_t>(neighbours.size()));
     }

@@ -45,6 +45,7 @@ struct CaptionAnchor {
     std::unique_ptr<CaptionIndex> index;  // null: the folder has no caption anchor
     size_t neighbours = 0;                // K
     double weight = 0;                    // the folder's default w
+    bool match_attributes = false;        // rank captions by the prompt's attribute words first (caption_index.hpp)
 };
 
 struct MotionModel {
@@ -83,8 +84,10 @@ struct MotionModel {
 //     sentence encoder (text/nn/bert_encoder.hpp; all-MiniLM-L6-v2's model.safetensors and vocab.txt, mean
 //     pooled, unit length); sizes from the weights, the head count given; mdm.text_dim must equal its width
 //     (384 for MiniLM). Paths as for clip.
-// {"caption_anchor": {"captions": "captions.tsv", "neighbours": K, "weight": W}} (optional, glove_transformer
-// only): the caption anchor's captions (relative to the model folder), K of them blended at weight W by default.
+// {"caption_anchor": {"captions": "captions.tsv", "neighbours": K, "weight": W[, "match_attributes": B]}} (optional,
+// glove_transformer only): the caption anchor's captions (relative to the model folder), K of them blended at
+// weight W by default; B (default false) ranks them by the prompt's attribute words first. For a model trained on
+// measured captions; on models/default it cost SisFall HAR (docs/results.md, "Words that reach the motion").
 // `device` is cpu, cuda or cuda:N.
 std::unique_ptr<MotionModel> load_motion_model(const std::string& dir, const std::string& device = "cpu");
 

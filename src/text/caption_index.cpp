@@ -31,7 +31,7 @@ CaptionIndex::CaptionIndex(const WordVectors& vectors, const std::vector<Prompt>
     if (!any) throw Error(source, "captions", "at least one caption with a word of the vocabulary", std::to_string(captions_.size()) + " captions, none");
 }
 
-std::vector<CaptionNeighbour> CaptionIndex::nearest(const std::string& prompt, size_t k, const std::string& activity) const {
+std::vector<CaptionNeighbour> CaptionIndex::nearest(const std::string& prompt, size_t k, const std::string& activity, bool match_attributes) const {
     std::vector<size_t> candidates;
     if (activity.empty()) return {};
     for (size_t i = 0; i < captions_.size(); ++i)
@@ -40,7 +40,7 @@ std::vector<CaptionNeighbour> CaptionIndex::nearest(const std::string& prompt, s
     const Eigen::VectorXd e = sif_.embed(prompt);
     const double norm = e.norm();
     const Eigen::VectorXd cosines = norm > 0 ? Eigen::VectorXd(unit_ * (e / norm)) : Eigen::VectorXd::Zero(unit_.rows());
-    const std::vector<std::string> asked = attributes_asked(prompt);
+    const std::vector<std::string> asked = match_attributes ? attributes_asked(prompt) : std::vector<std::string>{};
     std::vector<size_t> shared(captions_.size(), 0);
     for (size_t i : candidates) shared[i] = attributes_shared(asked, named_[i]);
     std::sort(candidates.begin(), candidates.end(), [&](size_t a, size_t b) {
