@@ -86,7 +86,8 @@ TEST(MotionSource, RetrievalDrawsFromEveryClipTiedWithTheKth) {
 
 TEST(MotionSource, RetrievalRanksClipsNamingThePromptsAttributesFirst) {
     // Five walks captioned "a person walks" match "a person walks slowly" best by meaning ("slowly" is not in the
-    // vocabulary); the one whose caption says "slowly" ranks above them and is drawn.
+    // vocabulary); over a build with measured captions the one whose caption says "slowly" ranks above them and is
+    // drawn, over one without it never is.
     const std::string data = misleading_dataset("retrieval_attributes");
     CsvTable clips;
     clips.header = {"id", "activity_tags", "split"};
@@ -95,7 +96,12 @@ TEST(MotionSource, RetrievalRanksClipsNamingThePromptsAttributesFirst) {
         clips.rows.push_back({"c" + std::to_string(k), "walking", "train"});
     }
     write_csv(data + "/clips.csv", clips);
+    auto by_meaning = open_motion_source("retrieval:" + data, SampleOptions{}, "cpu", data + "/vocab.safetensors");
+    EXPECT_FALSE(by_meaning->describe()["match_attributes"].get<bool>());
+    EXPECT_FALSE(clips_drawn(*by_meaning, "a person walks slowly", "walking").count("c5"));
+    std::ofstream(data + "/summary.json") << R"({"clips": 6, "measured_captions": 1})";
     auto source = open_motion_source("retrieval:" + data, SampleOptions{}, "cpu", data + "/vocab.safetensors");
+    EXPECT_TRUE(source->describe()["match_attributes"].get<bool>());
     EXPECT_EQ(clips_drawn(*source, "a person walks", "walking"), (std::set<std::string>{"c0", "c1", "c2", "c3", "c4"}));
     EXPECT_TRUE(clips_drawn(*source, "a person walks slowly", "walking").count("c5"));
 }

@@ -11,6 +11,7 @@
 
 #include "core/csv.hpp"
 #include "core/error.hpp"
+#include "core/json_file.hpp"
 #include "core/npy.hpp"
 #include "core/parse.hpp"
 #include "data/clip_activities.hpp"
@@ -94,6 +95,17 @@ struct CaptureCopy {
     double start_s = 0;  // its first frame's time after the clip's first frame, s
 };
 
+// Whether DATASET was built with measured captions (summary.json's measured_captions above 0): only then do its
+// captions name attributes often enough to rank by them. Over a build without them, "slowly" would send every such
+// prompt to the few clips whose human caption says so (the caption anchor did that to models/default).
+bool has_measured_captions(const std::string& dataset) {
+    const std::string path = dataset + "/summary.json";
+    if (!std::filesystem::exists(path)) return false;
+    const nlohmann::json summary = read_json_file(path);
+    return summary.is_object() && summary.contains("measured_captions") && summary.at("measured_captions").is_number() &&
+           summary.at("measured_captions").get<double>() > 0;
+}
+
 // Every copy clips.csv names, checked before any draw: its rate positive, its start within one capture frame
 // before the clip's, its file present.
 std::map<std::string, CaptureCopy> capture_copies(const std::string& dataset) {
@@ -147,7 +159,7 @@ class RetrievalSource : public MotionSource {
 public:
     RetrievalSource(const std::string& dataset, const std::string& vocab, const std::string& activity_reference)
         : dataset_(dataset), vocab_(WordVectors::load(vocab.empty() ? default_vocab() : vocab)), sif_(vocab_, 1e-4),
-          clips_(Hml3dDataset(dataset, "train").clips()), capture_(capture_copies(dataset)) {
+          clips_(Hml3dDataset(dataset, "train").clips()), capture_(capture_copies(dataset)), match_attributes_(has_measured_captions(dataset)) {
         if (clips_.empty()) throw Error(dataset, "train split", "at least one clip to retrieve");
         const auto tags = read_clip_activities(dataset);
         std::optional<MotionActivityClassifier> classifier;
@@ -199,7 +211,8 @@ public:
 
     nlohmann::json describe() const override {
         return {{"kind", "retrieval"}, {"dataset", dataset_}, {"split", "train"}, {"clips", clips_.size()},
-                {"top_k", kRetrievalTopK}, {"time_warp", kRetrievalWarp}, {"activity_classifier", !classes_.empty()}};
+                {"top_k", kRetrievalTopK}, {"time_warp", kRetrievalWarp}, {"activity_classifier", !classes_.empty()},
+                {"match_attributes", match_attributes_}};
     }
 
     nlohmann::json draw_record(size_t i) const override { return i < records_.size() ? records_[i] : nlohmann::json(); }
@@ -250,7 +263,7 @@ private:
     // anchor ranks, text/caption_index.hpp).
     std::vector<size_t> nearest_clips(const std::string& prompt, const std::vector<size_t>& candidates) const {
         const Eigen::VectorXd p = sif_.embed(prompt);
-        const std::vector<std::string> asked = attributes_asked(prompt);
+        const std::vector<std::string> asked = match_attributes_ ? attributes_asked(prompt) : std::vector<std::string>{};
         struct Scored { size_t shared; double similarity; size_t clip; };
         std::vector<Scored> scored;
         for (size_t c : candidates) {
@@ -285,6 +298,7 @@ private:
     std::vector<std::string> classes_;            // the classifier's classes (empty without one)
     std::unique_ptr<CaptionIndex> index_;         // every caption under its clip's activities
     std::map<std::string, CaptureCopy> capture_;   // by clip file id: the clips with a capture-rate copy
+    bool match_attributes_ = false;                // rank by attribute words first (has_measured_captions)
     std::vector<nlohmann::json> records_;         // per motion of the last generate()
     std::vector<std::optional<JointSequence>> capture_rate_;  // likewise
 };

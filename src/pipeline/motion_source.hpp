@@ -9,8 +9,9 @@
 // name ("sprints" -> running, "goes upstairs" -> stairs_up). Candidates come in tiers, the first non-empty one
 // used: clips whose activity tags (DATASET/clips.csv) name the activity and whose motion the activity classifier
 // places in that activity (when a classifier is given and has a class for the activity); clips whose tags name it; every clip (no activity asked or none tagged).
-// Within the tier each clip scores by its best caption: the most of the prompt's attributes it names (slowly,
-// left, then: data/measured_captions.hpp), then the SIF similarity (GloVe, a = 1e-4, as the activity categoriser); a sample takes one of the kRetrievalTopK best at random (with every clip
+// Within the tier each clip scores by its best caption: the SIF similarity (GloVe, a = 1e-4, as the activity
+// categoriser), and over a build with measured captions first the most of the prompt's attributes it names
+// (slowly, left, then: data/measured_captions.hpp); a sample takes one of the kRetrievalTopK best at random (with every clip
 // tied with the k-th: derived clips share their captions, hundreds to a sentence, and a tie broken by clip order
 // drew every stairs motion from the first-listed recordings' acted walks), time-warps it by
 // a factor in [1 - kRetrievalWarp, 1 + kRetrievalWarp] (the dataset holds the left-right mirrors already) and
