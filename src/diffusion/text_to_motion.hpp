@@ -86,8 +86,9 @@ struct MotionModel {
 //     (384 for MiniLM). Paths as for clip.
 // {"caption_anchor": {"captions": "captions.tsv", "neighbours": K, "weight": W[, "match_attributes": B]}} (optional,
 // glove_transformer only): the caption anchor's captions (relative to the model folder), K of them blended at
-// weight W by default; B (default false) ranks them by the prompt's attribute words first. For a model trained on
-// measured captions; on models/default it cost SisFall HAR (docs/results.md, "Words that reach the motion").
+// weight W by default; B (default false) ranks them by the prompt's attribute words first: for a model trained on
+// measured captions (on models/default it cost SisFall HAR: docs/attributes.md, "The anchor and retrieval match
+// the words").
 // `device` is cpu, cuda or cuda:N.
 std::unique_ptr<MotionModel> load_motion_model(const std::string& dir, const std::string& device = "cpu");
 
