@@ -20,19 +20,7 @@
 namespace t2imu {
 namespace {
 
-// Words as given coordinates on the first axes, padded to 100 dimensions (at least three axes in use: SIF
-// removes the captions' common direction, which in a plane would leave every caption on one line).
-WordVectors axis_vocabulary(const std::vector<std::pair<std::string, std::vector<float>>>& words) {
-    std::vector<std::string> names;
-    std::vector<float> v;
-    for (const auto& [w, coordinates] : words) {
-        names.push_back(w);
-        std::vector<float> row(WordVectors::kDims, 0.0f);
-        std::copy(coordinates.begin(), coordinates.end(), row.begin());
-        v.insert(v.end(), row.begin(), row.end());
-    }
-    return WordVectors(names, v);
-}
+using test::axis_vocabulary;
 
 TEST(CaptionIndex, SearchesOnlyTheAskedActivityNearestFirst) {
     const WordVectors vocab = axis_vocabulary({{"climbs", {1, 0, 0, 0, 0}},

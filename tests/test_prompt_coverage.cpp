@@ -7,6 +7,7 @@
 #include <iterator>
 
 #include "core/error.hpp"
+#include "test_util.hpp"
 #include "text/prompt_coverage.hpp"
 
 using namespace t2imu;
@@ -14,17 +15,8 @@ using namespace t2imu;
 namespace {
 
 WordVectors vocabulary() {
-    const std::vector<std::pair<std::string, std::vector<float>>> words = {
-        {"walks", {1, 0, 0, 0}}, {"left", {0, 1, 0, 0}}, {"slowly", {0, 0, 1, 0}}, {"runs", {0, 0, 0, 1}}, {"irons", {0.5f, 0.5f, 0.5f, 0}}};
-    std::vector<std::string> names;
-    std::vector<float> v;
-    for (const auto& [w, c] : words) {
-        names.push_back(w);
-        std::vector<float> row(WordVectors::kDims, 0.0f);
-        std::copy(c.begin(), c.end(), row.begin());
-        v.insert(v.end(), row.begin(), row.end());
-    }
-    return WordVectors(names, v);
+    return test::axis_vocabulary(
+        {{"walks", {1, 0, 0, 0}}, {"left", {0, 1, 0, 0}}, {"slowly", {0, 0, 1, 0}}, {"runs", {0, 0, 0, 1}}, {"irons", {0.5f, 0.5f, 0.5f, 0}}});
 }
 
 }  // namespace

@@ -170,4 +170,16 @@ std::string error_message(const std::function<void()>& f) {
     return "";
 }
 
+WordVectors axis_vocabulary(const std::vector<std::pair<std::string, std::vector<float>>>& words) {
+    std::vector<std::string> names;
+    std::vector<float> v;
+    for (const auto& [w, coordinates] : words) {
+        names.push_back(w);
+        std::vector<float> row(WordVectors::kDims, 0.0f);
+        std::copy(coordinates.begin(), coordinates.end(), row.begin());
+        v.insert(v.end(), row.begin(), row.end());
+    }
+    return WordVectors(names, v);
+}
+
 }  // namespace t2imu::test

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "text/word_vectors.hpp"
 
 namespace t2imu::test {
 
@@ -76,5 +77,9 @@ constexpr double kPi = 3.14159265358979323846;
 
 // The message of the t2imu::Error `f` throws; a test failure and "" when it throws none.
 std::string error_message(const std::function<void()>& f);
+
+// Words as given coordinates on the first axes, padded to WordVectors::kDims (use at least three axes: SIF removes
+// the captions' common direction, which in a plane would leave every caption on one line).
+WordVectors axis_vocabulary(const std::vector<std::pair<std::string, std::vector<float>>>& words);
 
 }  // namespace t2imu::test
