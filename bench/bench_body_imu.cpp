@@ -21,7 +21,8 @@ static void BM_FitBody(benchmark::State& state) {
     const JointSequence clip = example_clip_10s();
     const ProceduralBody body(paper_bodies()[2]);
     for (auto _ : state) benchmark::DoNotOptimize(fit_body(clip, body));
-    state.counters["frames/s"] = benchmark::Counter(static_cast<double>(state.iterations() * clip.num_frames), benchmark::Counter::kIsRate);
+    state.counters["frames/s"] =
+        benchmark::Counter(static_cast<double>(state.iterations() * clip.num_frames), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_FitBody)->Unit(benchmark::kMicrosecond);
 
@@ -50,6 +51,7 @@ static void BM_Clip10sPaper8Realworld(benchmark::State& state) {
     VirtualImuOptions options;
     options.rate_hz = 50;
     for (auto _ : state)
-        for (const BodySpec& b : paper_bodies()) benchmark::DoNotOptimize(synthesize_body_imu(clip, b, sensors, options));
+        for (const BodySpec& b : paper_bodies())
+            benchmark::DoNotOptimize(synthesize_body_imu(clip, b, sensors, options));
 }
 BENCHMARK(BM_Clip10sPaper8Realworld)->Unit(benchmark::kMillisecond);

@@ -19,13 +19,15 @@ static void BM_JointsToFeatures(benchmark::State& state) {
     const JointSequence s = example_motion_196();
     for (auto _ : state) benchmark::DoNotOptimize(joints_to_features(s));
     state.SetItemsProcessed(state.iterations() * s.num_frames);
-    state.counters["frames/s"] = benchmark::Counter(static_cast<double>(state.iterations() * s.num_frames), benchmark::Counter::kIsRate);
+    state.counters["frames/s"] =
+        benchmark::Counter(static_cast<double>(state.iterations() * s.num_frames), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_JointsToFeatures)->Unit(benchmark::kMillisecond);
 
 static void BM_RecoverFromRic(benchmark::State& state) {
     const FeatureMatrix f = joints_to_features(example_motion_196());
     for (auto _ : state) benchmark::DoNotOptimize(recover_from_ric(f));
-    state.counters["frames/s"] = benchmark::Counter(static_cast<double>(state.iterations() * f.rows()), benchmark::Counter::kIsRate);
+    state.counters["frames/s"] =
+        benchmark::Counter(static_cast<double>(state.iterations() * f.rows()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_RecoverFromRic)->Unit(benchmark::kMicrosecond);

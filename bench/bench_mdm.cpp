@@ -27,22 +27,39 @@ static void BM_MdmGuidedStepLegacy(benchmark::State& state) {
     LegacyMdm model(guided_step_config(state));
     model->eval();
     const int64_t batch = state.range(1);
-    const torch::Tensor x = torch::randn({batch, 263, 1, 120}), t = torch::full({batch}, 500, torch::kInt64), text = torch::randn({batch, 512});
+    const torch::Tensor x = torch::randn({batch, 263, 1, 120}), t = torch::full({batch}, 500, torch::kInt64),
+                        text = torch::randn({batch, 512});
     for (auto _ : state) {
-        const torch::Tensor both = model->forward(torch::cat({x, x}), torch::cat({t, t}), torch::cat({text, torch::zeros_like(text)}));
-        benchmark::DoNotOptimize((both.narrow(0, batch, batch) + 2.5 * (both.narrow(0, 0, batch) - both.narrow(0, batch, batch))).data_ptr());
+        const torch::Tensor both =
+            model->forward(torch::cat({x, x}), torch::cat({t, t}), torch::cat({text, torch::zeros_like(text)}));
+        benchmark::DoNotOptimize(
+            (both.narrow(0, batch, batch) + 2.5 * (both.narrow(0, 0, batch) - both.narrow(0, batch, batch)))
+                .data_ptr());
     }
-    state.counters["motions/s per step"] = benchmark::Counter(static_cast<double>(state.iterations() * batch), benchmark::Counter::kIsRate);
+    state.counters["motions/s per step"] =
+        benchmark::Counter(static_cast<double>(state.iterations() * batch), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_MdmGuidedStepLegacy)->Args({512, 1})->Args({512, 16})->Args({256, 1})->Args({256, 16})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_MdmGuidedStepLegacy)
+    ->Args({512, 1})
+    ->Args({512, 16})
+    ->Args({256, 1})
+    ->Args({256, 16})
+    ->Unit(benchmark::kMillisecond);
 
 static void BM_MdmGuidedStep(benchmark::State& state) {
     torch::NoGradGuard no_grad;
     Mdm model(guided_step_config(state));
     model->eval();
     const int64_t batch = state.range(1);
-    const torch::Tensor x = torch::randn({batch, 263, 1, 120}), t = torch::full({batch}, 500, torch::kInt64), text = torch::randn({batch, 512});
+    const torch::Tensor x = torch::randn({batch, 263, 1, 120}), t = torch::full({batch}, 500, torch::kInt64),
+                        text = torch::randn({batch, 512});
     for (auto _ : state) benchmark::DoNotOptimize(model->forward_guided(x, t, text, 2.5).data_ptr());
-    state.counters["motions/s per step"] = benchmark::Counter(static_cast<double>(state.iterations() * batch), benchmark::Counter::kIsRate);
+    state.counters["motions/s per step"] =
+        benchmark::Counter(static_cast<double>(state.iterations() * batch), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_MdmGuidedStep)->Args({512, 1})->Args({512, 16})->Args({256, 1})->Args({256, 16})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_MdmGuidedStep)
+    ->Args({512, 1})
+    ->Args({512, 16})
+    ->Args({256, 1})
+    ->Args({256, 16})
+    ->Unit(benchmark::kMillisecond);

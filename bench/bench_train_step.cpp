@@ -32,7 +32,6 @@ static const bool kReuseFreedMemory = (keep_freed_memory_for_reuse(), true);
 
 namespace {
 
-
 // 70e56c2's loop body on one process: returns the seconds of steps 2..steps.
 double legacy_steps(const TrainConfig& c, int64_t steps) {
     Hml3dDataset data(c.dataset, c.split);
@@ -49,8 +48,10 @@ double legacy_steps(const TrainConfig& c, int64_t steps) {
     std::vector<torch::Tensor> ema;
     for (const torch::Tensor& p : params) ema.push_back(p.detach().clone());
     const GaussianDiffusion diffusion(cosine_schedule(c.diffusion_steps));
-    const torch::Tensor mean = torch::from_blob(const_cast<double*>(data.stats().mean.data()), {263}, torch::kFloat64).to(torch::kFloat32);
-    const torch::Tensor std = torch::from_blob(const_cast<double*>(data.stats().std.data()), {263}, torch::kFloat64).to(torch::kFloat32);
+    const torch::Tensor mean =
+        torch::from_blob(const_cast<double*>(data.stats().mean.data()), {263}, torch::kFloat64).to(torch::kFloat32);
+    const torch::Tensor std =
+        torch::from_blob(const_cast<double*>(data.stats().std.data()), {263}, torch::kFloat64).to(torch::kFloat32);
     torch::Generator generator = at::detail::createCPUGenerator(c.seed);
     std::mt19937_64 rng(c.seed + 1);
     std::bernoulli_distribution drop(c.cond_dropout);
@@ -63,10 +64,13 @@ double legacy_steps(const TrainConfig& c, int64_t steps) {
             if (drop(rng)) caption.clear();
         const torch::Tensor t = torch::randint(c.diffusion_steps, {b.size}, generator, torch::kInt64);
         const torch::Tensor noise = torch::randn({b.size, b.channels, 1, b.frames}, generator);
-        const torch::Tensor x0 = torch::from_blob(const_cast<float*>(b.features.data()), {b.size, b.frames, b.channels}, torch::kFloat32).clone();
+        const torch::Tensor x0 =
+            torch::from_blob(const_cast<float*>(b.features.data()), {b.size, b.frames, b.channels}, torch::kFloat32)
+                .clone();
         const torch::Tensor lengths = torch::tensor(std::vector<int64_t>(b.lengths.begin(), b.lengths.end()));
         const torch::Tensor x_t = diffusion.q_sample(x0.permute({0, 2, 1}).unsqueeze(2), t, noise);
-        const torch::Tensor x0_hat = mdm->forward(x_t, t, text->encode(captions), lengths).squeeze(2).permute({0, 2, 1});
+        const torch::Tensor x0_hat =
+            mdm->forward(x_t, t, text->encode(captions), lengths).squeeze(2).permute({0, 2, 1});
         const LossTerms terms = mdm_loss_terms(x0, x0_hat, lengths, mean, std, c);
         optimiser.zero_grad();
         terms.total.backward();
@@ -83,8 +87,10 @@ double legacy_steps(const TrainConfig& c, int64_t steps) {
 // range(0): batch; range(1): 0 old, 32 fp32, 16 bf16.
 static void BM_TrainStep(benchmark::State& state) {
     const std::string root = T2IMU_SOURCE_DIR;
-    if (!std::filesystem::exists(root + "/cache/dataset/summary.json") || !std::filesystem::exists(root + "/cache/text/glove-100k.safetensors")) {
-        state.SkipWithError("needs cache/dataset and cache/text/glove-100k.safetensors (scripts/setup.sh, then t2imu data build)");
+    if (!std::filesystem::exists(root + "/cache/dataset/summary.json") ||
+        !std::filesystem::exists(root + "/cache/text/glove-100k.safetensors")) {
+        state.SkipWithError(
+            "needs cache/dataset and cache/text/glove-100k.safetensors (scripts/setup.sh, then t2imu data build)");
         return;
     }
     TrainConfig c = read_train_config(root + "/experiments/train-default.toml");
@@ -115,8 +121,17 @@ static void BM_TrainStep(benchmark::State& state) {
     state.SetLabel(path == 0 ? "old (70e56c2)" : c.precision);
     state.counters["samples/s"] = c.batch / step;
     if (path == 0) return;
-    for (const auto& [name, part] : {std::pair<const char*, double>{"data%", p.data}, {"text%", p.text}, {"fwd%", p.forward},
-                                     {"bwd%", p.backward}, {"opt%", p.optimiser}, {"ema%", p.ema}})
+    for (const auto& [name, part] : {std::pair<const char*, double>{"data%", p.data},
+                                     {"text%", p.text},
+                                     {"fwd%", p.forward},
+                                     {"bwd%", p.backward},
+                                     {"opt%", p.optimiser},
+                                     {"ema%", p.ema}})
         state.counters[name] = 100 * part / n / step;
 }
-BENCHMARK(BM_TrainStep)->ArgsProduct({{64, 256}, {0, 32, 16}})->ArgNames({"batch", "path"})->UseManualTime()->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK(BM_TrainStep)
+    ->ArgsProduct({{64, 256}, {0, 32, 16}})
+    ->ArgNames({"batch", "path"})
+    ->UseManualTime()
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);

@@ -11,7 +11,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         const t2imu::BvhMotion m = t2imu::parse_bvh(std::string(reinterpret_cast<const char*>(data), size), "fuzz.bvh");
         for (int f = 0; f < m.num_frames && f < 64; ++f) (void)t2imu::bvh_forward_kinematics(m, t2imu::bvh_pose(m, f));
         (void)t2imu::format_bvh(m);
-    } catch (const t2imu::Error&) {
-    }
+    } catch (const t2imu::Error&) {}
     return 0;
 }

@@ -13,7 +13,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const std::string manifest = write_fuzz_file("manifest.csv", data, size);
     try {
         (void)t2imu::read_imu_dataset(std::filesystem::path(manifest).parent_path().string(), /*load_samples=*/false);
-    } catch (const t2imu::Error&) {
-    }
+    } catch (const t2imu::Error&) {}
     return 0;
 }

@@ -54,7 +54,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     try {
         t2imu::write_imu_recording(csv, s);
     } catch (const t2imu::Error&) {
-        if (in_range || std::filesystem::exists(csv)) std::abort();  // refused only what its range excludes, writing nothing
+        if (in_range || std::filesystem::exists(csv))
+            std::abort();  // refused only what its range excludes, writing nothing
         return 0;
     }
     if (!in_range) std::abort();
@@ -68,6 +69,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (back.size() != 1 || back[0].samples.size() != n) std::abort();
     for (size_t k = 0; k < n; ++k)
         for (int c = 0; c < 6; ++c)
-            if (std::fabs(back[0].samples[k][c] - values[6 * k + c]) > 5e-7 + 1e-12 * std::fabs(values[6 * k + c])) std::abort();
+            if (std::fabs(back[0].samples[k][c] - values[6 * k + c]) > 5e-7 + 1e-12 * std::fabs(values[6 * k + c]))
+                std::abort();
     return 0;
 }

@@ -13,11 +13,11 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     try {
-        const nlohmann::json doc = t2imu::parse_json_text(std::string(reinterpret_cast<const char*>(data), size), "fuzz.json");
+        const nlohmann::json doc =
+            t2imu::parse_json_text(std::string(reinterpret_cast<const char*>(data), size), "fuzz.json");
         const t2imu::JobMarker m = t2imu::parse_job_marker(doc, "fuzz.json");
         const nlohmann::json back = t2imu::job_marker_json(m);
         if (t2imu::job_marker_json(t2imu::parse_job_marker(back, "back.json")) != back) std::abort();
-    } catch (const t2imu::Error&) {
-    }
+    } catch (const t2imu::Error&) {}
     return 0;
 }

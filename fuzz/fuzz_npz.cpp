@@ -8,7 +8,6 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     try {
         (void)t2imu::parse_npz(data, size, "fuzz.npz");
-    } catch (const t2imu::Error&) {
-    }
+    } catch (const t2imu::Error&) {}
     return 0;
 }

@@ -12,8 +12,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     for (t2imu::PromptActivity a : {t2imu::PromptActivity::optional, t2imu::PromptActivity::required}) {
         try {
             (void)t2imu::parse_prompt_set(text, "fuzz.tsv", a);
-        } catch (const t2imu::Error&) {
-        }
+        } catch (const t2imu::Error&) {}
     }
     return 0;
 }

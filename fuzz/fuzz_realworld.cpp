@@ -13,15 +13,16 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     static const bool folders = [] {
-        std::filesystem::create_directories(std::filesystem::path(write_fuzz_file("probe", nullptr, 0)).parent_path() / "proband1/data");
+        std::filesystem::create_directories(std::filesystem::path(write_fuzz_file("probe", nullptr, 0)).parent_path() /
+                                            "proband1/data");
         return true;
     }();
     (void)folders;
     const std::string archive = write_fuzz_file("proband1/data/acc_walking_csv.zip", data, size);
     try {
         std::vector<std::string> skipped;
-        (void)t2imu::read_realworld_proband(std::filesystem::path(archive).parent_path().parent_path().string(), &skipped);
-    } catch (const t2imu::Error&) {
-    }
+        (void)t2imu::read_realworld_proband(std::filesystem::path(archive).parent_path().parent_path().string(),
+                                            &skipped);
+    } catch (const t2imu::Error&) {}
     return 0;
 }

@@ -10,7 +10,6 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     try {
         (void)t2imu::parse_placement_toml(std::string(reinterpret_cast<const char*>(data), size), "fuzz.toml");
-    } catch (const t2imu::Error&) {
-    }
+    } catch (const t2imu::Error&) {}
     return 0;
 }

@@ -1,5 +1,5 @@
-// libFuzzer target: a UMAFall release file (an ADL walking trial) of arbitrary bytes through read_umafall_file. A t2imu::Error is a
-// correct answer; a crash, a hang or a sanitizer report is a bug.
+// libFuzzer target: a UMAFall release file (an ADL walking trial) of arbitrary bytes through read_umafall_file. A
+// t2imu::Error is a correct answer; a crash, a hang or a sanitizer report is a bug.
 #include <cstddef>
 #include <cstdint>
 
@@ -9,8 +9,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     try {
-        (void)t2imu::read_umafall_file(write_fuzz_file("UMAFall_Subject_01_ADL_Walking_1_2017-04-14_23-38-23.csv", data, size));
-    } catch (const t2imu::Error&) {
-    }
+        (void)t2imu::read_umafall_file(
+            write_fuzz_file("UMAFall_Subject_01_ADL_Walking_1_2017-04-14_23-38-23.csv", data, size));
+    } catch (const t2imu::Error&) {}
     return 0;
 }

@@ -115,7 +115,8 @@ int expect_catch22_feature(const std::vector<Catch22Reference>& cases, const std
         const auto it = c.expected.find(feature);
         if (it == c.expected.end()) continue;
         const double got = compute(c);
-        EXPECT_TRUE(catch22_close(got, it->second)) << feature << " of " << c.name << ": " << got << " vs reference " << it->second;
+        EXPECT_TRUE(catch22_close(got, it->second))
+            << feature << " of " << c.name << ": " << got << " vs reference " << it->second;
         ++checked;
     }
     return checked;
@@ -124,9 +125,10 @@ int expect_catch22_feature(const std::vector<Catch22Reference>& cases, const std
 }  // namespace t2imu::test
 
 // Sets `var` to the reference cases, or skips the test when the shared data is missing.
-#define CATCH22_REFERENCE_OR_SKIP(var)                                                                      \
-    do {                                                                                                  \
-        var = ::t2imu::test::catch22_reference_cases();                                                   \
-        if (var.empty()) GTEST_SKIP() << "shared data not found: reference/catch22"                       \
-                                      << " (expects ../shared/data beside the checkout or $T2IMU_SHARED_DATA)"; \
+#define CATCH22_REFERENCE_OR_SKIP(var)                                                             \
+    do {                                                                                           \
+        var = ::t2imu::test::catch22_reference_cases();                                            \
+        if (var.empty())                                                                           \
+            GTEST_SKIP() << "shared data not found: reference/catch22"                             \
+                         << " (expects ../shared/data beside the checkout or $T2IMU_SHARED_DATA)"; \
     } while (0)

@@ -25,8 +25,14 @@ inline std::string heading_anchor(const std::string& heading) {
         const unsigned char c = static_cast<unsigned char>(heading[i]);
         if (c >= 0x80) {
             // "±" (C2 B1), "–" and "—" (E2 80 93/94) are punctuation to GitHub; other UTF-8 is kept as letters.
-            if (c == 0xC2 && i + 1 < heading.size() && static_cast<unsigned char>(heading[i + 1]) == 0xB1) { ++i; continue; }
-            if (c == 0xE2 && i + 2 < heading.size()) { i += 2; continue; }
+            if (c == 0xC2 && i + 1 < heading.size() && static_cast<unsigned char>(heading[i + 1]) == 0xB1) {
+                ++i;
+                continue;
+            }
+            if (c == 0xE2 && i + 2 < heading.size()) {
+                i += 2;
+                continue;
+            }
             out += heading[i];
         } else if (std::isalnum(c) || c == '-' || c == '_') {
             out += static_cast<char>(std::tolower(c));

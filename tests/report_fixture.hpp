@@ -23,8 +23,8 @@ namespace t2imu::test {
 JointSequence fixture_walk(int frames, double stride_hz = 1.0);
 
 // A recording of `seconds` at `rate_hz` with acc = (0, 9.81 + amplitude sin(2 pi hz t), 0) m/s^2, gyro zero.
-ImuRecording sine_recording(const std::string& path, const std::string& activity, const std::string& position, double amplitude,
-                            double hz, double rate_hz = 64, double seconds = 4);
+ImuRecording sine_recording(const std::string& path, const std::string& activity, const std::string& position,
+                            double amplitude, double hz, double rate_hz = 64, double seconds = 4);
 
 void write_synth_fixture(const std::string& dir);
 void write_real_fixture(const std::string& dir);

@@ -7,8 +7,8 @@
 #include <set>
 
 #include "analysis/lacc_analysis.hpp"
-#include "core/error.hpp"
 #include "core/csv.hpp"
+#include "core/error.hpp"
 #include "test_util.hpp"
 
 using namespace t2imu;
@@ -17,8 +17,9 @@ namespace {
 
 // Every word on its own axis, so "a person is running" is exactly the Running description.
 WordVectors axis_vocabulary() {
-    const std::vector<std::string> words = {"a", "person", "is", "dancing", "jumping", "lying", "down", "running", "sitting",
-                                            "climbing", "stairs", "standing", "walking", "waves", "hand"};
+    const std::vector<std::string> words = {"a",      "person",   "is",      "dancing", "jumping",
+                                            "lying",  "down",     "running", "sitting", "climbing",
+                                            "stairs", "standing", "walking", "waves",   "hand"};
     std::vector<float> v(words.size() * 100, 0.f);
     for (size_t i = 0; i < words.size(); ++i) v[i * 100 + i] = 1;
     return WordVectors(words, v);
@@ -44,10 +45,14 @@ TEST(LaccAnalysis, MeansAndRelativeChangePerCategory) {
     const WordVectors v = axis_vocabulary();
     const SifEncoder sif(v);
     const ActivityCategorizer c(sif, 0.5);
-    const std::vector<LaccSample> before = {{"1", "a person is running", 2.0}, {"2", "a person is running", 4.0},
-                                            {"3", "a person is walking", 1.0}, {"4", "person waves hand", 5.0}};
-    const std::vector<LaccSample> after = {{"2", "a person is running", 3.0}, {"1", "a person is running", 1.5},
-                                           {"3", "a person is walking", 0.9}, {"4", "person waves hand", 5.0}};
+    const std::vector<LaccSample> before = {{"1", "a person is running", 2.0},
+                                            {"2", "a person is running", 4.0},
+                                            {"3", "a person is walking", 1.0},
+                                            {"4", "person waves hand", 5.0}};
+    const std::vector<LaccSample> after = {{"2", "a person is running", 3.0},
+                                           {"1", "a person is running", 1.5},
+                                           {"3", "a person is walking", 0.9},
+                                           {"4", "person waves hand", 5.0}};
     const LaccAnalysis a = analyse_lacc(before, after, c);
     ASSERT_EQ(a.categories.size(), 3u);  // Running, Walking, Other
     EXPECT_EQ(a.categories[0].name, "Running");
@@ -67,9 +72,11 @@ TEST(ActivityCategories, TauCalibratedOnTheMocapTagsBeatsTheMajorityLabel) {
     SHARED_OR_SKIP(captions_path, "mocap/captions.csv");
     SHARED_OR_SKIP(manifest_path, "mocap/manifest.csv");
     const std::string vocab = test::source_dir() + "/cache/text/glove-100k.safetensors";
-    if (!std::filesystem::exists(vocab)) GTEST_SKIP() << "cache/text/glove-100k.safetensors absent (scripts/setup.sh makes it)";
-    const std::map<std::string, std::string> tag_to_category = {{"walking", "Walking"}, {"running", "Running"}, {"dancing", "Dancing"},
-                                                                {"jumping", "Jumping"}, {"lying", "Lying"}, {"other", "Other"}};
+    if (!std::filesystem::exists(vocab))
+        GTEST_SKIP() << "cache/text/glove-100k.safetensors absent (scripts/setup.sh makes it)";
+    const std::map<std::string, std::string> tag_to_category = {{"walking", "Walking"}, {"running", "Running"},
+                                                                {"dancing", "Dancing"}, {"jumping", "Jumping"},
+                                                                {"lying", "Lying"},     {"other", "Other"}};
     const CsvTable manifest = read_csv(manifest_path), captions = read_csv(captions_path);
     std::map<std::string, std::string> tag_of;
     for (const auto& row : manifest.rows) tag_of[row[manifest.column("file")]] = row[manifest.column("activity_tags")];

@@ -40,10 +40,11 @@ TEST(ActivityConfusion, SynthFolderRowsArePromptedActivitiesOfKeptJobs) {
     ASSERT_EQ(t.rows, (std::vector<std::string>{"running", "walking"}));  // j00002 (walking) was dropped
     ASSERT_EQ(t.columns, (std::vector<std::string>{"standing", "walking"}));
     EXPECT_EQ(t.counts, (std::vector<std::vector<long>>{{0, 1}, {0, 1}}));  // both motions are the walk
-    EXPECT_EQ(t.expected, (std::vector<std::string>{"", "walking"}));  // no class of this reference shows running
+    EXPECT_EQ(t.expected, (std::vector<std::string>{"", "walking"}));       // no class of this reference shows running
     EXPECT_EQ(t.right(), 1);
     EXPECT_EQ(t.total(), 1);
     std::filesystem::remove(dir + "/jobs/j00000.json");
     std::filesystem::remove(dir + "/jobs/j00001.json");
-    EXPECT_NE(test::error_message([&] { synth_confusion(classifier, dir); }).find("at least one kept motion"), std::string::npos);
+    EXPECT_NE(test::error_message([&] { synth_confusion(classifier, dir); }).find("at least one kept motion"),
+              std::string::npos);
 }

@@ -24,9 +24,9 @@ TEST(ActivityNames, DataSetLabelsBecomeCanonicalNames) {
 TEST(ActivityNames, SynonymsAndPhrasesNameTheActivity) {
     const std::map<std::string, std::string> cases = {
         {"Someone sprints forward as fast as possible.", "running"},
-        {"The person trots forward for several steps.", "running"},   // steps without a direction: not stairs
-        {"A person jogs quickly down a hallway.", "running"},           // down without a stair word: not stairs
-        {"A man runs straight ahead with big strides.", "running"},    // strides belong to the run
+        {"The person trots forward for several steps.", "running"},  // steps without a direction: not stairs
+        {"A person jogs quickly down a hallway.", "running"},        // down without a stair word: not stairs
+        {"A man runs straight ahead with big strides.", "running"},  // strides belong to the run
         {"A woman walks up several steps.", "stairs_up"},
         {"A person climbs down a staircase.", "stairs_down"},
         {"A person is climbing stairs.", "stairs_up"},

@@ -31,8 +31,9 @@ JointSequence gliding(int frames, double speed, double pelvis_height) {
     return m;
 }
 
-void add_clip(const std::string& dir, CsvTable& clips, const std::string& id, const std::string& tags, const std::string& mirrored,
-              const std::string& subject, const std::string& source, const std::string& provenance, const JointSequence& joints) {
+void add_clip(const std::string& dir, CsvTable& clips, const std::string& id, const std::string& tags,
+              const std::string& mirrored, const std::string& subject, const std::string& source,
+              const std::string& provenance, const JointSequence& joints) {
     clips.rows.push_back({id, tags, mirrored, subject, source, provenance});
     write_npy(dir + "/new_joints/" + id + ".npy", joint_sequence_to_array(joints));
 }
@@ -44,13 +45,14 @@ std::string make_dataset(const std::string& name, bool with_examples) {
     clips.header = {"id", "activity_tags", "mirrored", "subject", "source_dataset", "provenance"};
     if (with_examples) {
         add_clip(dir, clips, "000001", "walking", "0", "1", "cmu", "", gliding(40, 1.0, 0.9));
-        add_clip(dir, clips, "M000001", "walking", "1", "1", "cmu", "", gliding(40, 1.0, 0.9));         // mirrored copy
+        add_clip(dir, clips, "M000001", "walking", "1", "1", "cmu", "", gliding(40, 1.0, 0.9));  // mirrored copy
         add_clip(dir, clips, "000003", "sitting", "0", "1", "hdm05", "", gliding(30, 0.0, 0.5));
         add_clip(dir, clips, "000004", "stairs_up", "0", "1", "edited",
-                 R"({"derived_from":"a.bvh","source_dataset":"cmu","method":"stairs"})", gliding(30, 0.4, 0.9));  // derived
-        add_clip(dir, clips, "000005", "running", "0", "2", "bandai", "", gliding(2, 3.0, 0.9));          // 2 frames
+                 R"({"derived_from":"a.bvh","source_dataset":"cmu","method":"stairs"})",
+                 gliding(30, 0.4, 0.9));                                                          // derived
+        add_clip(dir, clips, "000005", "running", "0", "2", "bandai", "", gliding(2, 3.0, 0.9));  // 2 frames
     }
-    add_clip(dir, clips, "000002", "walking;running", "0", "1", "cmu", "", gliding(40, 2.0, 0.9));      // two tags
+    add_clip(dir, clips, "000002", "walking;running", "0", "1", "cmu", "", gliding(40, 2.0, 0.9));  // two tags
     add_clip(dir, clips, "000006", "other", "0", "3", "cmu", "", gliding(40, 0.5, 0.9));
     add_clip(dir, clips, "000007", "", "0", "3", "cmu", "", gliding(40, 0.5, 0.9));
     write_csv(dir + "/clips.csv", clips);

@@ -138,8 +138,11 @@ TEST(AsfAmc, ReadsFiles) {
 
 TEST(AsfAmc, RefusesBadAsfNamingTheLine) {
     std::string m = test::error_message([] { parse_asf(":units\n  length -1\n", "neg.asf"); });
-    EXPECT_TRUE(test::contains(m, "neg.asf") && test::contains(m, "line 2") && test::contains(m, "positive length unit")) << m;
-    m = test::error_message([] { parse_asf(":bonedata\n begin\n name a\n direction 0 1 0\n length 1\n end\n", "nohier.asf"); });
+    EXPECT_TRUE(test::contains(m, "neg.asf") && test::contains(m, "line 2") &&
+                test::contains(m, "positive length unit"))
+        << m;
+    m = test::error_message(
+        [] { parse_asf(":bonedata\n begin\n name a\n direction 0 1 0\n length 1\n end\n", "nohier.asf"); });
     EXPECT_TRUE(test::contains(m, "nohier.asf") && test::contains(m, ":hierarchy")) << m;
     std::string undefined = kAsf;
     undefined.replace(undefined.find("lfemur ltibia"), 13, "lfemur lfoot");
@@ -148,19 +151,26 @@ TEST(AsfAmc, RefusesBadAsfNamingTheLine) {
     std::string bad_dof = kAsf;
     bad_dof.replace(bad_dof.find("dof rx\n"), 7, "dof rw\n");
     m = test::error_message([&] { parse_asf(bad_dof, "dof.asf"); });
-    EXPECT_TRUE(test::contains(m, "dof.asf") && test::contains(m, "line") && test::contains(m, "degree of freedom") && test::contains(m, "rw")) << m;
+    EXPECT_TRUE(test::contains(m, "dof.asf") && test::contains(m, "line") && test::contains(m, "degree of freedom") &&
+                test::contains(m, "rw"))
+        << m;
 }
 
 TEST(AsfAmc, RefusesBadAmcNamingTheLine) {
     const AsfSkeleton s = parse_asf(kAsf, "test.asf");
     std::string m = test::error_message([&] { parse_amc("1\nroot 1 2 3 0 0 0\nltibia -90 5\n", s, "count.amc"); });
-    EXPECT_TRUE(test::contains(m, "count.amc") && test::contains(m, "line 3") && test::contains(m, "1 values for ltibia")) << m;
+    EXPECT_TRUE(test::contains(m, "count.amc") && test::contains(m, "line 3") &&
+                test::contains(m, "1 values for ltibia"))
+        << m;
     m = test::error_message([&] { parse_amc("1\nlhumerus 0 0 0\n", s, "bone.amc"); });
-    EXPECT_TRUE(test::contains(m, "bone.amc") && test::contains(m, "line 2") && test::contains(m, "a bone of the ASF skeleton") && test::contains(m, "lhumerus")) << m;
+    EXPECT_TRUE(test::contains(m, "bone.amc") && test::contains(m, "line 2") &&
+                test::contains(m, "a bone of the ASF skeleton") && test::contains(m, "lhumerus"))
+        << m;
     m = test::error_message([&] { parse_amc("1\nltibia/end\n", s, "end.amc"); });  // an End Site has no values
     EXPECT_TRUE(test::contains(m, "a bone of the ASF skeleton")) << m;
     m = test::error_message([&] { parse_amc("ltibia 0\n1\n", s, "order.amc"); });
-    EXPECT_TRUE(test::contains(m, "order.amc") && test::contains(m, "line 1") && test::contains(m, "frame number")) << m;
+    EXPECT_TRUE(test::contains(m, "order.amc") && test::contains(m, "line 1") && test::contains(m, "frame number"))
+        << m;
     m = test::error_message([&] { parse_amc("1\nltibia abc\n", s, "num.amc"); });
     EXPECT_TRUE(test::contains(m, "num.amc") && test::contains(m, "line 2") && test::contains(m, "abc")) << m;
     m = test::error_message([&] { parse_amc(":FULLY-SPECIFIED\n", s, "empty.amc"); });

@@ -33,10 +33,11 @@ JointSequence lifted(int frames, Height height) {
 }  // namespace
 
 TEST(AttributeBenchmark, TheSpeedRatioIsTheFastMedianOverTheSlowMedian) {
-    std::vector<AttributeDraw> d = {draw("walking", "walks slowly", 0.6), draw("walking", "strolls slowly", 0.8), draw("walking", "walks slowly", 1.0),
-                                    draw("walking", "walks quickly", 1.5), draw("walking", "hurries", 1.7), draw("walking", "walks fast", 1.9),
+    std::vector<AttributeDraw> d = {draw("walking", "walks slowly", 0.6), draw("walking", "strolls slowly", 0.8),
+                                    draw("walking", "walks slowly", 1.0), draw("walking", "walks quickly", 1.5),
+                                    draw("walking", "hurries", 1.7),      draw("walking", "walks fast", 1.9),
                                     draw("walking", "walks", 5.0),  // asks no pace: not counted
-                                    draw("running", "jogs", 2.0), draw("running", "sprints", 5.0)};
+                                    draw("running", "jogs", 2.0),         draw("running", "sprints", 5.0)};
     const AttributeBenchmark b = attribute_benchmark(d);
     ASSERT_EQ(b.speed.count("walking"), 1u);
     EXPECT_DOUBLE_EQ(b.speed.at("walking").ratio(), 1.7 / 0.8);
@@ -45,9 +46,10 @@ TEST(AttributeBenchmark, TheSpeedRatioIsTheFastMedianOverTheSlowMedian) {
 }
 
 TEST(AttributeBenchmark, TurnsCountOnlyInTheAskedDirectionAndSize) {
-    const AttributeBenchmark b = attribute_benchmark({draw("walking", "walks and turns left", 1, 60), draw("walking", "turns to the left", 1, -60),
-                                                      draw("walking", "turns left", 1, 20), draw("walking", "turns right", 1, -90),
-                                                      draw("walking", "turns around", 1, -170), draw("walking", "turns around", 1, 100)});
+    const AttributeBenchmark b = attribute_benchmark(
+        {draw("walking", "walks and turns left", 1, 60), draw("walking", "turns to the left", 1, -60),
+         draw("walking", "turns left", 1, 20), draw("walking", "turns right", 1, -90),
+         draw("walking", "turns around", 1, -170), draw("walking", "turns around", 1, 100)});
     EXPECT_EQ(b.checks.at("turn_left").passed, 1);
     EXPECT_EQ(b.checks.at("turn_left").checked, 3);
     EXPECT_EQ(b.checks.at("turn_right").passed, 1);
@@ -60,11 +62,14 @@ TEST(AttributeBenchmark, BackwardAndSequences) {
     AttributeDraw back = draw("walking", "walks backwards", 1), forward = draw("walking", "walks backward", 1);
     back.attributes.travel = TravelDirection::backward, forward.attributes.travel = TravelDirection::forward;
     // Up 0.6 m and back down over 8 s, against a climb that stays up.
-    const AttributeDraw trip = measure_draw("stairs", "goes up the stairs and then back down", lifted(160, [](int f) { return 0.6 * std::sin(M_PI * f / 159); }));
-    const AttributeDraw climb = measure_draw("stairs", "walks up and then keeps going", lifted(160, [](int f) { return 0.6 * f / 159; }));
+    const AttributeDraw trip = measure_draw("stairs", "goes up the stairs and then back down",
+                                            lifted(160, [](int f) { return 0.6 * std::sin(M_PI * f / 159); }));
+    const AttributeDraw climb =
+        measure_draw("stairs", "walks up and then keeps going", lifted(160, [](int f) { return 0.6 * f / 159; }));
     EXPECT_NEAR(trip.pelvis_peak_above_ends_m, 0.6, 0.01);
     EXPECT_NEAR(climb.pelvis_peak_above_ends_m, 0.0, 1e-9);
-    AttributeDraw sit = draw("sitting", "sits down and then stands up", 0), stay = draw("sitting", "sits down and then stands up", 0);
+    AttributeDraw sit = draw("sitting", "sits down and then stands up", 0),
+                  stay = draw("sitting", "sits down and then stands up", 0);
     sit.attributes.transitions = {Transition::sit_down, Transition::stand_up};
     stay.attributes.transitions = {Transition::stand_up, Transition::sit_down};
     const AttributeBenchmark b = attribute_benchmark({back, forward, trip, climb, sit, stay});

@@ -13,8 +13,12 @@ TEST(Autocast, Bf16ScopeRunsProductsInBfloat16AndRestores) {
         const torch::Tensor c = torch::matmul(a, b);
         EXPECT_EQ(c.scalar_type(), torch::kBFloat16);
         // bfloat16 keeps 8 significant bits: the product is within 2^-7 of float32's, relative to its scale.
-        EXPECT_LT((c.to(torch::kFloat32) - torch::matmul(a.to(torch::kFloat64), b.to(torch::kFloat64)).to(torch::kFloat32)).abs().max().item<double>(),
-                  torch::matmul(a, b).abs().max().item<double>() / 64);
+        EXPECT_LT(
+            (c.to(torch::kFloat32) - torch::matmul(a.to(torch::kFloat64), b.to(torch::kFloat64)).to(torch::kFloat32))
+                .abs()
+                .max()
+                .item<double>(),
+            torch::matmul(a, b).abs().max().item<double>() / 64);
         {
             const AutocastScope inner(torch::Device(torch::kCPU), Precision::kBFloat16);
             EXPECT_EQ(torch::matmul(a, b).scalar_type(), torch::kBFloat16);
@@ -30,7 +34,8 @@ TEST(Autocast, Fp32ScopeChangesNothing) {
 }
 
 TEST(Autocast, PrecisionNamesRoundTripAndOthersAreRefusedByField) {
-    for (const Precision p : {Precision::kFloat32, Precision::kBFloat16}) EXPECT_EQ(parse_precision(precision_name(p), "c.toml", "train.precision"), p);
+    for (const Precision p : {Precision::kFloat32, Precision::kBFloat16})
+        EXPECT_EQ(parse_precision(precision_name(p), "c.toml", "train.precision"), p);
     try {
         parse_precision("fp16", "c.toml", "train.precision");
         FAIL() << "fp16 accepted";

@@ -8,8 +8,8 @@
 #include "core/safetensors.hpp"
 #include "diffusion/text_to_motion.hpp"
 #include "nn/state_dict.hpp"
-#include "text/nn/bert_encoder.hpp"
 #include "test_util.hpp"
+#include "text/nn/bert_encoder.hpp"
 
 using namespace t2imu;
 
@@ -33,8 +33,9 @@ void save_hf(BertEncoder& m, const std::string& path, const std::string& drop = 
         if (p.key() == drop) continue;
         torch::Tensor v = p.value().detach().contiguous();
         if (wrong_shape && p.key() == "embeddings.word_embeddings.weight") v = v.narrow(0, 0, 10).contiguous();
-        st.tensors["bert." + p.key()] = NdArray::from(std::vector<float>(v.data_ptr<float>(), v.data_ptr<float>() + v.numel()),
-                                                      std::vector<int64_t>(v.sizes().begin(), v.sizes().end()));
+        st.tensors["bert." + p.key()] =
+            NdArray::from(std::vector<float>(v.data_ptr<float>(), v.data_ptr<float>() + v.numel()),
+                          std::vector<int64_t>(v.sizes().begin(), v.sizes().end()));
     }
     st.tensors["bert.pooler.dense.weight"] = NdArray::from(std::vector<float>(32 * 32, 0.1f), {32, 32});
     write_safetensors(path, st);
@@ -46,9 +47,10 @@ TEST(BertEncoder, HuggingFaceKeyNames) {
     BertEncoder m(small());
     std::vector<std::string> names;
     for (const auto& p : m->named_parameters()) names.push_back(p.key());
-    for (const char* key : {"embeddings.word_embeddings.weight", "embeddings.LayerNorm.weight", "encoder.layer.0.attention.self.query.weight",
-                            "encoder.layer.1.attention.output.LayerNorm.bias", "encoder.layer.1.intermediate.dense.weight",
-                            "encoder.layer.0.output.dense.bias"})
+    for (const char* key :
+         {"embeddings.word_embeddings.weight", "embeddings.LayerNorm.weight",
+          "encoder.layer.0.attention.self.query.weight", "encoder.layer.1.attention.output.LayerNorm.bias",
+          "encoder.layer.1.intermediate.dense.weight", "encoder.layer.0.output.dense.bias"})
         EXPECT_NE(std::find(names.begin(), names.end(), key), names.end()) << key;
     EXPECT_EQ(names.size(), 5u + 2 * 16u);  // 3 embeddings + LayerNorm (2) + 16 tensors per layer
 }
@@ -62,12 +64,13 @@ TEST(BertEncoder, LoadsByNameMasksPaddingAndNormalises) {
     save_hf(source, dir + "/w.safetensors");
     load_bert_weights(target, dir + "/w.safetensors");
     torch::NoGradGuard no_grad;
-    const std::vector<std::vector<int64_t>> ids = {{101 % 200, 7, 19, 102 % 200}, {101 % 200, 7, 19, 44, 55, 66, 102 % 200}};
+    const std::vector<std::vector<int64_t>> ids = {{101 % 200, 7, 19, 102 % 200},
+                                                   {101 % 200, 7, 19, 44, 55, 66, 102 % 200}};
     const torch::Tensor a = source->encode(ids), b = target->encode(ids);
     EXPECT_EQ(a.sizes(), (std::vector<int64_t>{2, 32}));
-    EXPECT_LT((a - b).abs().max().item<double>(), 1e-6);                                    // loaded exactly
-    EXPECT_NEAR(a.norm(2, 1).min().item<double>(), 1.0, 1e-5);                              // unit vectors
-    EXPECT_LT((source->encode({ids[0]})[0] - a[0]).abs().max().item<double>(), 1e-5);        // padding is invisible
+    EXPECT_LT((a - b).abs().max().item<double>(), 1e-6);                               // loaded exactly
+    EXPECT_NEAR(a.norm(2, 1).min().item<double>(), 1.0, 1e-5);                         // unit vectors
+    EXPECT_LT((source->encode({ids[0]})[0] - a[0]).abs().max().item<double>(), 1e-5);  // padding is invisible
     save_hf(source, dir + "/missing.safetensors", "encoder.layer.1.output.dense.weight");
     EXPECT_THROW(load_bert_weights(target, dir + "/missing.safetensors"), Error);
     save_hf(source, dir + "/shape.safetensors", "", true);
@@ -85,7 +88,8 @@ TEST(BertEncoder, RefusesAnUnexpectedKeyByName) {
         load_bert_weights(m, dir + "/extra.safetensors");
         FAIL() << "an unexpected key was accepted";
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("bert.encoder.layer.9.output.dense.weight"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("bert.encoder.layer.9.output.dense.weight"), std::string::npos)
+            << e.what();
     }
 }
 
@@ -99,7 +103,15 @@ TEST(BertEncoder, ModelFolderWithAMiniLMTextEncoder) {
     save_hf(bert, dir + "/minilm.safetensors");
     {
         std::ofstream vocab(dir + "/vocab.txt");
-        for (int i = 0; i < 200; ++i) vocab << (i == 0 ? "[PAD]" : i == 100 ? "[UNK]" : i == 101 ? "[CLS]" : i == 102 ? "[SEP]" : i == 7 ? "person" : i == 19 ? "walks" : "tok" + std::to_string(i)) << "\n";
+        for (int i = 0; i < 200; ++i)
+            vocab << (i == 0     ? "[PAD]"
+                      : i == 100 ? "[UNK]"
+                      : i == 101 ? "[CLS]"
+                      : i == 102 ? "[SEP]"
+                      : i == 7   ? "person"
+                      : i == 19  ? "walks"
+                                 : "tok" + std::to_string(i))
+                  << "\n";
     }
     MdmConfig mc;
     mc.latent_dim = 32;
@@ -112,7 +124,14 @@ TEST(BertEncoder, ModelFolderWithAMiniLMTextEncoder) {
     write_npy(dir + "/Mean.npy", NdArray::from(std::vector<double>(263, 0.0), {263}));
     write_npy(dir + "/Std.npy", NdArray::from(std::vector<double>(263, 1.0), {263}));
     nlohmann::json meta = {
-        {"mdm", {{"latent_dim", 32}, {"ff_size", 64}, {"num_layers", 1}, {"num_heads", 2}, {"dropout", 0.1}, {"text_dim", 32}, {"mask_frames", false}}},
+        {"mdm",
+         {{"latent_dim", 32},
+          {"ff_size", 64},
+          {"num_layers", 1},
+          {"num_heads", 2},
+          {"dropout", 0.1},
+          {"text_dim", 32},
+          {"mask_frames", false}}},
         {"text_encoder", {{"kind", "minilm"}, {"weights", "minilm.safetensors"}, {"vocab", "vocab.txt"}, {"heads", 4}}},
         {"diffusion", {{"steps", 10}}}};
     std::ofstream(dir + "/model.json") << meta.dump();
@@ -121,7 +140,12 @@ TEST(BertEncoder, ModelFolderWithAMiniLMTextEncoder) {
     EXPECT_EQ(model->minilm->config().intermediate, 64);
     torch::NoGradGuard no_grad;
     // "person walks" -> [CLS] person walks [SEP] = 101 7 19 102 with this vocabulary.
-    EXPECT_LT((model->encode_text({"person walks"}) - bert->encode(std::vector<std::vector<int64_t>>{{101, 7, 19, 102}})).abs().max().item<double>(), 1e-6);
+    EXPECT_LT(
+        (model->encode_text({"person walks"}) - bert->encode(std::vector<std::vector<int64_t>>{{101, 7, 19, 102}}))
+            .abs()
+            .max()
+            .item<double>(),
+        1e-6);
     SampleOptions o;
     o.frames = 8;
     o.sampler = Sampler::ddim;

@@ -38,8 +38,8 @@ TEST(BodySpec, ParsesMeasurementsPresetsAndRefusesNonsense) {
     const BodySpec smpl = parse_body_specs("smpl:/x/model.npz,betas=0.5;-1")[0];
     EXPECT_EQ(smpl.smpl_path, "/x/model.npz");
     EXPECT_EQ(smpl.betas, (std::vector<double>{0.5, -1}));
-    for (const char* bad : {"preset:giant", "height=172,mass=70", "height=abc,mass=70,sex=m", "height=900,mass=70,sex=m",
-                            "tall", "smpl:", "preset:male_tall+preset:male_tall"})
+    for (const char* bad : {"preset:giant", "height=172,mass=70", "height=abc,mass=70,sex=m",
+                            "height=900,mass=70,sex=m", "tall", "smpl:", "preset:male_tall+preset:male_tall"})
         EXPECT_THROW(parse_body_specs(bad), Error) << bad;
 }
 
@@ -60,7 +60,7 @@ Moments moments(const std::vector<double>& v) {
 }  // namespace
 
 TEST(BodyPopulation, DrawsHaveThePopulationsMomentsPerSex) {
-    const BodyPopulation p;  // the defaults: the paper's averages, NCHS spreads
+    const BodyPopulation p;        // the defaults: the paper's averages, NCHS spreads
     std::vector<BodySpec> bodies;  // four seeds of the largest population: 4000 independent draws
     for (int seed = 7; seed < 11; ++seed) {
         const std::vector<BodySpec> drawn = parse_body_specs("population:1000,seed=" + std::to_string(seed));
@@ -90,7 +90,8 @@ TEST(BodyPopulation, DrawsHaveThePopulationsMomentsPerSex) {
 }
 
 TEST(BodyPopulation, SeededPrefixStableAndExactSexShare) {
-    const std::vector<BodySpec> eight = parse_body_specs("population:8,seed=3"), four = parse_body_specs("population:4,seed=3");
+    const std::vector<BodySpec> eight = parse_body_specs("population:8,seed=3"),
+                                four = parse_body_specs("population:4,seed=3");
     for (size_t i = 0; i < four.size(); ++i) {
         EXPECT_EQ(four[i].name, eight[i].name);
         EXPECT_DOUBLE_EQ(four[i].height_m, eight[i].height_m);
@@ -110,9 +111,10 @@ TEST(BodyPopulation, SeededPrefixStableAndExactSexShare) {
     EXPECT_EQ(women, 3);
     EXPECT_EQ(parse_body_specs("population:11")[10].name.substr(0, 6), "pop10_");
     EXPECT_EQ(parse_body_specs("population:11")[0].name.substr(0, 6), "pop00_");
-    for (const char* bad : {"population:0", "population:2.5", "population:", "population:3,female=2", "population:3,height_m=175",
-                            "population:3,height_m=175:30", "population:3,bmi_f=25:-1", "population:3,foo=1", "population:3,seed=-1",
-                            "population:1001", "population:3+population:3"})
+    for (const char* bad :
+         {"population:0", "population:2.5", "population:", "population:3,female=2", "population:3,height_m=175",
+          "population:3,height_m=175:30", "population:3,bmi_f=25:-1", "population:3,foo=1", "population:3,seed=-1",
+          "population:1001", "population:3+population:3"})
         EXPECT_THROW(parse_body_specs(bad), Error) << bad;
 }
 
@@ -122,12 +124,13 @@ TEST(ProceduralBody, PresetsHaveTheTablesHeightsAndMasses) {
         EXPECT_NEAR(body.vertex_height(), spec.height_m, 1e-12) << spec.name;
         double lowest = 1e9;
         for (const Vector3d& j : body.rest_joints()) lowest = std::min(lowest, j.y());
-        EXPECT_GT(lowest, 0.0) << spec.name;                          // every joint above the floor
+        EXPECT_GT(lowest, 0.0) << spec.name;  // every joint above the floor
         EXPECT_NEAR(body.rest_joints()[left_ankle].y(), 0.039 * spec.height_m, 1e-12);
         // The limb frusta hold de Leva's limb mass shares at the model's density (hands in the forearms):
         // male 2 x 24.80 %, female 2 x 25.37 % of 99.99 %.
         const double share = spec.sex == Sex::male ? 2 * 24.80 / 100.0 : 2 * 25.37 / 99.99;
-        EXPECT_NEAR(body.limb_volume_m3() * ProceduralBody::kDensity, share * spec.mass_kg, 1e-9 * spec.mass_kg) << spec.name;
+        EXPECT_NEAR(body.limb_volume_m3() * ProceduralBody::kDensity, share * spec.mass_kg, 1e-9 * spec.mass_kg)
+            << spec.name;
     }
 }
 
@@ -177,7 +180,9 @@ TEST(ProceduralBody, SexChangesBreadthsNotStature) {
     BodySpec m = parse_body_specs("height=170,mass=65,sex=m")[0], f = parse_body_specs("height=170,mass=65,sex=f")[0];
     const ProceduralBody male(m), female(f);
     EXPECT_DOUBLE_EQ(male.vertex_height(), female.vertex_height());
-    const auto width = [](const ProceduralBody& b, int l, int r) { return (b.rest_joints()[l] - b.rest_joints()[r]).norm(); };
+    const auto width = [](const ProceduralBody& b, int l, int r) {
+        return (b.rest_joints()[l] - b.rest_joints()[r]).norm();
+    };
     EXPECT_GT(width(female, left_hip, right_hip), width(male, left_hip, right_hip));
     EXPECT_LT(width(female, left_shoulder, right_shoulder), width(male, left_shoulder, right_shoulder));
 }

@@ -47,8 +47,10 @@ TEST(BodyModel, MakesTheProceduralBodyOfTheSpec) {
 TEST(BodyModel, SurfacePointsFaceTheDocumentedDirections) {
     const auto body = make_body(procedural(1.75, 70));
     // The left thigh halfway down: around 0 = front (+Z), +pi/2 = the body's left (+X), pi = back, -pi/2 = right.
-    const std::pair<double, Vector3d> expected[] = {{0, Vector3d::UnitZ()}, {M_PI / 2, Vector3d::UnitX()},
-                                                    {M_PI, -Vector3d::UnitZ()}, {-M_PI / 2, -Vector3d::UnitX()}};
+    const std::pair<double, Vector3d> expected[] = {{0, Vector3d::UnitZ()},
+                                                    {M_PI / 2, Vector3d::UnitX()},
+                                                    {M_PI, -Vector3d::UnitZ()},
+                                                    {-M_PI / 2, -Vector3d::UnitX()}};
     const Vector3d hip = body->rest_joints()[left_hip], knee = body->rest_joints()[left_knee];
     const Vector3d axis = (knee - hip).normalized();
     for (const auto& [around, direction] : expected) {

@@ -78,7 +78,8 @@ TEST(BodyVibration, AMotionlessSensorAndGainZeroAreLeftUnchanged) {
     BodyVibration v;
     v.gain = 1;
     add_body_vibration(v, 3, &still);
-    for (size_t k = 0; k < still.acc.size(); ++k) EXPECT_LT((still.acc[k] - before.acc[k]).norm(), 1e-12);  // the level's rounding
+    for (size_t k = 0; k < still.acc.size(); ++k)
+        EXPECT_LT((still.acc[k] - before.acc[k]).norm(), 1e-12);  // the level's rounding
     ImuSignals moving = swaying(2);
     const ImuSignals unchanged = moving;
     add_body_vibration(BodyVibration(), 3, &moving);
@@ -97,13 +98,17 @@ TEST(BodyVibration, DrawsAreReproducibleFromTheSeed) {
 }
 
 TEST(BodyVibration, RealismKeysAreValidatedAndRecorded) {
-    const RealismModel m = parse_realism_toml("base = \"sisfall\"\nvibration_gain = 0.15\nvibration_low_hz = 4\nvibration_high_hz = 10\n", "r.toml");
+    const RealismModel m = parse_realism_toml(
+        "base = \"sisfall\"\nvibration_gain = 0.15\nvibration_low_hz = 4\nvibration_high_hz = 10\n", "r.toml");
     EXPECT_DOUBLE_EQ(m.to_json()["vibration_gain"].get<double>(), 0.15);
     EXPECT_DOUBLE_EQ(m.to_json()["vibration_low_hz"].get<double>(), 4);
     EXPECT_DOUBLE_EQ(m.to_json()["vibration_high_hz"].get<double>(), 10);
     EXPECT_EQ(realism_preset("sisfall").vibration.gain, 0);
-    EXPECT_TRUE(test::contains(test::error_message([] { parse_realism_toml("vibration_gain = 1.5\n", "r.toml"); }), "r.toml: vibration_gain"));
-    EXPECT_TRUE(test::contains(test::error_message([] { parse_realism_toml("vibration_low_hz = 0\n", "r.toml"); }), "r.toml: vibration_low_hz"));
-    EXPECT_TRUE(test::contains(test::error_message([] { parse_realism_toml("vibration_low_hz = 8\nvibration_high_hz = 6\n", "r.toml"); }),
-                               "r.toml: vibration_high_hz"));
+    EXPECT_TRUE(test::contains(test::error_message([] { parse_realism_toml("vibration_gain = 1.5\n", "r.toml"); }),
+                               "r.toml: vibration_gain"));
+    EXPECT_TRUE(test::contains(test::error_message([] { parse_realism_toml("vibration_low_hz = 0\n", "r.toml"); }),
+                               "r.toml: vibration_low_hz"));
+    EXPECT_TRUE(test::contains(
+        test::error_message([] { parse_realism_toml("vibration_low_hz = 8\nvibration_high_hz = 6\n", "r.toml"); }),
+        "r.toml: vibration_high_hz"));
 }

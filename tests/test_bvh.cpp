@@ -104,7 +104,8 @@ TEST(Bvh, PositionChannelsReplaceAddToOrOnlyMoveTheRootAsTheExporterMeant) {
     // Root at OFFSET (0, 1, 0) with channels (0.1, 0, 0); its child at OFFSET (0, 0.5, 0) with channels
     // (0, 0.52, 0) (a child's channels repeating its OFFSET up to a 2 cm drift, as ReActIdle's thighs).
     const std::string text =
-        "HIERARCHY\nROOT r\n{\n OFFSET 0 1 0\n CHANNELS 3 Xposition Yposition Zposition\n JOINT c\n {\n  OFFSET 0 0.5 0\n"
+        "HIERARCHY\nROOT r\n{\n OFFSET 0 1 0\n CHANNELS 3 Xposition Yposition Zposition\n JOINT c\n {\n  OFFSET 0 0.5 "
+        "0\n"
         "  CHANNELS 3 Xposition Yposition Zposition\n  End Site\n  {\n   OFFSET 0 0.1 0\n  }\n }\n}\n"
         "MOTION\nFrames: 1\nFrame Time: 0.05\n0.1 0 0 0 0.52 0\n";
     const BvhMotion m = parse_bvh(text, "channels.bvh");

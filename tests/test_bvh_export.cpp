@@ -20,7 +20,8 @@ TEST(BvhExport, ImportOfTheExportGivesTheJointsBack) {
     const JointSequence back = import_motion(dir + "/turn.bvh");
     ASSERT_EQ(back.num_frames, joints.num_frames);
     double worst = 0;
-    for (size_t i = 0; i < joints.positions.size(); ++i) worst = std::max(worst, (back.positions[i] - joints.positions[i]).norm());
+    for (size_t i = 0; i < joints.positions.size(); ++i)
+        worst = std::max(worst, (back.positions[i] - joints.positions[i]).norm());
     EXPECT_LT(worst, 1e-4);
 }
 

@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <functional>
 #include <fstream>
+#include <functional>
 
 #include "core/atomic_file.hpp"
 #include "core/csv.hpp"
@@ -28,11 +28,18 @@ TEST(CaptionIndex, SearchesOnlyTheAskedActivityNearestFirst) {
                                                {"walks", {0, 0, 1, 0, 0}},
                                                {"strolls", {0, 0, 0.8f, 0.6f, 0}},
                                                {"lies", {0, 0, 0, 0, 1}}});
-    const CaptionIndex index(vocab, {{"stairs_down", "descends"}, {"stairs_up", "climbs"}, {"walking", "strolls"}, {"walking", "walks"},
-                                     {"walking", "walks"}, {"lying", "lies"}, {"other", "zzz"}},
+    const CaptionIndex index(vocab,
+                             {{"stairs_down", "descends"},
+                              {"stairs_up", "climbs"},
+                              {"walking", "strolls"},
+                              {"walking", "walks"},
+                              {"walking", "walks"},
+                              {"lying", "lies"},
+                              {"other", "zzz"}},
                              "captions.tsv");
     ASSERT_EQ(index.captions().size(), 6u);  // the repeated (walking, walks) kept once
-    // "climbs" is nearer "descends" (cosine 0.91) than any other caption, but a stairs_up prompt searches stairs_up's captions only.
+    // "climbs" is nearer "descends" (cosine 0.91) than any other caption, but a stairs_up prompt searches stairs_up's
+    // captions only.
     const auto up = index.nearest("climbs", 5, "stairs_up");
     ASSERT_EQ(up.size(), 1u);
     EXPECT_EQ(index.captions()[up[0].index].text, "climbs");
@@ -61,10 +68,16 @@ TEST(CaptionIndex, SearchesOnlyTheAskedActivityNearestFirst) {
 // "slowly" and "quickly" are near neighbours in GloVe; a caption naming the prompt's attribute ranks first although
 // another caption is nearer by meaning, and among captions naming as many, the nearer first.
 TEST(CaptionIndex, CaptionsNamingThePromptsAttributesRankFirst) {
-    const WordVectors vocab = axis_vocabulary({{"walks", {1, 0, 0, 0}}, {"forward", {0, 1, 0, 0}}, {"slowly", {0, 0, 1, 0}},
-                                               {"quickly", {0, 0, 0.95f, 0.3f}}, {"lies", {0, 0, 0, 1}}});
-    const CaptionIndex index(vocab, {{"walking", "walks forward quickly"}, {"walking", "walks slowly"}, {"walking", "walks forward"},
-                                     {"lying", "lies"}},
+    const WordVectors vocab = axis_vocabulary({{"walks", {1, 0, 0, 0}},
+                                               {"forward", {0, 1, 0, 0}},
+                                               {"slowly", {0, 0, 1, 0}},
+                                               {"quickly", {0, 0, 0.95f, 0.3f}},
+                                               {"lies", {0, 0, 0, 1}}});
+    const CaptionIndex index(vocab,
+                             {{"walking", "walks forward quickly"},
+                              {"walking", "walks slowly"},
+                              {"walking", "walks forward"},
+                              {"lying", "lies"}},
                              "captions.tsv");
     const std::string prompt = "walks forward slowly";
     // By meaning alone (the default) the nearer captions come first.
@@ -96,12 +109,14 @@ TEST(CaptionIndex, RefusesCaptionsWithoutAKnownWordNamingTheFile) {
 // The tiny walk dataset recaptioned and tagged: c0, c1 walking; c2, c3 running; c4, c5 untagged by clips.csv.
 std::string tagged_dataset(const std::string& name) {
     const std::string dir = test::make_tiny_motion_dataset(test::scratch_dir(name));
-    const std::vector<std::string> captions = {"a person walks forward slowly", "someone walks", "a person walks forward", "someone walks forward",
-                                               "a person walks", "slowly"};
+    const std::vector<std::string> captions = {
+        "a person walks forward slowly", "someone walks",  "a person walks forward",
+        "someone walks forward",         "a person walks", "slowly"};
     CsvTable clips;
     clips.header = {"id", "activity_tags", "split"};
     for (int k = 0; k < 6; ++k) {
-        std::ofstream(dir + "/texts/c" + std::to_string(k) + ".txt") << captions[static_cast<size_t>(k)] << "##0.0#0.0\n";
+        std::ofstream(dir + "/texts/c" + std::to_string(k) + ".txt")
+            << captions[static_cast<size_t>(k)] << "##0.0#0.0\n";
         if (k < 4) clips.rows.push_back({"c" + std::to_string(k), k < 2 ? "walking" : "running;jogging", "train"});
     }
     write_csv(dir + "/clips.csv", clips);
@@ -113,16 +128,20 @@ TEST(TrainingCaptions, TakeTheClipsTagsElseTheirWordsAndReadBackAsAPromptSet) {
     const Hml3dDataset set(data, "train");
     const std::vector<Prompt> got = training_captions(set, data);
     // jogging is running's other name: listed once; c4 and c5 have no row: their words name walking, or nothing.
-    const std::vector<std::pair<std::string, std::string>> expected = {
-        {"walking", "a person walks forward slowly"}, {"walking", "someone walks"}, {"running", "a person walks forward"},
-        {"running", "someone walks forward"},         {"walking", "a person walks"}, {"other", "slowly"}};
+    const std::vector<std::pair<std::string, std::string>> expected = {{"walking", "a person walks forward slowly"},
+                                                                       {"walking", "someone walks"},
+                                                                       {"running", "a person walks forward"},
+                                                                       {"running", "someone walks forward"},
+                                                                       {"walking", "a person walks"},
+                                                                       {"other", "slowly"}};
     ASSERT_EQ(got.size(), expected.size());
     for (size_t i = 0; i < got.size(); ++i) EXPECT_EQ(std::make_pair(got[i].activity, got[i].text), expected[i]) << i;
     const std::string path = test::scratch_dir("training_captions_out") + "/captions.tsv";
     write_training_captions(path, got);
     const std::vector<Prompt> back = read_prompt_set(path, PromptActivity::required);
     ASSERT_EQ(back.size(), got.size());
-    for (size_t i = 0; i < got.size(); ++i) EXPECT_EQ(back[i].activity + "|" + back[i].text, got[i].activity + "|" + got[i].text);
+    for (size_t i = 0; i < got.size(); ++i)
+        EXPECT_EQ(back[i].activity + "|" + back[i].text, got[i].activity + "|" + got[i].text);
     // The CLI writes the same file.
     const auto r = test::run_cli("data captions --dataset " + data + " --out " + path + ".cli");
     ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -133,7 +152,9 @@ TEST(TrainingCaptions, TakeTheClipsTagsElseTheirWordsAndReadBackAsAPromptSet) {
     EXPECT_FALSE(std::filesystem::exists(path + ".bad"));
 }
 
-torch::Tensor row_mean(MotionModel& m, const std::vector<std::string>& captions) { return m.encode_text(captions).mean(0); }
+torch::Tensor row_mean(MotionModel& m, const std::vector<std::string>& captions) {
+    return m.encode_text(captions).mean(0);
+}
 
 // A trained folder carries its captions and the anchor's defaults; the feature is the prompt's, the mean of its
 // activity's nearest captions' features, or their blend, exactly as the header's formula.
@@ -141,7 +162,8 @@ TEST(CaptionAnchor, BlendsThePromptWithItsActivitysNearestCaptions) {
     torch::set_num_threads(1);
     const std::string data = tagged_dataset("anchor_data");
     const std::string model_dir = test::scratch_dir("anchor_model") + "/model";
-    train_mdm(read_train_config(test::write_tiny_train_config(test::scratch_dir("anchor_model"), data, model_dir)), false, "", 10);
+    train_mdm(read_train_config(test::write_tiny_train_config(test::scratch_dir("anchor_model"), data, model_dir)),
+              false, "", 10);
     const nlohmann::json meta = nlohmann::json::parse(read_file_text(model_dir + "/model.json"));
     EXPECT_EQ(meta["caption_anchor"]["captions"], "captions.tsv");
     EXPECT_EQ(meta["caption_anchor"]["neighbours"], kCaptionAnchorNeighbours);
@@ -166,8 +188,9 @@ TEST(CaptionAnchor, BlendsThePromptWithItsActivitysNearestCaptions) {
     // Sampling: the folder's weight by default, --caption-anchor overrides; out-of-range refused before any work.
     std::ofstream(data + "/prompts.tsv") << "running\ta person jogs\n";
     const auto sample = [&](const std::string& out, const std::string& extra) {
-        return test::run_cli("--threads 1 sample --model " + model_dir + " --prompts " + data + "/prompts.tsv --frames 40 --sampler dpmpp --steps 3 --out " +
-                             data + "/" + out + " " + extra);
+        return test::run_cli("--threads 1 sample --model " + model_dir + " --prompts " + data +
+                             "/prompts.tsv --frames 40 --sampler dpmpp --steps 3 --out " + data + "/" + out + " " +
+                             extra);
     };
     ASSERT_EQ(sample("default", "").exit_code, 0);
     ASSERT_EQ(sample("one", "--caption-anchor 1").exit_code, 0);
@@ -184,7 +207,8 @@ TEST(CaptionAnchor, ModelJsonFieldsAreCheckedAndAFolderWithoutOneRefusesAWeight)
     torch::set_num_threads(1);
     const std::string data = tagged_dataset("anchor_fields_data");
     const std::string model_dir = test::scratch_dir("anchor_fields") + "/model";
-    train_mdm(read_train_config(test::write_tiny_train_config(test::scratch_dir("anchor_fields"), data, model_dir)), false, "", 10);
+    train_mdm(read_train_config(test::write_tiny_train_config(test::scratch_dir("anchor_fields"), data, model_dir)),
+              false, "", 10);
     const std::string good = read_file_text(model_dir + "/model.json");
     const auto expect_refused = [&](const std::function<void(nlohmann::json&)>& edit, const std::string& field) {
         nlohmann::json j = nlohmann::json::parse(good);
@@ -199,14 +223,18 @@ TEST(CaptionAnchor, ModelJsonFieldsAreCheckedAndAFolderWithoutOneRefusesAWeight)
     };
     expect_refused([](nlohmann::json& j) { j["caption_anchor"]["weight"] = 1.5; }, "caption_anchor.weight");
     expect_refused([](nlohmann::json& j) { j["caption_anchor"]["neighbours"] = 0; }, "caption_anchor.neighbours");
-    expect_refused([](nlohmann::json& j) { j["caption_anchor"]["match_attributes"] = "yes"; }, "caption_anchor.match_attributes");
+    expect_refused([](nlohmann::json& j) { j["caption_anchor"]["match_attributes"] = "yes"; },
+                   "caption_anchor.match_attributes");
     expect_refused([](nlohmann::json& j) { j["caption_anchor"].erase("captions"); }, "caption_anchor.captions");
     expect_refused([](nlohmann::json& j) { j["caption_anchor"]["captions"] = "missing.tsv"; }, "missing.tsv");
     // The file is read only inside the model folder, and its errors name the field that led to it.
-    expect_refused([](nlohmann::json& j) { j["caption_anchor"]["captions"] = "missing.tsv"; }, "model.json: caption_anchor.captions: ");
+    expect_refused([](nlohmann::json& j) { j["caption_anchor"]["captions"] = "missing.tsv"; },
+                   "model.json: caption_anchor.captions: ");
     std::ofstream(model_dir + "/../outside.tsv") << "walking\ta person walks\n";
-    expect_refused([](nlohmann::json& j) { j["caption_anchor"]["captions"] = "../outside.tsv"; }, "caption_anchor.captions: ../outside.tsv: expected a relative path inside");
-    expect_refused([](nlohmann::json& j) { j["caption_anchor"]["captions"] = "/etc/hostname"; }, "caption_anchor.captions: /etc/hostname");
+    expect_refused([](nlohmann::json& j) { j["caption_anchor"]["captions"] = "../outside.tsv"; },
+                   "caption_anchor.captions: ../outside.tsv: expected a relative path inside");
+    expect_refused([](nlohmann::json& j) { j["caption_anchor"]["captions"] = "/etc/hostname"; },
+                   "caption_anchor.captions: /etc/hostname");
     nlohmann::json none = nlohmann::json::parse(good);
     none.erase("caption_anchor");
     write_file_atomic(model_dir + "/model.json", none.dump());

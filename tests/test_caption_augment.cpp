@@ -15,8 +15,8 @@ namespace {
 WordVectors tiny_vocabulary() {
     // 2-d directions padded to 100 dimensions: the cosine of two words is the cosine of their angles.
     const std::vector<std::pair<std::string, double>> words = {{"a", 3.0},     {"person", 1.0},  {"man", 1.1},
-                                                               {"walks", 0.0},  {"strolls", 0.2}, {"walking", -0.4},
-                                                               {"runs", 0.5}, {".", 2.5}};
+                                                               {"walks", 0.0}, {"strolls", 0.2}, {"walking", -0.4},
+                                                               {"runs", 0.5},  {".", 2.5}};
     std::vector<std::string> names;
     std::vector<float> v;
     for (const auto& [w, angle] : words) {
@@ -66,16 +66,15 @@ TEST(CaptionAugment, OffLeavesTheTokensAndFullSwapRewordsEveryWordWithNeighbours
 TEST(CaptionAugment, DirectionsAndTheActivityAreKept) {
     // "up" and "down" are neighbours (cosine 0.999), as are "walks" and "runs": a swap may not turn a climb into
     // a descent or a walk into a run; "person" has no neighbour above 0.9.
-    const WordVectors vocab({"a", "person", "walks", "runs", "up", "down", "stairs"},
-                            [] {
-                                std::vector<float> v(7 * WordVectors::kDims, 0.0f);
-                                const double angles[] = {3.0, 1.5, 0.0, 0.05, -1.0, -1.05, 2.2};
-                                for (int w = 0; w < 7; ++w) {
-                                    v[static_cast<size_t>(w) * WordVectors::kDims] = static_cast<float>(std::cos(angles[w]));
-                                    v[static_cast<size_t>(w) * WordVectors::kDims + 1] = static_cast<float>(std::sin(angles[w]));
-                                }
-                                return v;
-                            }());
+    const WordVectors vocab({"a", "person", "walks", "runs", "up", "down", "stairs"}, [] {
+        std::vector<float> v(7 * WordVectors::kDims, 0.0f);
+        const double angles[] = {3.0, 1.5, 0.0, 0.05, -1.0, -1.05, 2.2};
+        for (int w = 0; w < 7; ++w) {
+            v[static_cast<size_t>(w) * WordVectors::kDims] = static_cast<float>(std::cos(angles[w]));
+            v[static_cast<size_t>(w) * WordVectors::kDims + 1] = static_cast<float>(std::sin(angles[w]));
+        }
+        return v;
+    }());
     CaptionAugmentOptions o;
     o.swap = 0.999999;
     o.min_similarity = 0.9;

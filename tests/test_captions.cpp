@@ -20,6 +20,7 @@ TEST(Captions, ParsesHumanML3DLines) {
 }
 
 TEST(Captions, SwapsLeftAndRightAsWholeWords) {
-    EXPECT_EQ(swap_left_right("Left hand up, then the right leg; LEFT again"), "Right hand up, then the left leg; RIGHT again");
+    EXPECT_EQ(swap_left_right("Left hand up, then the right leg; LEFT again"),
+              "Right hand up, then the left leg; RIGHT again");
     EXPECT_EQ(swap_left_right("he leftover rightly"), "he leftover rightly");
 }

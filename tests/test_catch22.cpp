@@ -8,10 +8,10 @@
 #include <sstream>
 
 #include "analysis/catch22.hpp"
-#include "core/csv.hpp"
-#include "imu/imu_dataset.hpp"
-#include "core/error.hpp"
 #include "catch22_reference.hpp"
+#include "core/csv.hpp"
+#include "core/error.hpp"
+#include "imu/imu_dataset.hpp"
 #include "test_util.hpp"
 
 using namespace t2imu;
@@ -60,10 +60,13 @@ TEST(Catch22, MatchesEveryReferenceOutput) {
             const double rel = std::fabs(got[k] - e) / std::max(std::fabs(e), 1e-3);
             if (rel > worst[it->first]) worst[it->first] = rel, worst_where[it->first] = c.input;
             // The printed values have 14 decimals; 1e-6 relative (1e-9 absolute floor near zero) as the issue asks.
-            EXPECT_LE(std::fabs(got[k] - e), std::max(1e-6 * std::fabs(e), 1e-9)) << it->first << " in " << c.input << ": " << got[k] << " vs " << e;
+            EXPECT_LE(std::fabs(got[k] - e), std::max(1e-6 * std::fabs(e), 1e-9))
+                << it->first << " in " << c.input << ": " << got[k] << " vs " << e;
         }
     }
-    for (const auto& [name, w] : worst) std::printf("%-45s worst relative error %.2e (%s)\n", name.c_str(), w, fs::path(worst_where[name]).filename().c_str());
+    for (const auto& [name, w] : worst)
+        std::printf("%-45s worst relative error %.2e (%s)\n", name.c_str(), w,
+                    fs::path(worst_where[name]).filename().c_str());
 }
 
 TEST(Catch22, RefusesWhatTheReferenceRefuses) {
@@ -90,7 +93,8 @@ TEST(Catch22, CliPrintsTheReferenceLines) {
         EXPECT_NEAR(gv, ev, 1e-9 * std::max(1.0, std::fabs(ev))) << g;
     }
     EXPECT_EQ(lines, 22);
-    const auto bad = test::run_cli("features catch22 --in " + fs::path(series).parent_path().parent_path().string() + "/pathological/testNaN.txt");
+    const auto bad = test::run_cli("features catch22 --in " + fs::path(series).parent_path().parent_path().string() +
+                                   "/pathological/testNaN.txt");
     EXPECT_EQ(bad.exit_code, 1) << bad.output;
 }
 

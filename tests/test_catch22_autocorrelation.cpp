@@ -58,10 +58,22 @@ TEST(Catch22Autocorrelation, MatchesTheReference) {
     std::vector<Catch22Reference> cases;
     CATCH22_REFERENCE_OR_SKIP(cases);
     using t2imu::test::expect_catch22_feature;
-    EXPECT_GE(expect_catch22_feature(cases, "CO_f1ecac", [](const Catch22Reference& c) { return first_1_e_crossing(c.acf); }), 25);
-    EXPECT_GE(expect_catch22_feature(cases, "CO_FirstMin_ac", [](const Catch22Reference& c) { return first_minimum(c.acf); }), 25);
-    EXPECT_GE(expect_catch22_feature(cases, "CO_HistogramAMI_even_2_5", [](const Catch22Reference& c) { return histogram_ami_even(c.z, 2, 5); }), 25);
-    EXPECT_GE(expect_catch22_feature(cases, "CO_trev_1_num", [](const Catch22Reference& c) { return time_reversibility(c.z); }), 25);
-    EXPECT_GE(expect_catch22_feature(cases, "IN_AutoMutualInfoStats_40_gaussian_fmmi", [](const Catch22Reference& c) { return gaussian_ami_first_minimum(c.z, 40); }), 25);
-    EXPECT_GE(expect_catch22_feature(cases, "CO_Embed2_Dist_tau_d_expfit_meandiff", [](const Catch22Reference& c) { return embed2_dist_expfit_meandiff(c.z, c.acf); }), 25);
+    EXPECT_GE(
+        expect_catch22_feature(cases, "CO_f1ecac", [](const Catch22Reference& c) { return first_1_e_crossing(c.acf); }),
+        25);
+    EXPECT_GE(
+        expect_catch22_feature(cases, "CO_FirstMin_ac", [](const Catch22Reference& c) { return first_minimum(c.acf); }),
+        25);
+    EXPECT_GE(expect_catch22_feature(cases, "CO_HistogramAMI_even_2_5",
+                                     [](const Catch22Reference& c) { return histogram_ami_even(c.z, 2, 5); }),
+              25);
+    EXPECT_GE(expect_catch22_feature(cases, "CO_trev_1_num",
+                                     [](const Catch22Reference& c) { return time_reversibility(c.z); }),
+              25);
+    EXPECT_GE(expect_catch22_feature(cases, "IN_AutoMutualInfoStats_40_gaussian_fmmi",
+                                     [](const Catch22Reference& c) { return gaussian_ami_first_minimum(c.z, 40); }),
+              25);
+    EXPECT_GE(expect_catch22_feature(cases, "CO_Embed2_Dist_tau_d_expfit_meandiff",
+                                     [](const Catch22Reference& c) { return embed2_dist_expfit_meandiff(c.z, c.acf); }),
+              25);
 }

@@ -40,8 +40,16 @@ TEST(Catch22Distribution, MatchesTheReference) {
     std::vector<Catch22Reference> cases;
     CATCH22_REFERENCE_OR_SKIP(cases);
     using t2imu::test::expect_catch22_feature;
-    EXPECT_GE(expect_catch22_feature(cases, "DN_HistogramMode_5", [](const Catch22Reference& c) { return histogram_mode(c.z, 5); }), 25);
-    EXPECT_GE(expect_catch22_feature(cases, "DN_HistogramMode_10", [](const Catch22Reference& c) { return histogram_mode(c.z, 10); }), 25);
-    EXPECT_GE(expect_catch22_feature(cases, "DN_OutlierInclude_p_001_mdrmd", [](const Catch22Reference& c) { return outlier_include_mdrmd(c.z, true); }), 25);
-    EXPECT_GE(expect_catch22_feature(cases, "DN_OutlierInclude_n_001_mdrmd", [](const Catch22Reference& c) { return outlier_include_mdrmd(c.z, false); }), 25);
+    EXPECT_GE(expect_catch22_feature(cases, "DN_HistogramMode_5",
+                                     [](const Catch22Reference& c) { return histogram_mode(c.z, 5); }),
+              25);
+    EXPECT_GE(expect_catch22_feature(cases, "DN_HistogramMode_10",
+                                     [](const Catch22Reference& c) { return histogram_mode(c.z, 10); }),
+              25);
+    EXPECT_GE(expect_catch22_feature(cases, "DN_OutlierInclude_p_001_mdrmd",
+                                     [](const Catch22Reference& c) { return outlier_include_mdrmd(c.z, true); }),
+              25);
+    EXPECT_GE(expect_catch22_feature(cases, "DN_OutlierInclude_n_001_mdrmd",
+                                     [](const Catch22Reference& c) { return outlier_include_mdrmd(c.z, false); }),
+              25);
 }

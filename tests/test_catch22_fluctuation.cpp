@@ -45,6 +45,10 @@ TEST(Catch22Fluctuation, MatchesTheReference) {
     std::vector<Catch22Reference> cases;
     CATCH22_REFERENCE_OR_SKIP(cases);
     using t2imu::test::expect_catch22_feature;
-    EXPECT_GE(expect_catch22_feature(cases, "SC_FluctAnal_2_rsrangefit_50_1_logi_prop_r1", [](const Catch22Reference& c) { return fluct_anal_rsrangefit_prop_r1(c.z); }), 25);
-    EXPECT_GE(expect_catch22_feature(cases, "SC_FluctAnal_2_dfa_50_1_2_logi_prop_r1", [](const Catch22Reference& c) { return fluct_anal_dfa_prop_r1(c.z); }), 25);
+    EXPECT_GE(expect_catch22_feature(cases, "SC_FluctAnal_2_rsrangefit_50_1_logi_prop_r1",
+                                     [](const Catch22Reference& c) { return fluct_anal_rsrangefit_prop_r1(c.z); }),
+              25);
+    EXPECT_GE(expect_catch22_feature(cases, "SC_FluctAnal_2_dfa_50_1_2_logi_prop_r1",
+                                     [](const Catch22Reference& c) { return fluct_anal_dfa_prop_r1(c.z); }),
+              25);
 }

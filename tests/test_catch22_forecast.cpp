@@ -42,6 +42,10 @@ TEST(Catch22Forecast, MatchesTheReference) {
     std::vector<Catch22Reference> cases;
     CATCH22_REFERENCE_OR_SKIP(cases);
     using t2imu::test::expect_catch22_feature;
-    EXPECT_GE(expect_catch22_feature(cases, "FC_LocalSimple_mean3_stderr", [](const Catch22Reference& c) { return local_mean3_stderr(c.z); }), 25);
-    EXPECT_GE(expect_catch22_feature(cases, "FC_LocalSimple_mean1_tauresrat", [](const Catch22Reference& c) { return local_mean1_tauresrat(c.z, c.acf); }), 25);
+    EXPECT_GE(expect_catch22_feature(cases, "FC_LocalSimple_mean3_stderr",
+                                     [](const Catch22Reference& c) { return local_mean3_stderr(c.z); }),
+              25);
+    EXPECT_GE(expect_catch22_feature(cases, "FC_LocalSimple_mean1_tauresrat",
+                                     [](const Catch22Reference& c) { return local_mean1_tauresrat(c.z, c.acf); }),
+              25);
 }

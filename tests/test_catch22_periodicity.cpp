@@ -34,5 +34,8 @@ TEST(Catch22Periodicity, NoPeriodGivesZero) {
 TEST(Catch22Periodicity, MatchesTheReference) {
     std::vector<Catch22Reference> cases;
     CATCH22_REFERENCE_OR_SKIP(cases);
-    EXPECT_GE(t2imu::test::expect_catch22_feature(cases, "PD_PeriodicityWang_th0_01", [](const Catch22Reference& c) { return periodicity_wang(c.z, 0.01); }), 25);
+    EXPECT_GE(
+        t2imu::test::expect_catch22_feature(cases, "PD_PeriodicityWang_th0_01",
+                                            [](const Catch22Reference& c) { return periodicity_wang(c.z, 0.01); }),
+        25);
 }

@@ -27,7 +27,8 @@ TEST(Catch22Spectral, LowFrequencyAreaOfACosineOnABin) {
 }
 
 TEST(Catch22Spectral, CentroidOfACosineIsItsFrequency) {
-    for (int bin : {2, 7, 20}) EXPECT_NEAR(welch_rect_centroid(cosine_on_bin(64, bin)), bin * 2 * M_PI / 64, 1e-12) << bin;
+    for (int bin : {2, 7, 20})
+        EXPECT_NEAR(welch_rect_centroid(cosine_on_bin(64, bin)), bin * 2 * M_PI / 64, 1e-12) << bin;
 }
 
 TEST(Catch22Spectral, WhiteNoiseHasAFifthOfItsPowerInTheLowestFifth) {
@@ -50,6 +51,10 @@ TEST(Catch22Spectral, MatchesTheReference) {
     std::vector<Catch22Reference> cases;
     CATCH22_REFERENCE_OR_SKIP(cases);
     using t2imu::test::expect_catch22_feature;
-    EXPECT_GE(expect_catch22_feature(cases, "SP_Summaries_welch_rect_area_5_1", [](const Catch22Reference& c) { return welch_rect_area_5_1(c.z); }), 25);
-    EXPECT_GE(expect_catch22_feature(cases, "SP_Summaries_welch_rect_centroid", [](const Catch22Reference& c) { return welch_rect_centroid(c.z); }), 25);
+    EXPECT_GE(expect_catch22_feature(cases, "SP_Summaries_welch_rect_area_5_1",
+                                     [](const Catch22Reference& c) { return welch_rect_area_5_1(c.z); }),
+              25);
+    EXPECT_GE(expect_catch22_feature(cases, "SP_Summaries_welch_rect_centroid",
+                                     [](const Catch22Reference& c) { return welch_rect_centroid(c.z); }),
+              25);
 }

@@ -77,7 +77,8 @@ TEST(Catch22Stats, ReferenceMeanAndSpread) {
         if (!c.expected.count("DN_Mean")) continue;
         const double m = c.expected.at("DN_Mean"), sd = c.expected.at("DN_Spread_Std");
         EXPECT_TRUE(t2imu::test::catch22_close(mean(c.raw), m)) << c.name << ": " << mean(c.raw) << " vs " << m;
-        EXPECT_TRUE(t2imu::test::catch22_close(sample_std(c.raw), sd)) << c.name << ": " << sample_std(c.raw) << " vs " << sd;
+        EXPECT_TRUE(t2imu::test::catch22_close(sample_std(c.raw), sd))
+            << c.name << ": " << sample_std(c.raw) << " vs " << sd;
         const Series fast = autocorrelation(c.z);
         for (size_t k = 0; k < fast.size(); ++k) ASSERT_NEAR(fast[k], c.acf[k], 1e-10) << c.name << " lag " << k;
         ++checked;

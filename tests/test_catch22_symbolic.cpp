@@ -39,7 +39,8 @@ TEST(Catch22Symbolic, MotifEntropyOfACycleOfThreeSymbols) {
     EXPECT_NEAR(motif_three_quantile_hh({1, 2, 3, 1, 2, 3, 1, 2, 3, 1}), std::log(3.0), 1e-14);
     // 1 1 1 2 2 2 3 3 3: the eight words are 11 x2, 12, 22 x2, 23, 33 x2: three of probability 2/8, two of 1/8.
     const double p2 = 2.0 / 8, p1 = 1.0 / 8;
-    EXPECT_NEAR(motif_three_quantile_hh({1, 1, 1, 2, 2, 2, 3, 3, 3}), -3 * p2 * std::log(p2) - 2 * p1 * std::log(p1), 1e-14);
+    EXPECT_NEAR(motif_three_quantile_hh({1, 1, 1, 2, 2, 2, 3, 3, 3}), -3 * p2 * std::log(p2) - 2 * p1 * std::log(p1),
+                1e-14);
 }
 
 TEST(Catch22Symbolic, TransitionMatrixColumnVariances) {
@@ -57,9 +58,20 @@ TEST(Catch22Symbolic, MatchesTheReference) {
     std::vector<Catch22Reference> cases;
     CATCH22_REFERENCE_OR_SKIP(cases);
     using t2imu::test::expect_catch22_feature;
-    EXPECT_GE(expect_catch22_feature(cases, "MD_hrv_classic_pnn40", [](const Catch22Reference& c) { return pnn40(c.z); }), 25);
-    EXPECT_GE(expect_catch22_feature(cases, "SB_BinaryStats_mean_longstretch1", [](const Catch22Reference& c) { return binary_mean_longstretch1(c.z); }), 25);
-    EXPECT_GE(expect_catch22_feature(cases, "SB_BinaryStats_diff_longstretch0", [](const Catch22Reference& c) { return binary_diff_longstretch0(c.z); }), 25);
-    EXPECT_GE(expect_catch22_feature(cases, "SB_MotifThree_quantile_hh", [](const Catch22Reference& c) { return motif_three_quantile_hh(c.z); }), 25);
-    EXPECT_GE(expect_catch22_feature(cases, "SB_TransitionMatrix_3ac_sumdiagcov", [](const Catch22Reference& c) { return transition_matrix_3ac_sumdiagcov(c.z, c.acf); }), 25);
+    EXPECT_GE(
+        expect_catch22_feature(cases, "MD_hrv_classic_pnn40", [](const Catch22Reference& c) { return pnn40(c.z); }),
+        25);
+    EXPECT_GE(expect_catch22_feature(cases, "SB_BinaryStats_mean_longstretch1",
+                                     [](const Catch22Reference& c) { return binary_mean_longstretch1(c.z); }),
+              25);
+    EXPECT_GE(expect_catch22_feature(cases, "SB_BinaryStats_diff_longstretch0",
+                                     [](const Catch22Reference& c) { return binary_diff_longstretch0(c.z); }),
+              25);
+    EXPECT_GE(expect_catch22_feature(cases, "SB_MotifThree_quantile_hh",
+                                     [](const Catch22Reference& c) { return motif_three_quantile_hh(c.z); }),
+              25);
+    EXPECT_GE(
+        expect_catch22_feature(cases, "SB_TransitionMatrix_3ac_sumdiagcov",
+                               [](const Catch22Reference& c) { return transition_matrix_3ac_sumdiagcov(c.z, c.acf); }),
+        25);
 }

@@ -68,7 +68,8 @@ TEST(Catch22Table, OneRowPerWindowWithCatch22OfEachChannel) {
         const std::vector<double> expected = catch22(series, true);
         for (size_t f = 0; f < 24; ++f) {
             const double got = std::strtod(t.rows[i][4 + f].c_str(), nullptr);
-            EXPECT_NEAR(got, expected[f], 1e-8 * std::max(1.0, std::fabs(expected[f]))) << "window " << i << " " << t.header[4 + f];
+            EXPECT_NEAR(got, expected[f], 1e-8 * std::max(1.0, std::fabs(expected[f])))
+                << "window " << i << " " << t.header[4 + f];
         }
     }
     // The constant channel of window 1 cannot be z-scored: every feature "nan"; window 0's channel 1 has values.

@@ -105,7 +105,8 @@ std::vector<OptionLine> options_of(const CliLeaf& leaf) {
         std::istringstream words(line);
         OptionLine o;
         words >> o.name >> o.type;
-        if (o.name.rfind("-h,", 0) == 0 || (o.name.rfind("--", 0) != 0 && o.name[0] == '-')) continue;  // help, short-only flags
+        if (o.name.rfind("-h,", 0) == 0 || (o.name.rfind("--", 0) != 0 && o.name[0] == '-'))
+            continue;  // help, short-only flags
         o.positional = o.name[0] != '-';
         o.required = line.find("REQUIRED") != std::string::npos;
         out.push_back(o);
@@ -132,24 +133,34 @@ const std::vector<KnownArgument> kKnownArguments = {
 
 // A call that satisfies the parser: each required argument a stand-in of its type (an empty file, an empty
 // folder, the first choice, a word; --out inside `dir`), then `extra`.
-std::string minimal_call(const std::string& leaf, const std::vector<OptionLine>& options, const std::string& dir, const std::string& extra) {
+std::string minimal_call(const std::string& leaf, const std::vector<OptionLine>& options, const std::string& dir,
+                         const std::string& extra) {
     const auto given_by_extra = [&](const std::string& option) { return extra.rfind(option + " ", 0) == 0; };
     const auto known = [&](const std::string& option) {
-        return std::any_of(kKnownArguments.begin(), kKnownArguments.end(), [&](const KnownArgument& k) { return k.leaf == leaf && k.option == option; });
+        return std::any_of(kKnownArguments.begin(), kKnownArguments.end(),
+                           [&](const KnownArgument& k) { return k.leaf == leaf && k.option == option; });
     };
     std::string call = leaf;
     for (const KnownArgument& k : kKnownArguments) {
         if (k.leaf != leaf || given_by_extra(k.option)) continue;
-        std::string value = k.value == "DIR" ? dir + "/d" : k.value == "FILE" ? dir + "/f" : k.value == "OUT" ? dir + "/o" : k.value;
+        std::string value = k.value == "DIR"    ? dir + "/d"
+                            : k.value == "FILE" ? dir + "/f"
+                            : k.value == "OUT"  ? dir + "/o"
+                                                : k.value;
         call += " " + k.option + (value.empty() ? "" : " " + value);
     }
     for (const OptionLine& o : options) {
         if (!o.required || given_by_extra(o.name) || known(o.name)) continue;
         std::string value = "x";
-        if (o.name == "--out") value = dir + "/o";
-        else if (o.type.find(":FILE") != std::string::npos) value = dir + "/f";
-        else if (o.type.find(":DIR") != std::string::npos || o.type.find(":PATH") != std::string::npos) value = dir + "/d";
-        else if (o.type.find(":{") != std::string::npos) value = o.type.substr(o.type.find(":{") + 2, o.type.find_first_of(",}", o.type.find(":{")) - o.type.find(":{") - 2);
+        if (o.name == "--out")
+            value = dir + "/o";
+        else if (o.type.find(":FILE") != std::string::npos)
+            value = dir + "/f";
+        else if (o.type.find(":DIR") != std::string::npos || o.type.find(":PATH") != std::string::npos)
+            value = dir + "/d";
+        else if (o.type.find(":{") != std::string::npos)
+            value = o.type.substr(o.type.find(":{") + 2,
+                                  o.type.find_first_of(",}", o.type.find(":{")) - o.type.find(":{") - 2);
         call += " " + (o.positional ? "" : o.name + " ") + value;
     }
     return call + " " + extra;
@@ -177,7 +188,8 @@ TEST(CliEveryCommand, NanHugeNumbersAndAnUnwritableOutAreOneLineUsageErrors) {
         for (const OptionLine& o : options) {
             if (o.positional || o.name == "--threads") continue;
             if (o.type.rfind("FLOAT", 0) == 0) probe(leaf.path, options, o.name + " nan", o.name);
-            if (o.type.rfind("FLOAT", 0) == 0 || o.type.rfind("INT", 0) == 0) probe(leaf.path, options, o.name + " 1e12", o.name);
+            if (o.type.rfind("FLOAT", 0) == 0 || o.type.rfind("INT", 0) == 0)
+                probe(leaf.path, options, o.name + " 1e12", o.name);
             if (o.name == "--out") probe(leaf.path, options, "--out /proc/t2imu-no/o", "--out");
         }
     }
@@ -185,8 +197,11 @@ TEST(CliEveryCommand, NanHugeNumbersAndAnUnwritableOutAreOneLineUsageErrors) {
     const std::vector<test::CliResult> results = test::run_cli_each(calls);
     for (size_t i = 0; i < calls.size(); ++i) {
         const std::string wrong = not_one_line_usage_error(calls[i], results[i]);
-        if (!wrong.empty()) ADD_FAILURE() << wrong;
-        else if (results[i].output.find(names[i]) == std::string::npos) ADD_FAILURE() << calls[i] << "\n    -> does not name " << names[i] << ": " << results[i].output;
-        if (std::filesystem::exists(dirs[i] + "/o")) ADD_FAILURE() << calls[i] << "\n    -> wrote its --out before refusing";
+        if (!wrong.empty())
+            ADD_FAILURE() << wrong;
+        else if (results[i].output.find(names[i]) == std::string::npos)
+            ADD_FAILURE() << calls[i] << "\n    -> does not name " << names[i] << ": " << results[i].output;
+        if (std::filesystem::exists(dirs[i] + "/o"))
+            ADD_FAILURE() << calls[i] << "\n    -> wrote its --out before refusing";
     }
 }

@@ -35,17 +35,21 @@ std::string write_standing(const std::string& dir, int frames = 41) {
 TEST(CliImuSynth, WritesOneCsvPerBodyAndPositionWithMeta) {
     const std::string dir = test::scratch_dir("cli_imu_synth");
     const std::string joints = write_standing(dir);
-    const auto r = test::run_cli("imu synth --joints " + joints + " --body paper8+height=172,mass=70,sex=f --sensors realworld,hugadb.toml"
-                                 " --rate 50 --out " + dir + "/out");
+    const auto r = test::run_cli("imu synth --joints " + joints +
+                                 " --body paper8+height=172,mass=70,sex=f --sensors realworld,hugadb.toml"
+                                 " --rate 50 --out " +
+                                 dir + "/out");
     // hugadb.toml does not exist: refused before anything is written.
     EXPECT_NE(r.exit_code, 0);
     EXPECT_FALSE(fs::exists(dir + "/out"));
-    const auto ok = test::run_cli("imu synth --joints " + joints + " --body paper8+height=172,mass=70,sex=f --sensors realworld"
-                                  " --rate 50 --out " + dir + "/out");
+    const auto ok = test::run_cli("imu synth --joints " + joints +
+                                  " --body paper8+height=172,mass=70,sex=f --sensors realworld"
+                                  " --rate 50 --out " +
+                                  dir + "/out");
     ASSERT_EQ(ok.exit_code, 0) << ok.output;
     const CsvTable chest = read_csv(dir + "/out/female_short/chest.csv");
     EXPECT_EQ(chest.header, (std::vector<std::string>{"t", "acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z"}));
-    ASSERT_EQ(chest.rows.size(), 101u);  // 2 s at 50 Hz, both ends included
+    ASSERT_EQ(chest.rows.size(), 101u);                     // 2 s at 50 Hz, both ends included
     EXPECT_NEAR(std::stod(chest.rows[50][2]), 9.81, 1e-6);  // upright phone: y reads +g
     const nlohmann::json meta = nlohmann::json::parse(read_file_text(dir + "/out/meta.json"));
     ASSERT_EQ(meta["bodies"].size(), 9u);
@@ -56,20 +60,24 @@ TEST(CliImuSynth, WritesOneCsvPerBodyAndPositionWithMeta) {
     EXPECT_EQ(meta["rate_hz"], 50.0);
     EXPECT_EQ(meta["frames"], 41);
     EXPECT_TRUE(meta["bodies"][2]["fit_error_mm"].contains("left_wrist"));
-    for (const auto& b : meta["bodies"]) EXPECT_TRUE(fs::exists(dir + "/out/" + b["name"].get<std::string>() + "/left_thigh.csv"));
+    for (const auto& b : meta["bodies"])
+        EXPECT_TRUE(fs::exists(dir + "/out/" + b["name"].get<std::string>() + "/left_thigh.csv"));
 }
 
 // imu/realworld_export.cpp (what --format realworld writes), read back by har/datasets/realworld.cpp.
 TEST(CliImuSynth, RealWorldFilesReadBackThroughTheRealWorldLoader) {
     const std::string dir = test::scratch_dir("cli_imu_synth_rw");
-    const auto r = test::run_cli("imu synth --joints " + write_standing(dir) + " --body preset:male_tall --sensors realworld"
-                                 " --format realworld --activity standing --noise smartphone --seed 3 --out " + dir + "/out");
+    const auto r = test::run_cli("imu synth --joints " + write_standing(dir) +
+                                 " --body preset:male_tall --sensors realworld"
+                                 " --format realworld --activity standing --noise smartphone --seed 3 --out " +
+                                 dir + "/out");
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const std::string body_dir = dir + "/out/male_tall";
     // Pack the files as RealWorld ships them: proband<N>/data/{acc,gyr}_<activity>_csv.zip.
     ZipMembers acc, gyr;
     for (const char* position : {"chest", "forearm", "head", "shin", "thigh", "upperarm", "waist"}) {
-        const std::string a = std::string("acc_standing_") + position + ".csv", g = std::string("Gyroscope_standing_") + position + ".csv";
+        const std::string a = std::string("acc_standing_") + position + ".csv",
+                          g = std::string("Gyroscope_standing_") + position + ".csv";
         acc[a] = read_file_bytes(body_dir + "/" + a);
         gyr[g] = read_file_bytes(body_dir + "/" + g);
     }

@@ -24,9 +24,14 @@ namespace {
 // Arguments a stand-in cannot give: one of two options a command needs, a required choice checked after parsing.
 // INPUT: the stand-in file; DIR: the stand-in folder.
 const std::multimap<std::string, std::string> kExtraArguments = {
-    {"har run", "--loso"},           {"sample", "--prompt x"},          {"features catch22", "--dataset DIR"},
-    {"motion activity", "--reference INPUT"}, {"analysis lacc", "--tau 0.5"}, {"data reframe", "--to sisfall"},
-    {"motion quality", "INPUT"},     {"data import-imu", "--format sisfall"},
+    {"har run", "--loso"},
+    {"sample", "--prompt x"},
+    {"features catch22", "--dataset DIR"},
+    {"motion activity", "--reference INPUT"},
+    {"analysis lacc", "--tau 0.5"},
+    {"data reframe", "--to sisfall"},
+    {"motion quality", "INPUT"},
+    {"data import-imu", "--format sisfall"},
 };
 // Commands that write nothing, and those whose output is named in their --config (written by the test below).
 const std::vector<std::string> kWriteNothing = {"text similarity"};
@@ -60,7 +65,8 @@ std::string tree_listing(const std::string& root) {
     std::vector<std::string> lines;
     for (auto it = fs::recursive_directory_iterator(root); it != fs::recursive_directory_iterator(); ++it) {
         std::string line = it->path().string();
-        if (it->is_symlink()) line += " -> " + fs::read_symlink(it->path()).string();
+        if (it->is_symlink())
+            line += " -> " + fs::read_symlink(it->path()).string();
         else if (it->is_regular_file()) {
             std::ifstream in(it->path(), std::ios::binary);
             line += " = " + std::string(std::istreambuf_iterator<char>(in), {});
@@ -74,44 +80,55 @@ std::string tree_listing(const std::string& root) {
 }
 
 std::string replaced(std::string s, const std::string& from, const std::string& to) {
-    for (size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size())) s.replace(at, from.size(), to);
+    for (size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size()))
+        s.replace(at, from.size(), to);
     return s;
 }
 
 // A call that satisfies the parser with stand-ins (INPUT for files, DIR for folders, the first of a choice),
 // leaving out `output` (given by each probe).
-std::string minimal_call(const std::string& leaf, const std::vector<test::CliOption>& options, const std::string& output) {
+std::string minimal_call(const std::string& leaf, const std::vector<test::CliOption>& options,
+                         const std::string& output) {
     std::string call = leaf;
     const auto extra = kExtraArguments.equal_range(leaf);
     for (auto e = extra.first; e != extra.second; ++e) call += " " + e->second;
     for (const test::CliOption& o : options) {
         if (!o.required || o.name == output || call.find(" " + o.name + " ") != std::string::npos) continue;
         std::string value = "x";
-        if (o.type.find(":FILE") != std::string::npos) value = "INPUT";
-        else if (o.type.find(":DIR") != std::string::npos || o.type.find(":PATH") != std::string::npos) value = "DIR";
-        else if (o.type.find(":{") != std::string::npos) value = o.type.substr(o.type.find(":{") + 2, o.type.find_first_of(",}", o.type.find(":{")) - o.type.find(":{") - 2);
+        if (o.type.find(":FILE") != std::string::npos)
+            value = "INPUT";
+        else if (o.type.find(":DIR") != std::string::npos || o.type.find(":PATH") != std::string::npos)
+            value = "DIR";
+        else if (o.type.find(":{") != std::string::npos)
+            value = o.type.substr(o.type.find(":{") + 2,
+                                  o.type.find_first_of(",}", o.type.find(":{")) - o.type.find(":{") - 2);
         call += " " + (o.positional ? "" : o.name + " ") + value;
     }
     return call;
 }
 
 // The six traps for one output option of kind `folder` or file; `input` is the stand-in the call reads.
-std::vector<Probe> probes_for(const std::string& leaf, const std::string& call, const std::string& option, bool folder) {
+std::vector<Probe> probes_for(const std::string& leaf, const std::string& call, const std::string& option,
+                              bool folder) {
     const std::string input = call.find("INPUT") != std::string::npos ? "INPUT" : "DIR";
     const std::string existing_folder = "an existing folder", foreign = folder ? "did not make" : existing_folder;
     return {{leaf, call + " " + option + " ROOT/link", "symbolic link"},
             {leaf, call + " " + option + " ROOT/ot/lnkdir/../victim", foreign},
             {leaf, call + " " + option + " ROOT/users", foreign},
-            {leaf, call + " " + option + (folder ? " ROOT/notes.txt" : " ROOT/made"), folder ? "an existing file" : existing_folder},
+            {leaf, call + " " + option + (folder ? " ROOT/notes.txt" : " ROOT/made"),
+             folder ? "an existing file" : existing_folder},
             {leaf, call + " " + option + " " + input, "input"},
             {leaf, call + " " + option + " /proc/t2imu-probe/out", "/proc/t2imu-probe"}};
 }
 
 // train and finetune name their output folder in the config: the same traps, written into it.
 std::vector<Probe> config_probes(const std::string& leaf) {
-    const std::vector<std::pair<std::string, std::string>> outs = {
-        {"ROOT/link", "symbolic link"}, {"ROOT/ot/lnkdir/../victim", "did not make"}, {"ROOT/users", "did not make"},
-        {"ROOT/notes.txt", "an existing file"}, {"DIR", "input"}, {"/proc/t2imu-probe/out", "/proc/t2imu-probe"}};
+    const std::vector<std::pair<std::string, std::string>> outs = {{"ROOT/link", "symbolic link"},
+                                                                   {"ROOT/ot/lnkdir/../victim", "did not make"},
+                                                                   {"ROOT/users", "did not make"},
+                                                                   {"ROOT/notes.txt", "an existing file"},
+                                                                   {"DIR", "input"},
+                                                                   {"/proc/t2imu-probe/out", "/proc/t2imu-probe"}};
     std::vector<Probe> probes;
     for (size_t i = 0; i < outs.size(); ++i) {
         const std::string config = "ROOT/config" + std::to_string(i) + ".toml";
@@ -139,8 +156,10 @@ TEST(CliOutputPaths, EveryWritingCommandRefusesEveryTrapBeforeAnyWork) {
         int outputs = 0;
         for (const test::CliOption& o : options) {
             if (o.name != "--out" && o.name != "--save-reference") continue;
-            const bool folder = o.help.find("folder") != std::string::npos;  // "output folder", "report folder": else a file
-            for (const Probe& p : probes_for(leaf, minimal_call(leaf, options, o.name), o.name, folder)) probes.push_back(p);
+            const bool folder =
+                o.help.find("folder") != std::string::npos;  // "output folder", "report folder": else a file
+            for (const Probe& p : probes_for(leaf, minimal_call(leaf, options, o.name), o.name, folder))
+                probes.push_back(p);
             ++outputs;
         }
         EXPECT_GT(outputs, 0) << leaf << ": writes nothing? add it to kWriteNothing, or its output option here";
@@ -156,7 +175,8 @@ TEST(CliOutputPaths, EveryWritingCommandRefusesEveryTrapBeforeAnyWork) {
             const Probe& p = probes[i];
             const std::string root = scratch + "/" + std::to_string(i);
             make_tree(root);
-            std::string args = replaced(replaced(replaced(p.args, "ROOT", root), "INPUT", root + "/f"), "DIR", root + "/d");
+            std::string args =
+                replaced(replaced(replaced(p.args, "ROOT", root), "INPUT", root + "/f"), "DIR", root + "/d");
             if (args.rfind("WRITE ", 0) == 0) {  // "WRITE PATH TEXT": the config, then `LEAF --config PATH`
                 const size_t end = args.find(' ', 6);
                 const std::string config = args.substr(6, end - 6);
@@ -167,7 +187,8 @@ TEST(CliOutputPaths, EveryWritingCommandRefusesEveryTrapBeforeAnyWork) {
             const test::CliResult r = test::run_cli("--threads 1 " + args);
             std::string why;
             if (r.exit_code != 2) why += " exit " + std::to_string(r.exit_code) + ";";
-            if (std::count(r.output.begin(), r.output.end(), '\n') != 1 || r.output.rfind("t2imu: ", 0) != 0) why += " not one line;";
+            if (std::count(r.output.begin(), r.output.end(), '\n') != 1 || r.output.rfind("t2imu: ", 0) != 0)
+                why += " not one line;";
             if (!test::contains(r.output, p.reason)) why += " no '" + p.reason + "';";
             if (tree_listing(root) != before) why += " the tree changed;";
             if (!why.empty()) failures[i] = args + ":" + why + "\n  " + r.output.substr(0, 400);

@@ -35,7 +35,8 @@ std::string write_merges(const std::string& dir, bool gzip) {
 }
 
 const ClipBpeTokenizer& tokenizer() {
-    static const ClipBpeTokenizer t = ClipBpeTokenizer::from_merges_file(write_merges(test::scratch_dir("clip-bpe"), true));
+    static const ClipBpeTokenizer t =
+        ClipBpeTokenizer::from_merges_file(write_merges(test::scratch_dir("clip-bpe"), true));
     return t;
 }
 
@@ -80,7 +81,8 @@ TEST(ClipBpe, MergesByRank) {
               (std::vector<int64_t>{320, 79, 68, 81, 82, 78, 333, 519, 82, 75, 78, 86, 75, 344}));
     EXPECT_EQ(t.encode("He's walking"), (std::vector<int64_t>{71, 324, 520, 518, 72, 77, 326}));
     EXPECT_EQ(t.encode("he\u2019s"), (std::vector<int64_t>{71, 324, 520}));  // ftfy's quote uncurling
-    EXPECT_EQ(t.encode("walks 10 steps, 2x"), (std::vector<int64_t>{519, 272, 271, 82, 83, 68, 79, 338, 267, 273, 343}));
+    EXPECT_EQ(t.encode("walks 10 steps, 2x"),
+              (std::vector<int64_t>{519, 272, 271, 82, 83, 68, 79, 338, 267, 273, 343}));
     EXPECT_EQ(t.encode("a<|endoftext|>b"), (std::vector<int64_t>{320, kEot, 321}));
     EXPECT_TRUE(t.encode(" \t\n").empty());
 }
@@ -103,7 +105,8 @@ TEST(ClipBpe, SplitsLikeClipsPattern) {
     EXPECT_EQ(ClipBpeTokenizer::split("walks 10 steps, 2x"), (V{"walks", "1", "0", "steps", ",", "2", "x"}));
     EXPECT_EQ(ClipBpeTokenizer::split("3.5m !!? a-b"), (V{"3", ".", "5", "m", "!!?", "a", "-", "b"}));
     EXPECT_EQ(ClipBpeTokenizer::split("!<|endoftext|>"), (V{"!<|", "endoftext", "|>"}));
-    EXPECT_EQ(ClipBpeTokenizer::split("x\u00B2\u00BD \u0663"), (V{"x", "\u00B2", "\u00BD", "\u0663"}));  // numbers: one each
+    EXPECT_EQ(ClipBpeTokenizer::split("x\u00B2\u00BD \u0663"),
+              (V{"x", "\u00B2", "\u00BD", "\u0663"}));  // numbers: one each
     EXPECT_EQ(ClipBpeTokenizer::split("na\u00EFve \u03C9mega"), (V{"na\u00EFve", "\u03C9mega"}));
     // Letters inside UnicodeData.txt's First/Last ranges (CJK ideographs, Hangul syllables); U+00D7 is a symbol.
     EXPECT_EQ(ClipBpeTokenizer::split("\u8D70\u8DEF\uAC00 3\u00D7a"), (V{"\u8D70\u8DEF\uAC00", "3", "\u00D7", "a"}));
@@ -145,7 +148,8 @@ TEST(ClipBpe, ReadsGzipAndPlainMergesAndRefusesBadLines) {
     EXPECT_EQ(plain.encode("He's walking"), tokenizer().encode("He's walking"));
     EXPECT_EQ(ClipBpeTokenizer::from_merges_file(write_merges(dir, true), 3).vocab_size(), 512u + 3 + 2);  // CLIP's cap
     std::ofstream(dir + "/bad.txt") << "#version: 0.2\nh e\nl l x\n";
-    EXPECT_NE(message_of([&] { ClipBpeTokenizer::from_merges_file(dir + "/bad.txt"); }).find("line 3"), std::string::npos);
+    EXPECT_NE(message_of([&] { ClipBpeTokenizer::from_merges_file(dir + "/bad.txt"); }).find("line 3"),
+              std::string::npos);
     std::ofstream(dir + "/gap.txt") << "#version: 0.2\nh e\n\nl l\n";
     EXPECT_THROW(ClipBpeTokenizer::from_merges_file(dir + "/gap.txt"), Error);
     EXPECT_THROW(ClipBpeTokenizer::from_merges_file(dir + "/absent.txt.gz"), Error);
@@ -178,7 +182,8 @@ ClipTextEncoder random_clip(uint64_t seed, int64_t heads = 4) {
 
 NdArray to_array(const torch::Tensor& t) {
     const torch::Tensor c = t.detach().to(torch::kFloat).contiguous();
-    return NdArray::from(std::vector<float>(c.data_ptr<float>(), c.data_ptr<float>() + c.numel()), std::vector<int64_t>(c.sizes().begin(), c.sizes().end()));
+    return NdArray::from(std::vector<float>(c.data_ptr<float>(), c.data_ptr<float>() + c.numel()),
+                         std::vector<int64_t>(c.sizes().begin(), c.sizes().end()));
 }
 
 SafeTensors openai_state(ClipTextEncoder& m, const std::string& prefix) {
@@ -196,8 +201,10 @@ SafeTensors hugging_face_state(ClipTextEncoder& m) {
     st.tensors["text_model.final_layer_norm.bias"] = to_array(params["ln_final.bias"]);
     st.tensors["text_projection.weight"] = to_array(params["text_projection"].t());
     for (int i = 0; i < 2; ++i) {
-        const std::string o = "transformer.resblocks." + std::to_string(i) + ".", h = "text_model.encoder.layers." + std::to_string(i) + ".";
-        const std::vector<torch::Tensor> w = params[o + "attn.in_proj_weight"].chunk(3, 0), b = params[o + "attn.in_proj_bias"].chunk(3, 0);
+        const std::string o = "transformer.resblocks." + std::to_string(i) + ".",
+                          h = "text_model.encoder.layers." + std::to_string(i) + ".";
+        const std::vector<torch::Tensor> w = params[o + "attn.in_proj_weight"].chunk(3, 0),
+                                         b = params[o + "attn.in_proj_bias"].chunk(3, 0);
         const char* qkv[] = {"q", "k", "v"};
         for (int k = 0; k < 3; ++k) {
             st.tensors[h + "self_attn." + qkv[k] + "_proj.weight"] = to_array(w[static_cast<size_t>(k)]);
@@ -232,9 +239,11 @@ double max_diff(const torch::Tensor& a, const torch::Tensor& b) { return (a - b)
 TEST(ClipTextEncoder, OpenAiKeyNames) {
     ClipTextEncoder m(tiny());
     const auto params = m->named_parameters();
-    for (const char* key : {"token_embedding.weight", "positional_embedding", "transformer.resblocks.0.ln_1.weight", "transformer.resblocks.0.attn.in_proj_weight",
-                            "transformer.resblocks.1.attn.in_proj_bias", "transformer.resblocks.1.attn.out_proj.weight", "transformer.resblocks.0.ln_2.bias",
-                            "transformer.resblocks.1.mlp.c_fc.weight", "transformer.resblocks.0.mlp.c_proj.bias", "ln_final.weight", "text_projection"})
+    for (const char* key : {"token_embedding.weight", "positional_embedding", "transformer.resblocks.0.ln_1.weight",
+                            "transformer.resblocks.0.attn.in_proj_weight", "transformer.resblocks.1.attn.in_proj_bias",
+                            "transformer.resblocks.1.attn.out_proj.weight", "transformer.resblocks.0.ln_2.bias",
+                            "transformer.resblocks.1.mlp.c_fc.weight", "transformer.resblocks.0.mlp.c_proj.bias",
+                            "ln_final.weight", "text_projection"})
         EXPECT_TRUE(params.contains(key)) << key;
     EXPECT_EQ(params.size(), 2u + 2 * 12u + 3u);
     EXPECT_EQ(params["transformer.resblocks.0.attn.in_proj_weight"].sizes(), (std::vector<int64_t>{96, 32}));
@@ -278,7 +287,8 @@ TEST(ClipTextEncoder, EncodesCaptionsAsMdmDoes) {
     m->set_tokenizer(std::make_shared<const ClipBpeTokenizer>(tokenizer()));
     const std::vector<std::string> captions = {"Hello", "He's walking walks walks walks walks"};
     std::vector<std::vector<int64_t>> rows;
-    for (const std::string& c : captions) rows.push_back(tokenizer().tokenize(c, 6, true));  // mdm_text_tokens, then zeros to 16
+    for (const std::string& c : captions)
+        rows.push_back(tokenizer().tokenize(c, 6, true));  // mdm_text_tokens, then zeros to 16
     EXPECT_EQ(rows[1].back(), kEot);
     EXPECT_LT(max_diff(m->encode(captions), m->forward(ids_of(rows))), 1e-6);
     ClipTextConfig other = tiny();
@@ -364,7 +374,9 @@ TEST(ClipTextEncoder, RefusesMissingUnexpectedAndMisShapedKeys) {
     SafeTensors none;
     none.tensors["embed_text.weight"] = NdArray::from(std::vector<float>(4, 0.f), {2, 2});
     write_safetensors(dir + "/none.safetensors", none);
-    EXPECT_NE(message_of([&] { load_clip_text_weights(target, dir + "/none.safetensors"); }).find("token_embedding.weight"), std::string::npos);
+    EXPECT_NE(
+        message_of([&] { load_clip_text_weights(target, dir + "/none.safetensors"); }).find("token_embedding.weight"),
+        std::string::npos);
 }
 
 TEST(ClipTextEncoder, ModelFolderPairsAnMdmWithClip) {
@@ -386,9 +398,18 @@ TEST(ClipTextEncoder, ModelFolderPairsAnMdmWithClip) {
     write_merges(dir, true);
     write_npy(dir + "/Mean.npy", NdArray::from(std::vector<double>(263, 0.0), {263}));
     write_npy(dir + "/Std.npy", NdArray::from(std::vector<double>(263, 1.0), {263}));
-    nlohmann::json meta = {{"mdm", {{"latent_dim", 32}, {"ff_size", 64}, {"num_layers", 2}, {"num_heads", 2}, {"dropout", 0.0}, {"text_dim", 24}, {"mask_frames", false}}},
-                           {"text_encoder", {{"kind", "clip"}, {"weights", "weights.safetensors"}, {"merges", "merges.txt.gz"}, {"text_tokens", 6}}},
-                           {"diffusion", {{"steps", 10}}}};
+    nlohmann::json meta = {
+        {"mdm",
+         {{"latent_dim", 32},
+          {"ff_size", 64},
+          {"num_layers", 2},
+          {"num_heads", 2},
+          {"dropout", 0.0},
+          {"text_dim", 24},
+          {"mask_frames", false}}},
+        {"text_encoder",
+         {{"kind", "clip"}, {"weights", "weights.safetensors"}, {"merges", "merges.txt.gz"}, {"text_tokens", 6}}},
+        {"diffusion", {{"steps", 10}}}};
     std::ofstream(dir + "/model.json") << meta.dump();
     // The tiny tower's width is 32: read_clip_text_config's 64-wide heads give 1 head, as CLIP would build it.
     ClipTextConfig one_head = tiny();
@@ -441,7 +462,14 @@ TEST(ClipTextEncoder, ModelFolderWithCLIPInItsOwnFile) {
     write_npy(dir + "/Mean.npy", NdArray::from(std::vector<double>(263, 0.0), {263}));
     write_npy(dir + "/Std.npy", NdArray::from(std::vector<double>(263, 1.0), {263}));
     const nlohmann::json meta = {
-        {"mdm", {{"latent_dim", 32}, {"ff_size", 64}, {"num_layers", 1}, {"num_heads", 2}, {"dropout", 0.1}, {"text_dim", 24}, {"mask_frames", false}}},
+        {"mdm",
+         {{"latent_dim", 32},
+          {"ff_size", 64},
+          {"num_layers", 1},
+          {"num_heads", 2},
+          {"dropout", 0.1},
+          {"text_dim", 24},
+          {"mask_frames", false}}},
         {"text_encoder", {{"kind", "clip"}, {"weights", dir + "/clip.safetensors"}, {"merges", "merges.txt"}}},
         {"diffusion", {{"steps", 10}}}};
     std::ofstream(dir + "/model.json") << meta.dump();

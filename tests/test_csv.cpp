@@ -7,7 +7,8 @@
 using namespace t2imu;
 
 TEST(Csv, QuotedFieldsCommasNewlinesAndCrlf) {
-    const CsvTable t = parse_csv("file,caption,n\r\na.bvh,\"jump, balance\",3\r\nb.bvh,\"say \"\"hi\"\"\nand go\",4", "x.csv");
+    const CsvTable t =
+        parse_csv("file,caption,n\r\na.bvh,\"jump, balance\",3\r\nb.bvh,\"say \"\"hi\"\"\nand go\",4", "x.csv");
     ASSERT_EQ(t.rows.size(), 2u);
     EXPECT_EQ(t.rows[0][1], "jump, balance");
     EXPECT_EQ(t.rows[1][1], "say \"hi\"\nand go");

@@ -42,6 +42,4 @@ TEST(CubicSpline, SecondDerivativeOfASineConvergesAsHSquared) {
     EXPECT_GT(e20 / e40, 3.0);
 }
 
-TEST(CubicSpline, NeedsFourSamples) {
-    EXPECT_THROW(CubicSpline(CubicSpline::Samples::Zero(3, 2), 0.05), Error);
-}
+TEST(CubicSpline, NeedsFourSamples) { EXPECT_THROW(CubicSpline(CubicSpline::Samples::Zero(3, 2), 0.05), Error); }

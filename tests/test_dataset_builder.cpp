@@ -1,12 +1,12 @@
 // The builder on a few shared clips: layout, chunking, captions, mirroring, splits, Mean/Std.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <algorithm>
 #include <filesystem>
-#include <set>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <unistd.h>
+#include <set>
 
 #include "core/atomic_file.hpp"
 #include "core/csv.hpp"
@@ -14,9 +14,9 @@
 #include "data/captions.hpp"
 #include "data/dataset_builder.hpp"
 #include "data/derived_clips.hpp"
-#include "motion/motion_attributes.hpp"
 #include "motion/humanml3d.hpp"
 #include "motion/mocap_import.hpp"
+#include "motion/motion_attributes.hpp"
 #include "motion/skeleton.hpp"
 #include "test_util.hpp"
 
@@ -33,10 +33,10 @@ std::string make_mocap_folder(const std::string& name) {
     fs::create_directories(dir + "/bvh20");
     for (const char* f : {"07_05.bvh", "60_01.bvh"}) fs::copy_file(root + "/bvh20/" + f, dir + "/bvh20/" + f);
     std::ofstream(dir + "/captions.csv") << "file,start_frame,end_frame,caption,subject,licence\n"
-                                           "bvh20/07_05.bvh,0,87,a person walks slowly to the left,07,CMU\n"
-                                           "bvh20/07_05.bvh,0,87,slow walk,07,CMU\n"
-                                           "bvh20/60_01.bvh,0,100000,salsa dance,60,CMU\n"
-                                           "bvh20/60_01.bvh,100,180,a dancer turns right,60,CMU\n";
+                                            "bvh20/07_05.bvh,0,87,a person walks slowly to the left,07,CMU\n"
+                                            "bvh20/07_05.bvh,0,87,slow walk,07,CMU\n"
+                                            "bvh20/60_01.bvh,0,100000,salsa dance,60,CMU\n"
+                                            "bvh20/60_01.bvh,100,180,a dancer turns right,60,CMU\n";
     return dir;
 }
 
@@ -102,7 +102,8 @@ TEST(DatasetBuilder, WritesTheHumanML3DLayout) {
 
     // Subject-disjoint splits: every clip of one subject, mirrored ones too, is in one split.
     std::map<std::string, std::set<std::string>> splits_of_subject;
-    for (const auto& row : clips.rows) splits_of_subject[row[clips.column("subject")]].insert(row[clips.column("split")]);
+    for (const auto& row : clips.rows)
+        splits_of_subject[row[clips.column("subject")]].insert(row[clips.column("split")]);
     for (const auto& [subject, splits] : splits_of_subject) EXPECT_EQ(splits.size(), 1u) << subject;
 
     // A second build gives the same bytes.
@@ -148,9 +149,11 @@ int capture_frame_at(int f, double fps, double start_s) {
 // Checks the capture-rate copy of clips.csv row `row` of the set in `dir` against its new_joints: it starts at or
 // up to one capture frame before the clip, ends at or up to one capture frame after it, and where a captured frame
 // falls on a 20 fps frame both show the same pose at the same place, within `tolerance_m`. Returns the copy's rate.
-double expect_copy_is_the_clip(const std::string& dir, const CsvTable& clips, const std::vector<std::string>& row, double tolerance_m) {
+double expect_copy_is_the_clip(const std::string& dir, const CsvTable& clips, const std::vector<std::string>& row,
+                               double tolerance_m) {
     const std::string id = row[clips.column("id")], copy_path = dir + "/capture_joints/" + id + ".npy";
-    const double fps = std::stod(row[clips.column("capture_fps")]), start_s = std::stod(row[clips.column("capture_start_s")]);
+    const double fps = std::stod(row[clips.column("capture_fps")]),
+                 start_s = std::stod(row[clips.column("capture_start_s")]);
     EXPECT_GT(start_s, -1 / fps - 1e-9) << id;
     EXPECT_LE(start_s, 1e-9) << id;
     const JointSequence joints = joint_sequence_from_array(read_npy(dir + "/new_joints/" + id + ".npy"), id, 22, 1, 20);
@@ -180,7 +183,8 @@ TEST(DatasetBuilder, DerivedClipsCarryTheirProvenanceCountApartAndCanBeLeftOut) 
     const std::string bandai = test::unpacked_shared_archive("mocap/bandai_bvh_native.tar.xz");
     const std::string idle = test::unpacked_shared_archive("mocap/reactidle_bvh.tar.xz");
     const std::string dir = test::scratch_dir("builder_derived");
-    const std::vector<std::string> files = {"bandai_bvh/dataset-2_walk_normal_001.bvh", "reactidle_bvh/000_genuine.bvh"};
+    const std::vector<std::string> files = {"bandai_bvh/dataset-2_walk_normal_001.bvh",
+                                            "reactidle_bvh/000_genuine.bvh"};
     const CsvTable shared = read_csv(manifest);
     CsvTable m;
     m.header = shared.header;
@@ -227,10 +231,12 @@ TEST(DatasetBuilder, DerivedClipsCarryTheirProvenanceCountApartAndCanBeLeftOut) 
     // Every window of the idle stand is a sitting clip or counted as left out (the idle person steps away in some).
     const nlohmann::json derived = nlohmann::json::parse(read_file_text(o.out_dir + "/summary.json"))["derived"];
     EXPECT_GE(per_source["edited/sitting"], 2);
-    EXPECT_EQ(per_source["edited/sitting"] + derived["edits_refused"].get<int>() + derived["failed_quality"].get<int>(), kSitsPerRecording);
+    EXPECT_EQ(per_source["edited/sitting"] + derived["edits_refused"].get<int>() + derived["failed_quality"].get<int>(),
+              kSitsPerRecording);
     std::set<std::string> stair_recordings;  // one flight, maybe cut into two chunks
     for (const auto& row : clips.rows)
-        if (row[clips.column("activity_tags")].rfind("stairs", 0) == 0) stair_recordings.insert(row[clips.column("file")]);
+        if (row[clips.column("activity_tags")].rfind("stairs", 0) == 0)
+            stair_recordings.insert(row[clips.column("file")]);
     EXPECT_EQ(stair_recordings.size(), 1u);
     const nlohmann::json summary = nlohmann::json::parse(read_file_text(o.out_dir + "/summary.json"));
     EXPECT_GT(summary["per_activity_tag"]["sitting"]["derived_minutes"].get<double>(), 0.5);
@@ -247,7 +253,8 @@ TEST(DatasetBuilder, DerivedClipsCarryTheirProvenanceCountApartAndCanBeLeftOut) 
 
     o.derive = false;  // --no-derived
     build_dataset(o);
-    for (const auto& row : read_csv(o.out_dir + "/clips.csv").rows) EXPECT_NE(row[clips.column("source_dataset")], "edited");
+    for (const auto& row : read_csv(o.out_dir + "/clips.csv").rows)
+        EXPECT_NE(row[clips.column("source_dataset")], "edited");
 }
 
 TEST(DatasetBuilder, CapturedClipsKeepTheirCaptureRateWhereNew_jointsAre) {
@@ -260,8 +267,10 @@ TEST(DatasetBuilder, CapturedClipsKeepTheirCaptureRateWhereNew_jointsAre) {
     ASSERT_FALSE(hdm.empty() || bandai.empty() || cmu.empty());
     const std::string dir = test::scratch_dir("builder_capture_rate");
     const std::vector<std::pair<std::string, std::string>> files = {
-        {hdm, "hdm05_amc/HDM_bd_jogLeftCircle4StepsRstart_001_120.amc"}, {hdm, "hdm05_amc/HDM_bd.asf"},
-        {bandai, "bandai_bvh/dataset-2_walk_normal_001.bvh"}, {cmu, "bvh20/07_05.bvh"}};
+        {hdm, "hdm05_amc/HDM_bd_jogLeftCircle4StepsRstart_001_120.amc"},
+        {hdm, "hdm05_amc/HDM_bd.asf"},
+        {bandai, "bandai_bvh/dataset-2_walk_normal_001.bvh"},
+        {cmu, "bvh20/07_05.bvh"}};
     std::ofstream captions(dir + "/captions.csv");
     captions << "file,start_frame,end_frame,caption,subject,licence\n";
     for (const auto& [root, f] : files) {
@@ -298,7 +307,8 @@ TEST(DatasetBuilder, CapturedClipsKeepTheirCaptureRateWhereNew_jointsAre) {
     o.capture_rate = false;  // --no-capture-rate
     build_dataset(o);
     EXPECT_TRUE(fs::is_empty(o.out_dir + "/capture_joints"));
-    for (const auto& row : read_csv(o.out_dir + "/clips.csv").rows) EXPECT_TRUE(row[clips.column("capture_fps")].empty());
+    for (const auto& row : read_csv(o.out_dir + "/clips.csv").rows)
+        EXPECT_TRUE(row[clips.column("capture_fps")].empty());
 }
 
 // summary.json's train_draw_share counts what the loader draws: train clips of 40 to 199 frames, so a 13-frame hop
@@ -306,7 +316,7 @@ TEST(DatasetBuilder, CapturedClipsKeepTheirCaptureRateWhereNew_jointsAre) {
 TEST(DatasetBuilder, TrainDrawShareCountsOnlyClipsTheLoaderKeeps) {
     CsvTable clips;
     clips.header = {"activity_tags", "frames", "split"};
-    clips.rows = {{"walking", "84", "train"}, {"jumping", "13", "train"}, {"jumping", "60", "train"},
+    clips.rows = {{"walking", "84", "train"},  {"jumping", "13", "train"}, {"jumping", "60", "train"},
                   {"jumping", "200", "train"}, {"walking", "40", "train"}, {"running", "90", "test"}};
     const nlohmann::json share = train_draw_share(clips);
     EXPECT_EQ(share.size(), 2u);
@@ -342,8 +352,10 @@ TEST(DatasetBuilder, MeasuredCaptionsSayTheClipsMeasuredTurnAndAreTaggedInCaptio
     ASSERT_EQ(measured["M000000"].size(), 3u);
     EXPECT_EQ(read_caption_file(o.out_dir + "/texts/000000.txt").size(), 5u);
     EXPECT_EQ(human, s.captions - 6);
-    const MotionAttributes a = measure_attributes(joint_sequence_from_array(read_npy(o.out_dir + "/new_joints/000000.npy"), "walk"));
-    const MotionAttributes b = measure_attributes(joint_sequence_from_array(read_npy(o.out_dir + "/new_joints/M000000.npy"), "mirror"));
+    const MotionAttributes a =
+        measure_attributes(joint_sequence_from_array(read_npy(o.out_dir + "/new_joints/000000.npy"), "walk"));
+    const MotionAttributes b =
+        measure_attributes(joint_sequence_from_array(read_npy(o.out_dir + "/new_joints/M000000.npy"), "mirror"));
     EXPECT_NEAR(a.heading_change_deg, -b.heading_change_deg, 0.1);  // features of the mirror, recovered in float32
     EXPECT_NEAR(a.ground_speed_m_s, b.ground_speed_m_s, 1e-4);
     for (const std::string& c : measured["000000"]) {

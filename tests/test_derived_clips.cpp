@@ -1,5 +1,5 @@
-// Derived clips from shared captured recordings: stairs (a flight, and a round trip) from a forward walk, sitting from idle standing; what
-// cannot be a source gives nothing; the draw is the same every time.
+// Derived clips from shared captured recordings: stairs (a flight, and a round trip) from a forward walk, sitting from
+// idle standing; what cannot be a source gives nothing; the draw is the same every time.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -90,7 +90,8 @@ TEST(DerivedClips, AForwardWalkGivesAFlightOfStairsAndOnRequestARoundTrip) {
     const DerivedClip& turn = clips[2];
     EXPECT_EQ(turn.method, "walk_turn");
     EXPECT_EQ(turn.activity, "walking");
-    const double drawn = turn.parameters["turn_rad"].get<double>() * 180 / M_PI, measured = measure_attributes(turn.joints_20fps).heading_change_deg;
+    const double drawn = turn.parameters["turn_rad"].get<double>() * 180 / M_PI,
+                 measured = measure_attributes(turn.joints_20fps).heading_change_deg;
     EXPECT_GE(std::fabs(drawn), 60);
     EXPECT_NEAR(measured, drawn, 15);  // the captured walk's own sway on top of the turn
     const std::string side = std::fabs(drawn) >= 135 ? "around" : drawn > 0 ? "left" : "right";
@@ -105,7 +106,9 @@ TEST(DerivedClips, BackwardWalksAndMixedRecordingsGiveNothing) {
     DeriveReport report;
     DeriveOptions turns;  // a backward walk is not turned either: "walks forward and turns" would not say what it does
     turns.turning_walks = true;
-    EXPECT_TRUE(derive_clips(shared_clip("mocap/bandai_bvh_native.tar.xz", kWalkBack), "walking", kWalkBack, report, turns).empty());
+    EXPECT_TRUE(
+        derive_clips(shared_clip("mocap/bandai_bvh_native.tar.xz", kWalkBack), "walking", kWalkBack, report, turns)
+            .empty());
     EXPECT_EQ(report.refused, 2);  // the staircase and the turn
     const JointSequence walk = shared_clip("mocap/bandai_bvh_native.tar.xz", kWalk);
     EXPECT_TRUE(derive_clips(walk, "walking;dancing", kWalk, report).empty());  // not one activity: not a source
@@ -254,7 +257,8 @@ TEST(DerivedClips, ACapturedJumpGivesOneJumpOfAnotherHeightAndAShortOneASeries) 
     ASSERT_EQ(series.parameters["time_scales"].size(), static_cast<size_t>(jumps));
     EXPECT_GE(series.joints_20fps.num_frames, Hml3dDataset::kMinFrames);
     EXPECT_LT(series.joints_20fps.num_frames, Hml3dDataset::kMaxFramesExclusive);
-    const std::vector<bool> left = stance_frames(series.joints, Foot::left), right = stance_frames(series.joints, Foot::right);
+    const std::vector<bool> left = stance_frames(series.joints, Foot::left),
+                            right = stance_frames(series.joints, Foot::right);
     int flights = 0;
     for (int f = 1; f < series.joints.num_frames; ++f)
         flights += !left[static_cast<size_t>(f)] && !right[static_cast<size_t>(f)] &&

@@ -19,7 +19,8 @@ namespace {
 // number of periods.
 double amplitude_at(const std::vector<double>& x, double rate, double hz, size_t from, size_t to) {
     std::complex<double> sum = 0;
-    for (size_t k = from; k < to; ++k) sum += x[k] * std::exp(std::complex<double>(0, -2 * M_PI * hz * static_cast<double>(k) / rate));
+    for (size_t k = from; k < to; ++k)
+        sum += x[k] * std::exp(std::complex<double>(0, -2 * M_PI * hz * static_cast<double>(k) / rate));
     return 2 * std::abs(sum) / static_cast<double>(to - from);
 }
 
@@ -31,7 +32,8 @@ std::vector<double> bouncing_vertical(double device_rate_hz) {
     JointSequence seq(601, smpl22::kNumJoints, fps);
     for (int f = 0; f < 601; ++f)
         for (int j = 0; j < smpl22::kNumJoints; ++j)
-            seq.at(f, j) = body.rest_joints()[static_cast<size_t>(j)] + Vector3d(0, 0.001 * std::sin(2 * M_PI * 14 * f / fps), 0);
+            seq.at(f, j) =
+                body.rest_joints()[static_cast<size_t>(j)] + Vector3d(0, 0.001 * std::sin(2 * M_PI * 14 * f / fps), 0);
     VirtualImuOptions o;
     o.rate_hz = 50;
     o.realism.sensor_sample_rate_hz = device_rate_hz;
@@ -59,16 +61,19 @@ TEST(DeviceRate, ResamplingKeepsWhatLiesInTheBand) {
     for (size_t k = 0; k < r.t.size(); ++k) {
         const double t = static_cast<double>(k) / 50;
         EXPECT_DOUBLE_EQ(r.t[k], t);
-        worst = std::max({worst, std::fabs(r.acc[k].y() + 9.81), std::fabs(r.acc[k].z() - 0.5 * t)});  // offset and trend: exact up to the filter's DC gain
+        worst = std::max({worst, std::fabs(r.acc[k].y() + 9.81),
+                          std::fabs(r.acc[k].z() - 0.5 * t)});  // offset and trend: exact up to the filter's DC gain
         if (t > 1 && t < 9)
-            worst = std::max({worst, std::fabs(r.acc[k].x() - std::sin(2 * M_PI * 3 * t)), std::fabs(r.gyr[k].z() - std::cos(2 * M_PI * 2 * t))});
+            worst = std::max({worst, std::fabs(r.acc[k].x() - std::sin(2 * M_PI * 3 * t)),
+                              std::fabs(r.gyr[k].z() - std::cos(2 * M_PI * 2 * t))});
     }
     // The Kaiser (beta 5) filter's passband ripple at 0.3 of the device's Nyquist frequency is below 1e-2.
     EXPECT_LT(worst, 1e-2);
     const ImuSignals same = resample_imu_signals(s, 20);
     EXPECT_EQ(same.acc, s.acc);
     s.rate_hz = 20.5;
-    EXPECT_TRUE(test::contains(test::error_message([&] { resample_imu_signals(s, 50); }), "--rate: rate: expected whole numbers of Hz"));
+    EXPECT_TRUE(test::contains(test::error_message([&] { resample_imu_signals(s, 50); }),
+                               "--rate: rate: expected whole numbers of Hz"));
 }
 
 TEST(DeviceRate, ABounceAboveHalfTheDeviceRateFoldsIntoTheBand) {
@@ -84,11 +89,17 @@ TEST(DeviceRate, ABounceAboveHalfTheDeviceRateFoldsIntoTheBand) {
 }
 
 TEST(DeviceRate, RealismKeyIsValidatedAndRecorded) {
-    EXPECT_DOUBLE_EQ(parse_realism_toml("base = \"umafall\"\nsensor_rate_hz = 20\n", "r.toml").to_json()["sensor_rate_hz"].get<double>(), 20);
-    EXPECT_TRUE(test::contains(test::error_message([] { parse_realism_toml("sensor_rate_hz = 2\n", "r.toml"); }), "r.toml: sensor_rate_hz"));
-    EXPECT_TRUE(test::contains(test::error_message([] { parse_realism_toml("sensor_rate_hz = 20.5\n", "r.toml"); }), "r.toml: sensor_rate_hz: expected 0 (off) or 5 to 2000 Hz, whole"));
+    EXPECT_DOUBLE_EQ(parse_realism_toml("base = \"umafall\"\nsensor_rate_hz = 20\n", "r.toml")
+                         .to_json()["sensor_rate_hz"]
+                         .get<double>(),
+                     20);
+    EXPECT_TRUE(test::contains(test::error_message([] { parse_realism_toml("sensor_rate_hz = 2\n", "r.toml"); }),
+                               "r.toml: sensor_rate_hz"));
+    EXPECT_TRUE(test::contains(test::error_message([] { parse_realism_toml("sensor_rate_hz = 20.5\n", "r.toml"); }),
+                               "r.toml: sensor_rate_hz: expected 0 (off) or 5 to 2000 Hz, whole"));
     VirtualImuOptions o;
     o.rate_hz = 52.5;
     o.realism.sensor_sample_rate_hz = 20;
-    EXPECT_TRUE(test::contains(test::error_message([&] { o.validate(); }), "--rate: rate: expected a whole number of Hz"));
+    EXPECT_TRUE(
+        test::contains(test::error_message([&] { o.validate(); }), "--rate: rate: expected a whole number of Hz"));
 }

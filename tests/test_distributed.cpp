@@ -39,14 +39,15 @@ int free_loopback_port() {
     a.sin_port = 0;
     socklen_t len = sizeof a;
     int port = 0;
-    if (bind(s, reinterpret_cast<sockaddr*>(&a), sizeof a) == 0 && getsockname(s, reinterpret_cast<sockaddr*>(&a), &len) == 0)
+    if (bind(s, reinterpret_cast<sockaddr*>(&a), sizeof a) == 0 &&
+        getsockname(s, reinterpret_cast<sockaddr*>(&a), &len) == 0)
         port = ntohs(a.sin_port);
     close(s);
     return port;
 }
 
-#define LOOPBACK_PORT_OR_SKIP(port)                                                                        \
-    const int port = free_loopback_port();                                                                 \
+#define LOOPBACK_PORT_OR_SKIP(port)        \
+    const int port = free_loopback_port(); \
     if (port == 0) GTEST_SKIP() << "cannot bind a TCP socket on 127.0.0.1, which Gloo's rendezvous needs"
 
 ProcessGroupEnv two_ranks(int rank, int port) {
@@ -73,18 +74,20 @@ std::vector<double> logged_losses(const std::string& metrics) {
 
 // Runs `t2imu train` as ranks 0 and 1 of two processes meeting on 127.0.0.1:port, in `dir`; the failing rank's log
 // when one fails, else empty.
-std::string train_two_processes(const std::string& dir, const std::string& config, int port, const std::string& args = "") {
+std::string train_two_processes(const std::string& dir, const std::string& config, int port,
+                                const std::string& args = "") {
     // SIGKILL: t2imu train takes SIGTERM as "save and stop after this step", which a rank waiting for the other
     // never reaches.
     std::string s = "cd '" + dir + "' && { ";
     for (int r = 0; r < 2; ++r)
-        s += "(RANK=" + std::to_string(r) + " WORLD_SIZE=2 MASTER_ADDR=127.0.0.1 MASTER_PORT=" + std::to_string(port) + " timeout -s KILL 120 '" +
-             T2IMU_BINARY + "' --threads 1 train --config '" + config + "' " + args + " > rank" + std::to_string(r) + ".log 2>&1; echo $? > rank" +
-             std::to_string(r) + ".rc) & ";
+        s += "(RANK=" + std::to_string(r) + " WORLD_SIZE=2 MASTER_ADDR=127.0.0.1 MASTER_PORT=" + std::to_string(port) +
+             " timeout -s KILL 120 '" + T2IMU_BINARY + "' --threads 1 train --config '" + config + "' " + args +
+             " > rank" + std::to_string(r) + ".log 2>&1; echo $? > rank" + std::to_string(r) + ".rc) & ";
     if (std::system((s + "wait; }").c_str()) != 0) return "the shell could not start both ranks";
     for (int r = 0; r < 2; ++r)
         if (read_file_text(dir + "/rank" + std::to_string(r) + ".rc") != "0\n")
-            return "rank " + std::to_string(r) + " failed:\n" + read_file_text(dir + "/rank" + std::to_string(r) + ".log");
+            return "rank " + std::to_string(r) + " failed:\n" +
+                   read_file_text(dir + "/rank" + std::to_string(r) + ".log");
     return "";
 }
 
@@ -136,7 +139,8 @@ TEST(Distributed, ReadsTorchrunVariablesAndRefusesBadOnes) {
         return it == vars.end() ? nullptr : it->second.c_str();
     };
     EXPECT_EQ(read_process_group_env(env).world_size, 1);  // nothing set: one process
-    vars = {{"RANK", "1"}, {"WORLD_SIZE", "2"}, {"LOCAL_RANK", "1"}, {"MASTER_ADDR", "10.0.0.5"}, {"MASTER_PORT", "29501"}};
+    vars = {
+        {"RANK", "1"}, {"WORLD_SIZE", "2"}, {"LOCAL_RANK", "1"}, {"MASTER_ADDR", "10.0.0.5"}, {"MASTER_PORT", "29501"}};
     const ProcessGroupEnv e = read_process_group_env(env);
     EXPECT_EQ(e.rank, 1);
     EXPECT_EQ(e.world_size, 2);
@@ -165,11 +169,13 @@ TEST(Distributed, RefusesABatchTheRanksCannotShareEqually) {
     std::string config = read_file_text(test::write_tiny_train_config(dir, data, dir + "/m"));
     config.replace(config.find("batch = 4"), 9, "batch = 5");
     write_file_atomic(dir + "/odd.toml", config);
-    const std::string cmd = "cd '" + dir + "' && RANK=0 WORLD_SIZE=2 MASTER_ADDR=127.0.0.1 MASTER_PORT=1 timeout -s KILL 60 '" + T2IMU_BINARY +
-                            "' --threads 1 train --config odd.toml > out.log 2>&1";
+    const std::string cmd = "cd '" + dir +
+                            "' && RANK=0 WORLD_SIZE=2 MASTER_ADDR=127.0.0.1 MASTER_PORT=1 timeout -s KILL 60 '" +
+                            T2IMU_BINARY + "' --threads 1 train --config odd.toml > out.log 2>&1";
     const int status = std::system(cmd.c_str());
     EXPECT_EQ(WEXITSTATUS(status), 1) << read_file_text(dir + "/out.log");
-    EXPECT_NE(read_file_text(dir + "/out.log").find("train.batch"), std::string::npos) << read_file_text(dir + "/out.log");
+    EXPECT_NE(read_file_text(dir + "/out.log").find("train.batch"), std::string::npos)
+        << read_file_text(dir + "/out.log");
 }
 
 TEST(Distributed, TwoRanksAverageGradientsAndShareRankZerosWeights) {
@@ -187,7 +193,8 @@ TEST(Distributed, TwoRanksAverageGradientsAndShareRankZerosWeights) {
             group.broadcast_from_main({params[r][0], params[r][1], params[r][2]});
             (params[r][0] * (2.0f + 2.0f * static_cast<float>(r))).sum().backward();
             if (r == 1) (params[r][1] * 4.0f).sum().backward();
-            riders[r] = group.average_gradients({params[r][0], params[r][1], params[r][2]}, torch::tensor({1.0f + static_cast<float>(r), 0.0f}));
+            riders[r] = group.average_gradients({params[r][0], params[r][1], params[r][2]},
+                                                torch::tensor({1.0f + static_cast<float>(r), 0.0f}));
             group.barrier();
         } catch (const std::exception& e) {
             failure[r] = e.what();
@@ -198,7 +205,8 @@ TEST(Distributed, TwoRanksAverageGradientsAndShareRankZerosWeights) {
     other.join();
     ASSERT_TRUE(failure[0].empty() && failure[1].empty()) << failure[0] << " | " << failure[1];
     for (int r = 0; r < 2; ++r) {
-        EXPECT_TRUE(torch::equal(params[r][0].detach(), torch::zeros({3, 2}))) << "rank " << r << " got rank 0's weights";
+        EXPECT_TRUE(torch::equal(params[r][0].detach(), torch::zeros({3, 2})))
+            << "rank " << r << " got rank 0's weights";
         EXPECT_TRUE(torch::allclose(params[r][0].grad(), torch::full({3, 2}, 3.0f)));
         ASSERT_TRUE(params[r][1].grad().defined());
         EXPECT_TRUE(torch::allclose(params[r][1].grad(), torch::full({3, 2}, 2.0f)));
@@ -215,7 +223,8 @@ TEST(Distributed, TwoProcessesTrainTheSameWeightsAsOneWithTheWholeBatch) {
     // Condition dropout on (0.25, so captions are dropped in both shares), the text encoder's own dropout off: its
     // masks are drawn per rank (trainer.hpp), so with it the two runs would agree only in distribution.
     const auto config = [&](const std::string& name) {
-        std::string text = read_file_text(test::write_tiny_train_config(dir, data, dir + "/" + name, "cond_dropout = 0.25\n"));
+        std::string text =
+            read_file_text(test::write_tiny_train_config(dir, data, dir + "/" + name, "cond_dropout = 0.25\n"));
         text.replace(text.find("[text]\n"), 7, "[text]\ndropout = 0.0\n");
         text.replace(text.find("steps = 40"), 10, "steps = 12");
         write_file_atomic(dir + "/" + name + ".toml", text);
@@ -229,7 +238,8 @@ TEST(Distributed, TwoProcessesTrainTheSameWeightsAsOneWithTheWholeBatch) {
 
     expect_same_weights(dir + "/one", dir + "/two");
     // The log of the two processes is the global batch's loss, as in one process.
-    const std::vector<double> la = logged_losses(dir + "/one/metrics.jsonl"), lb = logged_losses(dir + "/two/metrics.jsonl");
+    const std::vector<double> la = logged_losses(dir + "/one/metrics.jsonl"),
+                              lb = logged_losses(dir + "/two/metrics.jsonl");
     ASSERT_EQ(la.size(), lb.size());
     for (size_t i = 0; i < la.size(); ++i) EXPECT_NEAR(la[i], lb[i], 1e-4 * la[i]) << "log line " << i;
     // Only rank 0 wrote: one line per log step, not two.
@@ -247,7 +257,8 @@ TEST(Distributed, TwoProcessesTrainTheSameWeightsAsOneWithTheWholeBatch) {
     for (const auto& p : initial->named_parameters()) {
         const torch::Tensor w = p.value().detach().contiguous();
         const std::vector<float>& v = trained.at(p.key());
-        for (int64_t i = 0; i < w.numel(); ++i) moved = std::max(moved, std::fabs(double(w.data_ptr<float>()[i]) - v[static_cast<size_t>(i)]));
+        for (int64_t i = 0; i < w.numel(); ++i)
+            moved = std::max(moved, std::fabs(double(w.data_ptr<float>()[i]) - v[static_cast<size_t>(i)]));
     }
     EXPECT_GT(moved, 1e-3);  // 12 AdamW steps of 1e-3
 

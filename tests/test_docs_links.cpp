@@ -39,7 +39,8 @@ std::vector<std::string> broken_links(const fs::path& root, const fs::path& mark
             broken.push_back(where + ": links " + target + ", which does not exist");
         } else if (!anchor.empty() && file.extension() == ".md" &&
                    t2imu::test::markdown_headings(file).anchors.count(anchor.substr(1)) == 0) {
-            broken.push_back(where + ": links " + target + anchor + ", a heading " + file.filename().string() + " lacks");
+            broken.push_back(where + ": links " + target + anchor + ", a heading " + file.filename().string() +
+                             " lacks");
         }
     }
     return broken;
@@ -50,7 +51,8 @@ std::vector<std::string> broken_links(const fs::path& root, const fs::path& mark
 TEST(DocsLinks, AnchorsFollowGitHubsRule) {
     using t2imu::test::heading_anchor;
     EXPECT_EQ(heading_anchor("The trunk's sway (2026-12-03)"), "the-trunks-sway-2026-12-03");
-    EXPECT_EQ(heading_anchor("Quick start (Debian 12, as root or with sudo)"), "quick-start-debian-12-as-root-or-with-sudo");
+    EXPECT_EQ(heading_anchor("Quick start (Debian 12, as root or with sudo)"),
+              "quick-start-debian-12-as-root-or-with-sudo");
     EXPECT_EQ(heading_anchor("HAR: 75.2 ± 0.7 %"), "har-752--07-");
     EXPECT_EQ(heading_anchor("Häusler's L_acc"), "häuslers-l_acc");
 }

@@ -26,10 +26,12 @@ TEST(Error, HugeQuotesAreCutAfterTheirHead) {
     const std::string digits(301, '9'), text(10000, 'x');
     const std::string m = Error("--seconds", "seconds", "at most 9.8", digits + ".000000").what();
     EXPECT_EQ(m, "--seconds: seconds: expected at most 9.8 (got 999999999999...(301 digits).000000)");
-    EXPECT_EQ(printable_text("(3, 123456789012345678901234)", 100), "(3, 123456789012345678901234)");  // 24 digits: kept
+    EXPECT_EQ(printable_text("(3, 123456789012345678901234)", 100),
+              "(3, 123456789012345678901234)");  // 24 digits: kept
     EXPECT_EQ(printable_text("(3, 1234567890123456789012345)", 100), "(3, 123456789012...(25 digits))");
     const std::string long_path = "/data/" + std::string(300, 'p') + "/file.csv: line 2: expected a number";
-    EXPECT_EQ(std::string(Error("in", "recordings", "a usable one", long_path).what()), "in: recordings: expected a usable one (got " + long_path + ")");
+    EXPECT_EQ(std::string(Error("in", "recordings", "a usable one", long_path).what()),
+              "in: recordings: expected a usable one (got " + long_path + ")");
     EXPECT_NE(std::string(Error("x", "y", "z", text).what()).find("... (10000 bytes))"), std::string::npos);
     EXPECT_LE(std::string(Error(text).what()).size(), 2030u);
     // A cut never splits a UTF-8 character: "é" (2 bytes) repeated, cut at an odd count of bytes.

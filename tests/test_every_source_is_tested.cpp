@@ -27,7 +27,8 @@ const std::map<std::string, Coverage> kCoveredBy = {
     {"body/body_spec", {"test_body.cpp", "#include \"body/body_spec.hpp\""}},
     {"body/procedural_body", {"test_body.cpp", "#include \"body/procedural_body.hpp\""}},
     {"core/zip_archive", {"test_realworld.cpp", "#include \"core/zip_archive.hpp\""}},
-    {"data/clip_activities", {"test_caption_anchor.cpp", "running;jogging"}},  // clips.csv's tags, folded to canonical names
+    {"data/clip_activities",
+     {"test_caption_anchor.cpp", "running;jogging"}},  // clips.csv's tags, folded to canonical names
     {"diffusion/mdm_io", {"test_mdm.cpp", "model forward"}},
     {"diffusion/text_to_motion", {"test_clip.cpp", "#include \"diffusion/text_to_motion.hpp\""}},
     {"har/class_map", {"test_har.cpp", "#include \"har/class_map.hpp\""}},
@@ -78,13 +79,16 @@ TEST(EverySourceIsTested, ByATestOfItsNameOrAListedOne) {
         if (fs::exists(root / "tests" / ("test_" + e.path().stem().string() + ".cpp"))) continue;
         const auto it = kCoveredBy.find(relative);
         if (it == kCoveredBy.end()) {
-            ADD_FAILURE() << "src/" << relative << ".cpp has no tests/test_" << e.path().stem().string() << ".cpp and no entry here";
+            ADD_FAILURE() << "src/" << relative << ".cpp has no tests/test_" << e.path().stem().string()
+                          << ".cpp and no entry here";
             continue;
         }
         ++listed_used;
         const std::string test = read_text(root / "tests" / it->second.test);
-        EXPECT_NE(test.find(it->second.evidence), std::string::npos) << it->second.test << " does not show \"" << it->second.evidence << "\"";
+        EXPECT_NE(test.find(it->second.evidence), std::string::npos)
+            << it->second.test << " does not show \"" << it->second.evidence << "\"";
     }
-    EXPECT_EQ(listed_used, static_cast<int>(kCoveredBy.size())) << "an entry names a source that has a test of its own or is gone";
+    EXPECT_EQ(listed_used, static_cast<int>(kCoveredBy.size()))
+        << "an entry names a source that has a test of its own or is gone";
     EXPECT_GE(sources, 140);  // 143 library sources on 2026-12-04
 }

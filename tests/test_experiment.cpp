@@ -96,7 +96,8 @@ TEST(Experiment, RunsEveryStepAndResumesWithMoreRepeats) {
         for (int k = 0; k < 2; ++k) {
             const HarResult one = read_har_result(out + "/runs/" + id + "/seed-" + std::to_string(k) + ".jsonl");
             EXPECT_EQ(merged.runs[static_cast<size_t>(k)].balanced_accuracy, one.runs[0].balanced_accuracy);
-            EXPECT_EQ(row["balanced_accuracy"]["runs"][static_cast<size_t>(k)].get<double>(), one.runs[0].balanced_accuracy);
+            EXPECT_EQ(row["balanced_accuracy"]["runs"][static_cast<size_t>(k)].get<double>(),
+                      one.runs[0].balanced_accuracy);
         }
         const nlohmann::json gap = nlohmann::json::parse(read_file_text(out + "/gap/" + id + ".json"));
         EXPECT_EQ(row["two_sample_balanced_accuracy"], gap["classifier_two_sample_test"]["balanced_accuracy"]);
@@ -110,7 +111,8 @@ TEST(Experiment, RunsEveryStepAndResumesWithMoreRepeats) {
     EXPECT_EQ(read_file_text(out + "/features/tiny-fake.csv"), read_file_text(out + "/features/same-fake.csv"));
     // L_acc of a model against itself on the same draws: no change in any group.
     ASSERT_TRUE(s.contains("lacc"));
-    for (const auto& [group, g] : s["lacc"]["groups"].items()) EXPECT_EQ(g["change_percent"].get<double>(), 0.0) << group;
+    for (const auto& [group, g] : s["lacc"]["groups"].items())
+        EXPECT_EQ(g["change_percent"].get<double>(), 0.0) << group;
     EXPECT_GT(s["lacc"]["groups"]["all"]["samples"].get<double>(), 0);
     // The ceiling: two folds over the three real subjects, on the rows' classes.
     ASSERT_EQ(s["ceilings"].size(), 1u);
@@ -129,8 +131,8 @@ TEST(Experiment, RunsEveryStepAndResumesWithMoreRepeats) {
     EXPECT_TRUE(fs::exists(out + "/report/index.html"));
 
     // A third repeat trains only seed 2; what was done is not touched.
-    const auto seed0 = modified(out + "/runs/tiny-fake/seed-0.jsonl"), features = modified(out + "/features/real-fake.csv"),
-               ceiling = modified(out + "/har/ceiling-fake.json");
+    const auto seed0 = modified(out + "/runs/tiny-fake/seed-0.jsonl"),
+               features = modified(out + "/features/real-fake.csv"), ceiling = modified(out + "/har/ceiling-fake.json");
     c.har.repeats = 3;
     const nlohmann::json again = experiment_summary_json(run_experiment(c, out));
     EXPECT_EQ(modified(out + "/runs/tiny-fake/seed-0.jsonl"), seed0);

@@ -20,20 +20,26 @@ namespace fs = std::filesystem;
 namespace {
 const char* kMinimal =
     "[[source]]\nname = \"mdm\"\nmodel = \"models/default\"\n"
-    "[[real]]\nname = \"sisfall\"\ndataset = \"data/sisfall\"\nprompts = \"prompts/sisfall.tsv\"\nsensors = \"sisfall\"\n";
+    "[[real]]\nname = \"sisfall\"\ndataset = \"data/sisfall\"\nprompts = \"prompts/sisfall.tsv\"\nsensors = "
+    "\"sisfall\"\n";
 
 const char* kFull =
     "[synth]\nsamples_per_prompt = 3\nbodies = \"preset:male_tall\"\nnoise = \"smartphone\"\nrealism = \"sisfall\"\n"
-    "vocab = \"v.txt\"\nsampler = \"ddim\"\nsteps = 25\nguidance = 2.5\ncaption_anchor = 0.5\nbatch = 8\nseed = 42\nseconds = 4.5\nrate_hz = 64\n"
-    "filter = false\nmax_retries = 4\nactivity_reference = \"ref.csv\"\nmin_activity_agreement = 0.6\ndrop_activity_failures = true\n"
+    "vocab = \"v.txt\"\nsampler = \"ddim\"\nsteps = 25\nguidance = 2.5\ncaption_anchor = 0.5\nbatch = 8\nseed = "
+    "42\nseconds = 4.5\nrate_hz = 64\n"
+    "filter = false\nmax_retries = 4\nactivity_reference = \"ref.csv\"\nmin_activity_agreement = "
+    "0.6\ndrop_activity_failures = true\n"
     "[[source]]\nname = \"mdm\"\nmodel = \"models/default\"\n"
     "[[source]]\nname = \"mdm_lacc\"\nmodel = \"models/default-lacc\"\n"
-    "[[real]]\nname = \"umafall\"\ndataset = \"d/u\"\nprompts = \"p/u.tsv\"\nsensors = \"umafall\"\npositions = [\"waist\", \"wrist\"]\n"
+    "[[real]]\nname = \"umafall\"\ndataset = \"d/u\"\nprompts = \"p/u.tsv\"\nsensors = \"umafall\"\npositions = "
+    "[\"waist\", \"wrist\"]\n"
     "ceiling_folds = -1\nrealism = \"umafall\"\n"
-    "[har]\nrepeats = 3\nseed = 9\nmax_epochs = 12\npatience = 2\nbatch = 32\nlearning_rate = 0.002\nrate_hz = 25\nwindow_s = 3\n"
+    "[har]\nrepeats = 3\nseed = 9\nmax_epochs = 12\npatience = 2\nbatch = 32\nlearning_rate = 0.002\nrate_hz = "
+    "25\nwindow_s = 3\n"
     "overlap = 0.25\ngyro = true\n"
     "[features]\ntsne_points = 500\nperplexity = 20\nseed = 5\n"
-    "[lacc]\nbefore = \"mdm\"\nafter = \"mdm_lacc\"\ndataset = \"data/h\"\nsplit = \"val\"\nvocab = \"g.txt\"\nseed = 11\ntau = 0.5\n";
+    "[lacc]\nbefore = \"mdm\"\nafter = \"mdm_lacc\"\ndataset = \"data/h\"\nsplit = \"val\"\nvocab = \"g.txt\"\nseed = "
+    "11\ntau = 0.5\n";
 
 std::string write_config(const std::string& name, const std::string& text) {
     const std::string path = test::scratch_dir("experiment_config_" + name) + "/c.toml";
@@ -130,35 +136,37 @@ TEST(ExperimentConfig, RefusesEachRuleNamingTheField) {
     const std::string base = kMinimal;
     const std::pair<std::string, std::string> cases[] = {
         // {toml, a part of the message}
-        {base + "[[source]]\nname = \"x\"\n", "source[1].model"},                                  // required key
-        {base + "[extra]\nx = 1\n", "extra"},                                                      // unknown table
-        {base + "[synth]\nstepz = 3\n", "synth.stepz"},                                            // unknown keys
+        {base + "[[source]]\nname = \"x\"\n", "source[1].model"},  // required key
+        {base + "[extra]\nx = 1\n", "extra"},                      // unknown table
+        {base + "[synth]\nstepz = 3\n", "synth.stepz"},            // unknown keys
         {base + "[features]\nseed = 1\npoints = 3\n", "features.points"},
         {base + "[lacc]\nbefore = \"mdm\"\nafter = \"mdm\"\nsplitt = \"a\"\n", "lacc.splitt"},
-        {"[[source]]\nname = \"mdm\"\nmodel = \"m\"\nweight = 1\n" + base.substr(base.find("[[real]]")), "source[0].weight"},
-        {base + "[synth]\nseed = -1\n", "synth.seed"},                                             // negative seeds
+        {"[[source]]\nname = \"mdm\"\nmodel = \"m\"\nweight = 1\n" + base.substr(base.find("[[real]]")),
+         "source[0].weight"},
+        {base + "[synth]\nseed = -1\n", "synth.seed"},  // negative seeds
         {base + "[har]\nseed = -3\n", "har.seed"},
         {base + "[features]\nseed = -1\n", "features.seed"},
         {base + "[lacc]\nseed = -2\n", "lacc.seed"},
-        {base + "[synth]\nsampler = \"euler\"\n", "synth.sampler"},                                // closed choices
+        {base + "[synth]\nsampler = \"euler\"\n", "synth.sampler"},  // closed choices
         {base + "[synth]\nrealism = \"sisfal\"\n", "synth.realism"},
         {base + "[synth]\nsteps = 2.5\n", "synth.steps"},
-        {base + "[synth]\ncaption_anchor = 1.5\n", "synth.caption_anchor"},                                          // types
-        {base + "[har]\nrepeats = 0\n", "har"},                                                    // validated ranges
+        {base + "[synth]\ncaption_anchor = 1.5\n", "synth.caption_anchor"},  // types
+        {base + "[har]\nrepeats = 0\n", "har"},                              // validated ranges
         {base + "[har]\noverlap = 1.5\n", "har"},
-        {base + "[[source]]\nname = \"mdm\"\nmodel = \"other\"\n", "source.name"},                 // duplicate
+        {base + "[[source]]\nname = \"mdm\"\nmodel = \"other\"\n", "source.name"},  // duplicate
         {"[[source]]\nname = \"my model\"\nmodel = \"m\"\n" + base.substr(base.find("[[real]]")), "source.name"},
         {"[[source]]\nname = \"a-b\"\nmodel = \"m\"\n" + base.substr(base.find("[[real]]")), "source.name"},
         {base + "[[real]]\nname = \"real\"\ndataset = \"d\"\nprompts = \"p\"\nsensors = \"s\"\n", "real.name"},
         {base + "[[real]]\nname = \"a/b\"\ndataset = \"d\"\nprompts = \"p\"\nsensors = \"s\"\n", "real.name"},
-        {base.substr(0, base.find("[[real]]")), "[[real]]"},                                       // none of them
-        {base + "[lacc]\nbefore = \"mdm\"\nafter = \"nothing\"\n", "lacc"},                        // L_acc sources
+        {base.substr(0, base.find("[[real]]")), "[[real]]"},                 // none of them
+        {base + "[lacc]\nbefore = \"mdm\"\nafter = \"nothing\"\n", "lacc"},  // L_acc sources
         {base + "[lacc]\nbefore = \"mdm\"\n", "lacc"},
     };
     int k = 0;
     for (const auto& [text, field] : cases) {
         const std::string m = refusal("refused_" + std::to_string(k++), text);
-        EXPECT_TRUE(test::contains(m, field)) << "expected a refusal naming `" << field << "` for\n" << text << "\ngot: " << m;
+        EXPECT_TRUE(test::contains(m, field)) << "expected a refusal naming `" << field << "` for\n"
+                                              << text << "\ngot: " << m;
     }
     // A file that is not TOML, and no file at all.
     EXPECT_TRUE(test::contains(refusal("broken", "[[source]\nname ="), "toml"));
@@ -178,16 +186,19 @@ TEST(ExperimentConfig, ShippedConfigsReadAndEditsAreRefused) {
     EXPECT_EQ(c.synth.sampling.sampler, Sampler::dpmpp);  // t2imu synth's default, from SynthOptions
     EXPECT_EQ(c.lacc.after, "mdm_lacc");
     EXPECT_EQ(c.synth.realism, "none");  // the paper's pipeline: the ideal sensor
-    const ExperimentConfig coverage = read_experiment_config(std::string(T2IMU_SOURCE_DIR) + "/experiments/coverage.toml");
+    const ExperimentConfig coverage =
+        read_experiment_config(std::string(T2IMU_SOURCE_DIR) + "/experiments/coverage.toml");
     EXPECT_EQ(coverage.real_sets[0].realism, "sisfall");
     // The realism ablation: one [[real]] variant per lever, each spelled from the realism table.
-    const ExperimentConfig ablation = read_experiment_config(std::string(T2IMU_SOURCE_DIR) + "/experiments/realism-ablation.toml");
+    const ExperimentConfig ablation =
+        read_experiment_config(std::string(T2IMU_SOURCE_DIR) + "/experiments/realism-ablation.toml");
     ASSERT_EQ(ablation.real_sets.size(), 11u);
     EXPECT_EQ(ablation.real_sets[1].realism, "sisfall-sensor");
     for (const ExperimentRealSet& set : ablation.real_sets) EXPECT_EQ(set.dataset, "cache/imu/sisfall") << set.name;
     // Every experiment configuration in experiments/ reads (the training configs hold no [[real]]).
     for (const auto& e : fs::directory_iterator(std::string(T2IMU_SOURCE_DIR) + "/experiments")) {
-        if (e.path().extension() != ".toml" || read_file_text(e.path().string()).find("[[real]]") == std::string::npos) continue;
+        if (e.path().extension() != ".toml" || read_file_text(e.path().string()).find("[[real]]") == std::string::npos)
+            continue;
         EXPECT_NO_THROW(read_experiment_config(e.path().string())) << e.path();
     }
 

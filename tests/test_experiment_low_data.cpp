@@ -13,7 +13,8 @@ namespace {
 
 const char* kBase =
     "[[source]]\nname = \"mdm\"\nmodel = \"models/default\"\n"
-    "[[real]]\nname = \"sisfall\"\ndataset = \"data/sisfall\"\nprompts = \"prompts/sisfall.tsv\"\nsensors = \"sisfall\"\n";
+    "[[real]]\nname = \"sisfall\"\ndataset = \"data/sisfall\"\nprompts = \"prompts/sisfall.tsv\"\nsensors = "
+    "\"sisfall\"\n";
 
 ExperimentConfig read_with(const std::string& low_data) {
     const std::string path = test::scratch_dir("experiment_low_data") + "/c.toml";
@@ -25,8 +26,10 @@ ExperimentConfig read_with(const std::string& low_data) {
 
 TEST(ExperimentLowData, EveryKeyLandsInItsField) {
     const ExperimentLowData l = read_with(
-        "train_subjects = [\"0\", \"2\", \"all\"]\nall_test_subjects = 3\ndraws = 7\nprotocols = [\"finetune\"]\nsynthetic_share = 0.25\n"
-        "finetune_epochs = 0\nfinetune_learning_rate = 0.001\n").low_data;
+                                    "train_subjects = [\"0\", \"2\", \"all\"]\nall_test_subjects = 3\ndraws = "
+                                    "7\nprotocols = [\"finetune\"]\nsynthetic_share = 0.25\n"
+                                    "finetune_epochs = 0\nfinetune_learning_rate = 0.001\n")
+                                    .low_data;
     EXPECT_EQ(l.train_subjects, (std::vector<int>{0, 2, ExperimentLowData::kAllSubjects}));
     EXPECT_EQ(l.all_test_subjects, 3);
     EXPECT_EQ(l.draws, 7);
@@ -70,7 +73,8 @@ TEST(ExperimentLowData, TableHasEveryArmAndTheGain) {
     c.arms.push_back({"mdm mix", {{"0", 0, {0.75}}, {"1", 1, {0.8, 0.84}}}});
     c.arms.push_back({"mdm finetune", {{"0", 0, {0.75}}, {"1", 1, {0.7, 0.72}}}});
     const std::string md = low_data_markdown({c});
-    EXPECT_TRUE(test::contains(md, "| K | real only | mdm mix | mdm finetune | best synthetic arm − real only |")) << md;
+    EXPECT_TRUE(test::contains(md, "| K | real only | mdm mix | mdm finetune | best synthetic arm − real only |"))
+        << md;
     EXPECT_TRUE(test::contains(md, "| 1 | 65.0 ± 7.1 (2) | 82.0 ± 2.8 (2) | 71.0 ± 1.4 (2) | +17.0 |")) << md;
     EXPECT_TRUE(test::contains(md, "| 0 |  | 75.0 ± 0.0 (1) | 75.0 ± 0.0 (1) |  |")) << md;
     EXPECT_TRUE(test::contains(md, "- mdm mix, K = 1 (1 subjects): 80.0 84.0")) << md;

@@ -1,7 +1,7 @@
-// experiment_summary.cpp: summary.json's fields, and experiment_summary_markdown on a hand-made summary: rows per source in order of
-// first appearance, columns per real set in config order (with their class counts), balanced accuracy as
-// "mean ± sd % (runs)" in percent, an empty cell where a source lacks a set, the ceilings and chance rows, the
-// two-sample test to three decimals, and the L_acc table with signed changes (only when the summary has one).
+// experiment_summary.cpp: summary.json's fields, and experiment_summary_markdown on a hand-made summary: rows per
+// source in order of first appearance, columns per real set in config order (with their class counts), balanced
+// accuracy as "mean ± sd % (runs)" in percent, an empty cell where a source lacks a set, the ceilings and chance rows,
+// the two-sample test to three decimals, and the L_acc table with signed changes (only when the summary has one).
 #include <gtest/gtest.h>
 
 #include "pipeline/experiment.hpp"
@@ -11,12 +11,15 @@ using namespace t2imu;
 using nlohmann::json;
 
 namespace {
-ScoreSummary score(double mean, double sd, int runs) { return {mean, sd, std::vector<double>(static_cast<size_t>(runs), mean)}; }
+ScoreSummary score(double mean, double sd, int runs) {
+    return {mean, sd, std::vector<double>(static_cast<size_t>(runs), mean)};
+}
 
-ExperimentRow row(const std::string& source, const std::string& model, const std::string& set, int classes, ScoreSummary ba, double chance,
-                  double two_sample) {
+ExperimentRow row(const std::string& source, const std::string& model, const std::string& set, int classes,
+                  ScoreSummary ba, double chance, double two_sample) {
     ExperimentRow r;
-    r.source = source, r.model = model, r.real_set = set, r.chance = chance, r.balanced_accuracy = ba, r.two_sample_balanced_accuracy = two_sample;
+    r.source = source, r.model = model, r.real_set = set, r.chance = chance, r.balanced_accuracy = ba,
+    r.two_sample_balanced_accuracy = two_sample;
     for (int k = 0; k < classes; ++k) r.classes.push_back("c" + std::to_string(k));
     return r;
 }
@@ -40,7 +43,8 @@ ExperimentSummary summary(bool with_lacc) {
 TEST(ExperimentSummary, HarTableInPercentWithRunsAndClassCounts) {
     const std::string md = experiment_summary_markdown(summary(false));
     EXPECT_TRUE(test::contains(md, "2 of 10 repeats done.")) << md;
-    EXPECT_TRUE(test::contains(md, "| training data | sisfall (4 classes) | umafall (8 classes) |\n|---|---|---|\n")) << md;
+    EXPECT_TRUE(test::contains(md, "| training data | sisfall (4 classes) | umafall (8 classes) |\n|---|---|---|\n"))
+        << md;
     // 0.526 ± 0.031 over 2 runs; retrieval has no umafall cell.
     EXPECT_TRUE(test::contains(md, "| mdm (models/default) | 52.6 ± 3.1 % (2) | 40.0 ± 0.0 % (2) |\n")) << md;
     EXPECT_TRUE(test::contains(md, "| retrieval (retrieval:data) | 61.0 ± 4.6 % (1) |  |\n")) << md;
@@ -55,7 +59,9 @@ TEST(ExperimentSummary, TwoSampleTableAndOptionalLacc) {
     EXPECT_TRUE(test::contains(without, "| retrieval | 0.500 |  |\n")) << without;
     EXPECT_FALSE(test::contains(without, "## L_acc"));
     const std::string with = experiment_summary_markdown(summary(true));
-    EXPECT_TRUE(test::contains(with, "## L_acc of mdm_lacc against mdm on the same clips and draws, per activity category")) << with;
+    EXPECT_TRUE(
+        test::contains(with, "## L_acc of mdm_lacc against mdm on the same clips and draws, per activity category"))
+        << with;
     EXPECT_TRUE(test::contains(with, "| Running | 12 | -12.7 % |\n")) << with;
     EXPECT_TRUE(test::contains(with, "| all | 30 | +3.0 % |\n")) << with;
 }

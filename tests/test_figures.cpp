@@ -33,7 +33,6 @@ struct Capture {
     }
 };
 
-
 CsvTable table(const std::string& text) { return parse_csv(text, "test.csv"); }
 }  // namespace
 
@@ -50,7 +49,9 @@ TEST(Figures, ConfusionRowsAreNormalisedToRecall) {
     plot_confusion(result, c.dir + "/cm.png", "Confusion");
     EXPECT_TRUE(c.png("cm.png"));
     const std::string s = c.script();
-    EXPECT_TRUE(test::contains(s, "$cm << EOD\n0 0 0.75\n1 0 0.25\n2 0 0\n\n0 1 0.35\n1 1 0.65\n2 1 0\n\n0 2 0\n1 2 0\n2 2 0\n\nEOD")) << s;
+    EXPECT_TRUE(test::contains(
+        s, "$cm << EOD\n0 0 0.75\n1 0 0.25\n2 0 0\n\n0 1 0.35\n1 1 0.65\n2 1 0\n\n0 2 0\n1 2 0\n2 2 0\n\nEOD"))
+        << s;
     EXPECT_TRUE(test::contains(s, "\"running\" 0, \"walking\" 1, \"sitting\" 2")) << s;
 }
 
@@ -63,9 +64,11 @@ TEST(Figures, BalancedAccuracyInPercent) {
         return r;
     };
     // 0.55 and 0.65: mean 60 %, sd (n - 1) 7.07107 %; one run: sd 0.
-    plot_balanced_accuracy({{"mdm_acc", result_of({0.55, 0.65})}, {"retrieval", result_of({0.425})}}, c.dir + "/ba.png");
+    plot_balanced_accuracy({{"mdm_acc", result_of({0.55, 0.65})}, {"retrieval", result_of({0.425})}},
+                           c.dir + "/ba.png");
     EXPECT_TRUE(c.png("ba.png"));
-    EXPECT_TRUE(test::contains(c.script(), "$acc << EOD\n0 \"mdm\\\\_acc\" 60 7.07107\n1 \"retrieval\" 42.5 0\nEOD")) << c.script();
+    EXPECT_TRUE(test::contains(c.script(), "$acc << EOD\n0 \"mdm\\\\_acc\" 60 7.07107\n1 \"retrieval\" 42.5 0\nEOD"))
+        << c.script();
 }
 
 TEST(Figures, LowDataCurveOneLineAndBandPerArm) {
@@ -82,7 +85,8 @@ TEST(Figures, LowDataCurveOneLineAndBandPerArm) {
     EXPECT_TRUE(test::contains(s, "$arm1 << EOD\n0 75 75 75\n1 80 80 80\nEOD")) << s;
     EXPECT_TRUE(test::contains(s, "\"0\" 0, \"1\" 1, \"all\" 2")) << s;
     EXPECT_TRUE(test::contains(s, "title \"real only\"")) << s;
-    EXPECT_TRUE(test::contains(test::error_message([&] { plot_low_data_curve(LowDataCurve{}, c.dir + "/x.png"); }), "at least one K"));
+    EXPECT_TRUE(test::contains(test::error_message([&] { plot_low_data_curve(LowDataCurve{}, c.dir + "/x.png"); }),
+                               "at least one K"));
 }
 
 TEST(Figures, LaccBarsAndARangeThatHoldsZero) {
@@ -94,21 +98,25 @@ TEST(Figures, LaccBarsAndARangeThatHoldsZero) {
     const std::string s = c.script();
     EXPECT_TRUE(test::contains(s, "$bars << EOD\n0 \"Running (10)\" -20 1\n1 \"all (14)\" -17.06 2\nEOD")) << s;
     EXPECT_TRUE(test::contains(s, "set yrange [-22:2]")) << s;
-    const std::string m = test::error_message([&] { plot_lacc_change(table("group,samples\nRunning,10\n"), c.dir + "/x.png"); });
+    const std::string m =
+        test::error_message([&] { plot_lacc_change(table("group,samples\nRunning,10\n"), c.dir + "/x.png"); });
     EXPECT_TRUE(test::contains(m, "change_percent")) << m;
 }
 
 TEST(Figures, TsneGroupsByColourAndFilters) {
     if (test::gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
     const Capture c("figures_tsne");
-    const CsvTable t = table("source,activity,tsne_x,tsne_y\nreal,running,1,2\nsynthetic,walking,3,4\nsynthetic,running,5,6\nreal,walking,7,8\n");
+    const CsvTable t = table(
+        "source,activity,tsne_x,tsne_y\nreal,running,1,2\nsynthetic,walking,3,4\nsynthetic,running,5,6\nreal,walking,7,"
+        "8\n");
     plot_tsne(t, "source", c.dir + "/tsne.png", "t-SNE", "activity", {"running"});
     EXPECT_TRUE(c.png("tsne.png"));
     const std::string s = c.script();
     // One group per source (alphabetical), only the running rows.
     EXPECT_TRUE(test::contains(s, "$g0 << EOD\n1 2\nEOD\n$g1 << EOD\n5 6\nEOD")) << s;
     EXPECT_TRUE(test::contains(s, "title \"real\"") && test::contains(s, "title \"synthetic\"")) << s;
-    std::string m = test::error_message([&] { plot_tsne(t, "source", c.dir + "/none.png", "t", "activity", {"lying"}); });
+    std::string m =
+        test::error_message([&] { plot_tsne(t, "source", c.dir + "/none.png", "t", "activity", {"lying"}); });
     EXPECT_TRUE(test::contains(m, c.dir + "/none.png") && test::contains(m, "points")) << m;
     m = test::error_message([&] { plot_tsne(t, "body", c.dir + "/nobody.png", "t"); });
     EXPECT_TRUE(test::contains(m, "body")) << m;
@@ -138,9 +146,11 @@ TEST(Figures, ImuTraceColumnsInOrder) {
     if (test::gnuplot_missing()) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
     const Capture c("figures_trace");
     // The CSV's columns in another order: the data block is t, acc x y z, gyr x y z.
-    plot_imu_trace(table("gyr_z,gyr_y,gyr_x,acc_z,acc_y,acc_x,t\n6,5,4,3,2,1,0\n16,15,14,13,12,11,0.02\n"), c.dir + "/trace.png", "trace");
+    plot_imu_trace(table("gyr_z,gyr_y,gyr_x,acc_z,acc_y,acc_x,t\n6,5,4,3,2,1,0\n16,15,14,13,12,11,0.02\n"),
+                   c.dir + "/trace.png", "trace");
     EXPECT_TRUE(c.png("trace.png"));
     EXPECT_TRUE(test::contains(c.script(), "$imu << EOD\n0 1 2 3 4 5 6\n0.02 11 12 13 14 15 16\nEOD")) << c.script();
-    const std::string m = test::error_message([&] { plot_imu_trace(table("t,acc_x,acc_y,acc_z,gyr_x,gyr_y\n0,1,2,3,4,5\n"), c.dir + "/x.png", "t"); });
+    const std::string m = test::error_message(
+        [&] { plot_imu_trace(table("t,acc_x,acc_y,acc_z,gyr_x,gyr_y\n0,1,2,3,4,5\n"), c.dir + "/x.png", "t"); });
     EXPECT_TRUE(test::contains(m, "gyr_z")) << m;
 }

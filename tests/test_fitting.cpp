@@ -20,7 +20,9 @@ Matrix3d random_rotation(std::mt19937_64& rng, double max_deg) {
     std::uniform_real_distribution<double> u(-max_deg, max_deg);
     return AngleAxisd(u(rng) * M_PI / 180, Vector3d(n(rng), n(rng), n(rng)).normalized()).toRotationMatrix();
 }
-Matrix3d about(const Vector3d& axis, double deg) { return AngleAxisd(deg * M_PI / 180, axis.normalized()).toRotationMatrix(); }
+Matrix3d about(const Vector3d& axis, double deg) {
+    return AngleAxisd(deg * M_PI / 180, axis.normalized()).toRotationMatrix();
+}
 
 // A pose whose segment orientations follow the anatomy the fit assumes: knees and elbows are hinges about the
 // body's left-right axis, bent by 30-90 degrees (knees backwards, elbows forwards), ankles flex about the same
@@ -31,7 +33,8 @@ Rotations22 anatomical_pose(std::mt19937_64& rng) {
     for (Matrix3d& r : local) r = Matrix3d::Identity();
     local[pelvis] = random_rotation(rng, 60);
     for (int s : {int(spine1), int(spine2), int(spine3), int(neck)}) local[s] = random_rotation(rng, 20);
-    for (int s : {int(left_hip), int(right_hip), int(left_shoulder), int(right_shoulder)}) local[s] = random_rotation(rng, 50);
+    for (int s : {int(left_hip), int(right_hip), int(left_shoulder), int(right_shoulder)})
+        local[s] = random_rotation(rng, 50);
     for (int s : {int(left_knee), int(right_knee)}) local[s] = about(Vector3d::UnitX(), bend(rng));
     for (int s : {int(left_elbow), int(right_elbow)}) local[s] = about(Vector3d::UnitX(), -bend(rng));
     for (int s : {int(left_ankle), int(right_ankle)}) local[s] = about(Vector3d::UnitX(), bend(rng) - 60);
@@ -97,7 +100,8 @@ TEST(Fitting, StraightLimbFallsBackSmoothlyWithoutJumps) {
     const FittedMotion fit = fit_body(to_sequence(frames), body);
     double worst_step = 0;
     for (size_t f = 1; f < frames.size(); ++f)
-        worst_step = std::max(worst_step, angle_deg(fit.frames[f].rotation[left_shoulder], fit.frames[f - 1].rotation[left_shoulder]));
+        worst_step = std::max(
+            worst_step, angle_deg(fit.frames[f].rotation[left_shoulder], fit.frames[f - 1].rotation[left_shoulder]));
     EXPECT_LT(worst_step, 2.0);  // degrees per frame; the motion itself moves the forearm 1.5 degrees per frame
 }
 
@@ -105,7 +109,8 @@ TEST(Fitting, RetargetingKeepsDirectionsTakesTheBodysLengthsAndScalesTheRoot) {
     const ProceduralBody tall(paper_bodies()[0]), short_body(paper_bodies()[5]);
     std::mt19937_64 rng(3);
     std::vector<Joints22> frames;
-    for (int f = 0; f < 10; ++f) frames.push_back(pose_skeleton(tall.rest_joints(), anatomical_pose(rng), Vector3d(0.2 * f, 1.1, 0)));
+    for (int f = 0; f < 10; ++f)
+        frames.push_back(pose_skeleton(tall.rest_joints(), anatomical_pose(rng), Vector3d(0.2 * f, 1.1, 0)));
     const FittedMotion fit = fit_body(to_sequence(frames), short_body);
     EXPECT_NEAR(fit.leg_scale, 1.50 / 2.00, 1e-12);  // leg length is a fixed share of stature
     for (size_t f = 0; f < frames.size(); ++f) {
@@ -126,7 +131,8 @@ TEST(Fitting, TwistSmoothingLeavesPositionsExact) {
     const ProceduralBody body(paper_bodies()[2]);
     std::mt19937_64 rng(11);
     std::vector<Joints22> frames;
-    for (int f = 0; f < 30; ++f) frames.push_back(pose_skeleton(body.rest_joints(), anatomical_pose(rng), Vector3d(0, 1, 0)));
+    for (int f = 0; f < 30; ++f)
+        frames.push_back(pose_skeleton(body.rest_joints(), anatomical_pose(rng), Vector3d(0, 1, 0)));
     FitOptions options;
     options.twist_smoothing_frames = 2;
     const FittedMotion fit = fit_body(to_sequence(frames), body, options);

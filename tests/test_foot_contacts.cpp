@@ -70,7 +70,7 @@ TEST(FootContacts, TheMinimumStanceIsInSecondsAtAnyRate) {
     for (int f = 0; f < m.num_frames; ++f) {
         const double t = f / fps;
         for (int j = 0; j < kNumJoints; ++j) m.at(f, j) = Vector3d(0, 0.9, 0);
-        const bool paused = f >= 42 && f < 48, swinging = f > 30 && f < 60 && !paused;
+        const bool paused = f >= 42 && f<48, swinging = f> 30 && f < 60 && !paused;
         const double z = f <= 30 ? 0.0 : f < 42 ? 2 * (t - 0.5) : f < 48 ? 0.4 : f < 60 ? 0.4 + 2 * (t - 0.8) : 0.8;
         place_foot(m, f, left_ankle, left_foot, Vector3d(0.1, 0.08 + (swinging ? 0.10 : 0.0), z));
         place_foot(m, f, right_ankle, right_foot, Vector3d(-0.1, f == 40 || f == 41 ? 0.14 : 0.08, 0.3));
@@ -83,12 +83,15 @@ TEST(FootContacts, TheMinimumStanceIsInSecondsAtAnyRate) {
             continue;
         }
         ++left;
-        EXPECT_TRUE(p.last_frame <= 31 || p.first_frame >= 59) << p.first_frame << "-" << p.last_frame;  // not the pause
+        EXPECT_TRUE(p.last_frame <= 31 || p.first_frame >= 59)
+            << p.first_frame << "-" << p.last_frame;  // not the pause
     }
     EXPECT_EQ(left, 2);
 }
 
-TEST(FootContacts, RefusesTooFewFrames) { EXPECT_THROW(detect_stance_phases(JointSequence(2, kNumJoints, kFps)), Error); }
+TEST(FootContacts, RefusesTooFewFrames) {
+    EXPECT_THROW(detect_stance_phases(JointSequence(2, kNumJoints, kFps)), Error);
+}
 
 }  // namespace
 }  // namespace t2imu

@@ -24,7 +24,8 @@ JointSequence stepping(double fps, int frames, double rise_per_step = 0) {
             const double cycles = std::floor(t / 0.6 + 0.5 * side);
             const double swing = phase < 0.5 ? phase / 0.5 : 1.0;
             const double z = 1.2 * (cycles + swing);
-            const double y = 0.1 * std::sin(M_PI * std::min(1.0, swing)) * (phase < 0.5) + rise_per_step * (cycles + swing);
+            const double y =
+                0.1 * std::sin(M_PI * std::min(1.0, swing)) * (phase < 0.5) + rise_per_step * (cycles + swing);
             s.at(f, side == 0 ? left_ankle : right_ankle) = Eigen::Vector3d(side ? -0.1 : 0.1, 0.08 + y, z);
         }
     }
@@ -39,7 +40,8 @@ TEST(FootLandings, FindsOneLandingPerStepOnTheLevelAndOnStairs) {
         const std::vector<Landing> landings = detect_landings(walk);
         ASSERT_GE(landings.size(), 17u) << rise;
         ASSERT_LE(landings.size(), 20u) << rise;
-        for (size_t i = 1; i < landings.size(); ++i) EXPECT_NEAR(landings[i].time_s - landings[i - 1].time_s, 0.3, 0.051) << rise;
+        for (size_t i = 1; i < landings.size(); ++i)
+            EXPECT_NEAR(landings[i].time_s - landings[i - 1].time_s, 0.3, 0.051) << rise;
     }
 }
 
@@ -49,4 +51,3 @@ TEST(FootLandings, StandingStillHasNoLandings) {
         for (int j = 0; j < kNumJoints; ++j) still.at(f, j) = Eigen::Vector3d(0.01 * j, 0.05 * j, 0);
     EXPECT_TRUE(detect_landings(still).empty());
 }
-

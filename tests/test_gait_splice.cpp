@@ -83,8 +83,9 @@ TEST(GaitSplice, UpAFlightAndDownTheNextRisesThenFallsByTheFlights) {
     const double fall = height(b.motion, 0) - height(b.motion, b.motion.num_frames - 1);
     EXPECT_GT(top - end, fall - 3 * 0.17);
     EXPECT_LT(top - end, fall + 0.17);
-    EXPECT_LT(largest_step(s.motion, 0, s.motion.num_frames), 1.1 * std::max(largest_step(a.motion, 0, a.motion.num_frames),
-                                                                             largest_step(b.motion, 0, b.motion.num_frames)));
+    EXPECT_LT(
+        largest_step(s.motion, 0, s.motion.num_frames),
+        1.1 * std::max(largest_step(a.motion, 0, a.motion.num_frames), largest_step(b.motion, 0, b.motion.num_frames)));
 }
 
 TEST(GaitSplice, RefusesBadOptionsAndMotionsWithoutAStanceNamingTheField) {

@@ -33,7 +33,8 @@ TEST(GaussianDiffusion, ReplaysTheOfficialDdpmLoop) {
     for (int64_t i = 0; i < 50; ++i) {
         const torch::Tensor t = torch::tensor({steps[static_cast<size_t>(i)]});
         worst_x = std::max(worst_x, (x - x_in[i]).abs().max().item<double>());
-        worst_mean = std::max(worst_mean, (d.posterior_mean(x0[i], x_in[i], t) - mean_ref[i]).abs().max().item<double>());
+        worst_mean =
+            std::max(worst_mean, (d.posterior_mean(x0[i], x_in[i], t) - mean_ref[i]).abs().max().item<double>());
         x = d.p_sample_step(x_in[i], x0[i], t, noise[i]);
     }
     EXPECT_EQ(steps.front(), 49);

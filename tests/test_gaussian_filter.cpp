@@ -20,8 +20,8 @@ TEST(GaussianFilter, MatchesScipySigma20Nearest) {
     std::string in;
     SHARED_OR_SKIP(in, "reference/humanml3d/generated/helpers/gaussian_filter1d_in.npy");
     const TimeSeries x = as_series(read_npy(in));
-    const TimeSeries expected = as_series(
-        read_npy(test::shared_path("reference/humanml3d/generated/helpers/gaussian_filter1d_sigma20_nearest_axis0.npy")));
+    const TimeSeries expected = as_series(read_npy(
+        test::shared_path("reference/humanml3d/generated/helpers/gaussian_filter1d_sigma20_nearest_axis0.npy")));
     const TimeSeries y = gaussian_filter1d_nearest(x, 20.0);
     ASSERT_EQ(y.rows(), expected.rows());
     EXPECT_LT((y - expected).cwiseAbs().maxCoeff(), 1e-9);

@@ -23,7 +23,8 @@ TEST(GloveTextEncoder, ShapesMaskingAndUnknownWords) {
     const torch::Tensor alone = enc->encode({"a person walks slowly"});
     EXPECT_EQ(alone.sizes(), (std::vector<int64_t>{1, 512}));
     // The same caption beside a longer one: padding must not leak into it.
-    const torch::Tensor batched = enc->encode({"a person walks slowly", "a person runs forward slowly . a person walks"});
+    const torch::Tensor batched =
+        enc->encode({"a person walks slowly", "a person runs forward slowly . a person walks"});
     EXPECT_LT((batched[0] - alone[0]).abs().max().item<double>(), 1e-5);
     EXPECT_GT((batched[1] - batched[0]).abs().max().item<double>(), 1e-3);  // different captions differ
     // Word order matters (positions), and two unknown words are the same <unk>.

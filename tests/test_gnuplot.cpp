@@ -21,7 +21,9 @@ std::pair<uint32_t, uint32_t> png_size(const std::string& path) {
     const std::vector<uint8_t> b = read_file_bytes(path);
     const uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     if (b.size() < 24 || !std::equal(signature, signature + 8, b.begin())) return {0, 0};
-    auto be32 = [&](size_t at) { return uint32_t(b[at]) << 24 | uint32_t(b[at + 1]) << 16 | uint32_t(b[at + 2]) << 8 | uint32_t(b[at + 3]); };
+    auto be32 = [&](size_t at) {
+        return uint32_t(b[at]) << 24 | uint32_t(b[at + 1]) << 16 | uint32_t(b[at + 2]) << 8 | uint32_t(b[at + 3]);
+    };
     return {be32(16), be32(20)};
 }
 

@@ -24,7 +24,8 @@ namespace {
 
 // A recording whose acc_x is a sine of `hz` (amplitude 3 m/s^2) over gravity on y, plus noise.
 ImuRecording sine_recording(const std::string& subject, const std::string& activity, const std::string& position,
-                            double hz, double seconds, double rate, std::mt19937_64& rng, const std::string& trial = "1") {
+                            double hz, double seconds, double rate, std::mt19937_64& rng,
+                            const std::string& trial = "1") {
     ImuRecording r;
     r.dataset = "test";
     r.subject = subject;
@@ -101,7 +102,8 @@ TEST(HarWindowing, ResamplingKeepsASlowSineIntact) {
         for (int k = 0; k < static_cast<int>(10 * rate_in); ++k) x.push_back(std::sin(2 * M_PI * 1.0 * k / rate_in));
         const std::vector<double> y = resample_channel(x, rate_in, 20);
         double worst = 0;
-        for (size_t k = 20; k + 20 < y.size(); ++k) worst = std::max(worst, std::fabs(y[k] - std::sin(2 * M_PI * k / 20.0)));
+        for (size_t k = 20; k + 20 < y.size(); ++k)
+            worst = std::max(worst, std::fabs(y[k] - std::sin(2 * M_PI * k / 20.0)));
         EXPECT_LT(worst, 0.02) << rate_in;  // a 1 Hz sine is far below the 10 Hz Nyquist frequency of 20 Hz
     }
 }
@@ -113,7 +115,8 @@ TEST(DeepConvLstm, ShapesAndParameterCountAsPublished) {
     int64_t n = 0;
     for (const torch::Tensor& p : model->parameters()) n += p.numel();
     const int64_t conv = (1 * 64 * 5 + 64) + 3 * (64 * 64 * 5 + 64);
-    const int64_t lstm = 4 * 128 * (64 * 6 + 128) + 8 * 128 + 4 * 128 * (128 + 128) + 8 * 128;  // two bias vectors per layer
+    const int64_t lstm =
+        4 * 128 * (64 * 6 + 128) + 8 * 128 + 4 * 128 * (128 + 128) + 8 * 128;  // two bias vectors per layer
     EXPECT_EQ(n, conv + lstm + 128 * 4 + 4);
 }
 
@@ -121,10 +124,13 @@ TEST(HarTraining, SeparatesSinesOfDifferentFrequencyAcrossDataSets) {
     torch::set_num_threads(1);
     std::mt19937_64 rng(7);
     std::vector<ImuRecording> train, test;
-    const std::vector<std::pair<std::string, double>> classes = {{"walking", 0.8}, {"running", 2.5}, {"stairs_up", 5.0}};
+    const std::vector<std::pair<std::string, double>> classes = {
+        {"walking", 0.8}, {"running", 2.5}, {"stairs_up", 5.0}};
     for (const auto& [name, hz] : classes)
-        for (int s = 0; s < 4; ++s) train.push_back(sine_recording("s" + std::to_string(s), name, "waist", hz, 12, 50, rng));
-    for (const auto& [name, hz] : classes) test.push_back(sine_recording("t", name == "stairs_up" ? "stairs" : name, "waist", hz, 12, 50, rng));
+        for (int s = 0; s < 4; ++s)
+            train.push_back(sine_recording("s" + std::to_string(s), name, "waist", hz, 12, 50, rng));
+    for (const auto& [name, hz] : classes)
+        test.push_back(sine_recording("t", name == "stairs_up" ? "stairs" : name, "waist", hz, 12, 50, rng));
     const WindowSet tr = make_windows(train, {}), te = make_windows(test, {});
     HarOptions o;
     o.repeats = 2;
@@ -166,12 +172,16 @@ TEST(HarTraining, SeparatesSinesOfDifferentFrequencyAcrossDataSets) {
     // A damaged result is one Error naming the file and the key, not a JSON library exception.
     const std::string damaged = test::scratch_dir("har_damaged") + "/result.json";
     nlohmann::json doc = nlohmann::json::parse(har_result_json(parts[0], "one seed"));
-    for (const auto& [key, spoil] : std::vector<std::pair<std::string, nlohmann::json>>{
-             {"run_records.0.macro_f1", "high"}, {"run_records.0.confusion", nlohmann::json::array({1, 2})}, {"classes", 3}}) {
+    for (const auto& [key, spoil] :
+         std::vector<std::pair<std::string, nlohmann::json>>{{"run_records.0.macro_f1", "high"},
+                                                             {"run_records.0.confusion", nlohmann::json::array({1, 2})},
+                                                             {"classes", 3}}) {
         nlohmann::json bad = doc;
         const size_t dot = key.find(".0.");
-        if (dot == std::string::npos) bad[key] = spoil;
-        else bad["run_records"][0][key.substr(dot + 3)] = spoil;
+        if (dot == std::string::npos)
+            bad[key] = spoil;
+        else
+            bad["run_records"][0][key.substr(dot + 3)] = spoil;
         write_file_atomic(damaged, bad.dump());
         const std::string e = test::error_message([&] { read_har_result(damaged); });
         EXPECT_TRUE(test::contains(e, damaged + ": " + key)) << key << ": " << e;
@@ -186,14 +196,16 @@ TEST(HarTraining, CliLeaveOneSubjectOut) {
             recs.push_back(sine_recording("s" + std::to_string(s), name, "chest", hz, 12, 20, rng));
     const std::string dir = test::scratch_dir("har_cli");
     write_imu_dataset(dir + "/data", recs);
-    const auto r = test::run_cli("--threads 1 har run --train " + dir + "/data --loso --epochs 8 --out " + dir + "/r.json");
+    const auto r =
+        test::run_cli("--threads 1 har run --train " + dir + "/data --loso --epochs 8 --out " + dir + "/r.json");
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const nlohmann::json j = nlohmann::json::parse(read_file_text(dir + "/r.json"));
     EXPECT_EQ(j["classes"], (std::vector<std::string>{"jumping", "walking"}));
     EXPECT_EQ(j["balanced_accuracy"]["runs"].size(), 3u);  // one per subject
     EXPECT_GT(j["balanced_accuracy"]["mean"].get<double>(), 0.85);
-    const auto bad = test::run_cli("har run --train " + dir + "/data --out " + dir + "/x.json");  // neither --test nor --loso
-    EXPECT_EQ(bad.exit_code, 2) << bad.output;  // bad usage
+    const auto bad =
+        test::run_cli("har run --train " + dir + "/data --out " + dir + "/x.json");  // neither --test nor --loso
+    EXPECT_EQ(bad.exit_code, 2) << bad.output;                                       // bad usage
 }
 
 namespace {
@@ -210,12 +222,15 @@ TwoSets two_sets(int subjects) {
     for (const auto& [name, hz] : classes)
         for (const char* body : {"male_average", "female_tall"})
             for (int trial = 0; trial < 2; ++trial) {
-                s.synthetic.push_back(sine_recording(body, name, "waist", hz * 1.1, 10, 50, rng, std::to_string(trial)));
+                s.synthetic.push_back(
+                    sine_recording(body, name, "waist", hz * 1.1, 10, 50, rng, std::to_string(trial)));
                 s.synthetic.back().dataset = "t2imu";
             }
     for (int subject = 0; subject < subjects; ++subject)
         for (const auto& [name, hz] : classes)
-            for (int trial = 0; trial < 2; ++trial) s.real.push_back(sine_recording("SA0" + std::to_string(subject), name, "waist", hz, 10, 50, rng, std::to_string(trial)));
+            for (int trial = 0; trial < 2; ++trial)
+                s.real.push_back(sine_recording("SA0" + std::to_string(subject), name, "waist", hz, 10, 50, rng,
+                                                std::to_string(trial)));
     return s;
 }
 
@@ -240,14 +255,16 @@ TEST(HarTraining, FinetuneWithZeroEpochsIsPlainTrainingOnTheSyntheticSet) {
     EXPECT_EQ(drawn, draw_subjects(real.subjects, 2, 5, 0));  // the draw is the recorded one
     std::vector<ImuRecording> rest;
     for (const ImuRecording& r : s.real)
-        if (std::find(drawn.begin(), drawn.end(), r.dataset + ":" + r.subject) == drawn.end()) rest.push_back(r);  // windows name dataset:subject
+        if (std::find(drawn.begin(), drawn.end(), r.dataset + ":" + r.subject) == drawn.end())
+            rest.push_back(r);  // windows name dataset:subject
     const HarResult plain = train_and_test(syn, make_windows(rest, {}), o);
     EXPECT_EQ(tuned.classes, plain.classes);
     EXPECT_EQ(tuned.runs[0].confusion, plain.runs[0].confusion);  // bitwise: the same network predicts the same windows
     EXPECT_EQ(tuned.runs[0].balanced_accuracy, plain.runs[0].balanced_accuracy);
     EXPECT_EQ(tuned.runs[0].epochs, plain.runs[0].epochs);
     EXPECT_EQ(tuned.runs[0].test_subjects.size(), 2u);
-    EXPECT_EQ(tuned.runs[0].set_windows, (std::vector<size_t>{syn.size(), real.size() / 2}));  // each subject the same windows
+    EXPECT_EQ(tuned.runs[0].set_windows,
+              (std::vector<size_t>{syn.size(), real.size() / 2}));  // each subject the same windows
     // Fine-tuning on the drawn subjects moves the network off the pretrained one.
     m.finetune_epochs = 3;
     const HarResult more = train_on_sets({{&syn, "syn"}, {&real, "real"}}, real, o, m);
@@ -282,7 +299,10 @@ TEST(HarTraining, MixDrawsSubjectsPerRepeatAndTestsTheOthers) {
     EXPECT_EQ(r.test_windows, 2 * (real.size() * 3 / 4));  // summed over the two draws
     // A subject in a training set and in the test set is refused, before any training.
     m.test_set = -1, m.train_subjects = 0;
-    EXPECT_TRUE(test::contains(test::error_message([&] { train_on_sets({{&syn, "syn"}, {&real, "real"}}, real, o, m); }), "is in both"));
+    EXPECT_TRUE(test::contains(test::error_message([&] {
+                                   train_on_sets({{&syn, "syn"}, {&real, "real"}}, real, o, m);
+                               }),
+                               "is in both"));
 }
 
 TEST(HarTraining, CliTrainsOnSeveralSetsAndRefusesBadSplits) {
@@ -290,8 +310,10 @@ TEST(HarTraining, CliTrainsOnSeveralSetsAndRefusesBadSplits) {
     const std::string dir = test::scratch_dir("har_cli_sets");
     write_imu_dataset(dir + "/syn", s.synthetic);
     write_imu_dataset(dir + "/real", s.real);
-    const std::string base = "--threads 1 har run --train " + dir + "/syn --train " + dir + "/real --test " + dir + "/real --epochs 3 ";
-    const auto r = test::run_cli(base + "--train-subjects 1 --protocol finetune --finetune-epochs 2 --repeats 2 --out " + dir + "/r.json");
+    const std::string base =
+        "--threads 1 har run --train " + dir + "/syn --train " + dir + "/real --test " + dir + "/real --epochs 3 ";
+    const auto r = test::run_cli(
+        base + "--train-subjects 1 --protocol finetune --finetune-epochs 2 --repeats 2 --out " + dir + "/r.json");
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const HarResult result = read_har_result(dir + "/r.json");
     EXPECT_EQ(result.training_sets, (std::vector<std::string>{dir + "/syn", dir + "/real"}));
@@ -306,10 +328,12 @@ TEST(HarTraining, CliTrainsOnSeveralSetsAndRefusesBadSplits) {
     for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
              {"--train " + dir + "/real --test " + dir + "/real", "SA00 is in both"},
              {base + "--train-subjects 3", "--train-subjects: 3: expected from 0 to 2"},
-             {"--train " + dir + "/syn --train " + dir + "/unnamed --test " + dir + "/unnamed --train-subjects 1", "recordings name their subject"},
+             {"--train " + dir + "/syn --train " + dir + "/unnamed --test " + dir + "/unnamed --train-subjects 1",
+              "recordings name their subject"},
              {base + "--train-subjects 1 --train-share 0.9", "2 shares, one per --train"},
              {base + "--protocol finetune", "--train-subjects to fine-tune on"}}) {
-        const std::string command = (args.rfind("--threads", 0) == 0 ? args : "--threads 1 har run " + args) + " --out " + dir + "/bad.json";
+        const std::string command =
+            (args.rfind("--threads", 0) == 0 ? args : "--threads 1 har run " + args) + " --out " + dir + "/bad.json";
         const auto bad = test::run_cli(command);
         EXPECT_EQ(bad.exit_code, 2) << command << "\n" << bad.output;
         EXPECT_TRUE(test::contains(bad.output, message)) << command << "\n" << bad.output;

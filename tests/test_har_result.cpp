@@ -12,7 +12,8 @@ using namespace t2imu;
 
 namespace {
 
-HarRun run_of(double ba, const Confusion& c, std::vector<std::string> train = {}, std::vector<std::string> test = {}, std::vector<size_t> windows = {}) {
+HarRun run_of(double ba, const Confusion& c, std::vector<std::string> train = {}, std::vector<std::string> test = {},
+              std::vector<size_t> windows = {}) {
     HarRun r;
     r.balanced_accuracy = ba;
     r.macro_f1 = ba - 0.01;
@@ -33,7 +34,8 @@ HarResult drawn_result() {
     r.protocol = "finetune";
     r.finetune_epochs = 20;
     r.finetune_learning_rate = 3e-4;
-    r.runs = {run_of(0.75, {{3, 1}, {1, 3}}, {"SA02"}, {"SA01", "SA03"}, {400, 60}), run_of(0.5, {{2, 2}, {2, 2}}, {"SA03"}, {"SA01", "SA02"}, {400, 70})};
+    r.runs = {run_of(0.75, {{3, 1}, {1, 3}}, {"SA02"}, {"SA01", "SA03"}, {400, 60}),
+              run_of(0.5, {{2, 2}, {2, 2}}, {"SA03"}, {"SA01", "SA02"}, {400, 70})};
     r.run_names = {"draw 0, seed 0", "draw 1, seed 1"};
     r.train_windows = 930;
     r.test_windows = 16;
@@ -72,7 +74,7 @@ TEST(HarResult, RoundTripKeepsDrawsAndWindowsPerSet) {
     const nlohmann::json j = nlohmann::json::parse(har_result_json(r, "two draws"));
     EXPECT_EQ(j["balanced_accuracy"]["mean"].get<double>(), 0.625);
     EXPECT_NEAR(j["balanced_accuracy"]["sd"].get<double>(), 0.1767767, 1e-6);  // sd (n - 1) of 0.75 and 0.5
-    EXPECT_EQ(j["confusion"], nlohmann::json::parse("[[5,3],[3,5]]"));          // summed over the draws
+    EXPECT_EQ(j["confusion"], nlohmann::json::parse("[[5,3],[3,5]]"));         // summed over the draws
     EXPECT_EQ(j["run_records"][1]["train_windows_per_set"]["cache/imu/sisfall"], 70);
     EXPECT_EQ(j["finetune"]["learning_rate"].get<double>(), 3e-4);
     EXPECT_TRUE(is_har_result(j));
@@ -120,11 +122,18 @@ TEST(HarResult, DamagedFilesNameTheKey) {
         write_file_atomic(path, bad.dump());
         return test::error_message([&] { read_har_result(path); });
     };
-    EXPECT_TRUE(test::contains(message([](nlohmann::json& j) { j["run_records"][0]["macro_f1"] = "high"; }), path + ": run_records.0.macro_f1"));
-    EXPECT_TRUE(test::contains(message([](nlohmann::json& j) { j["run_records"][0]["confusion"] = {1, 2}; }), path + ": run_records.0.confusion"));
-    EXPECT_TRUE(test::contains(message([](nlohmann::json& j) { j["run_records"][1]["train_subjects"] = {3}; }), path + ": run_records.1.train_subjects"));
-    EXPECT_TRUE(test::contains(message([](nlohmann::json& j) { j["protocol"] = "blend"; }), path + ": protocol: expected mix or finetune"));
-    EXPECT_TRUE(test::contains(message([](nlohmann::json& j) { j["run_records"][0]["train_windows_per_set"].erase("out/syn"); }),
-                               path + ": run_records.0.train_windows_per_set.out/syn"));
+    EXPECT_TRUE(test::contains(message([](nlohmann::json& j) { j["run_records"][0]["macro_f1"] = "high"; }),
+                               path + ": run_records.0.macro_f1"));
+    EXPECT_TRUE(test::contains(message([](nlohmann::json& j) {
+                                   j["run_records"][0]["confusion"] = {1, 2};
+                               }),
+                               path + ": run_records.0.confusion"));
+    EXPECT_TRUE(test::contains(message([](nlohmann::json& j) { j["run_records"][1]["train_subjects"] = {3}; }),
+                               path + ": run_records.1.train_subjects"));
+    EXPECT_TRUE(test::contains(message([](nlohmann::json& j) { j["protocol"] = "blend"; }),
+                               path + ": protocol: expected mix or finetune"));
+    EXPECT_TRUE(test::contains(
+        message([](nlohmann::json& j) { j["run_records"][0]["train_windows_per_set"].erase("out/syn"); }),
+        path + ": run_records.0.train_windows_per_set.out/syn"));
     EXPECT_TRUE(test::contains(message([](nlohmann::json& j) { j["classes"] = 3; }), path + ": classes"));
 }

@@ -1,4 +1,5 @@
-// Landing transients (imu/heel_strike): pulses that leave velocity and path unchanged, transmissibility falling from shank to head.
+// Landing transients (imu/heel_strike): pulses that leave velocity and path unchanged, transmissibility falling from
+// shank to head.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,7 +14,8 @@ TEST(HeelStrike, PulseKeepsVelocityAndPositionButHasItsSharpPeak) {
     const std::vector<Landing> landings = {{1.0}};
     const ImpactPulses p = impact_pulses(landings, 1.0, 0.04, pelvis, 20);
     ASSERT_EQ(p.delta_v.size(), 1u);
-    EXPECT_NEAR((p.delta_v[0] - Eigen::Vector3d(0, 0.4, 0)).norm(), 0, 1e-12);  // 1 m/s at the shank, 0.4 of it at the pelvis
+    EXPECT_NEAR((p.delta_v[0] - Eigen::Vector3d(0, 0.4, 0)).norm(), 0,
+                1e-12);  // 1 m/s at the shank, 0.4 of it at the pelvis
     const double dt = 1e-5;
     double v = 0, x = 0, peak = 0;
     for (double t = 0; t < 2.0; t += dt) {

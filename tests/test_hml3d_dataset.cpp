@@ -22,7 +22,8 @@ std::string make_official_layout(const std::string& name) {
     auto motion = [&](const std::string& id, int frames, int base) {
         std::vector<float> v(static_cast<size_t>(frames) * 263);
         for (int t = 0; t < frames; ++t)
-            for (int c = 0; c < 263; ++c) v[static_cast<size_t>(t) * 263 + static_cast<size_t>(c)] = static_cast<float>(base + t);
+            for (int c = 0; c < 263; ++c)
+                v[static_cast<size_t>(t) * 263 + static_cast<size_t>(c)] = static_cast<float>(base + t);
         write_npy(dir + "/new_joint_vecs/" + id + ".npy", NdArray::from(v, {frames, 263}));
     };
     motion("a", 120, 1000);

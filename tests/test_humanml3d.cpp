@@ -52,7 +52,10 @@ TEST_P(HumanML3DReference, ProcessFileMatchesEveryIntermediate) {
     SHARED_OR_SKIP(input, "reference/humanml3d/generated/" + std::string(GetParam()) + "/input_joints.npy");
     const ProcessFileResult r = process_file(load_joints(input));
     const std::string seq = GetParam();
-    struct Check { const char* file; std::vector<double> ours; };
+    struct Check {
+        const char* file;
+        std::vector<double> ours;
+    };
     const Check checks[] = {
         {"after_uniform_skeleton.npy", flat(r.after_uniform_skeleton)},
         {"global_positions.npy", flat(r.global_positions)},
@@ -66,7 +69,8 @@ TEST_P(HumanML3DReference, ProcessFileMatchesEveryIntermediate) {
         EXPECT_LT(max_abs_diff(ours, expected), 1e-5) << seq << " " << c.file;
     }
     std::vector<double> l_velocity;  // stored by NumPy in Fortran order
-    for (int f = 0; f < r.l_velocity.rows(); ++f) l_velocity.insert(l_velocity.end(), {r.l_velocity(f, 0), r.l_velocity(f, 1)});
+    for (int f = 0; f < r.l_velocity.rows(); ++f)
+        l_velocity.insert(l_velocity.end(), {r.l_velocity(f, 0), r.l_velocity(f, 1)});
     EXPECT_LT(max_abs_diff(l_velocity, read_npy(ref(seq, "l_velocity.npy")).to<double>()), 1e-5) << seq;
     const std::vector<double> fwd = read_npy(ref(seq, "forward_init.npy")).to<double>();
     EXPECT_LT(max_abs_diff({r.forward_init.x(), r.forward_init.y(), r.forward_init.z()}, fwd), 1e-6);
@@ -76,11 +80,13 @@ TEST_P(HumanML3DReference, RecoverFromRicMatches) {
     std::string features;
     SHARED_OR_SKIP(features, "reference/humanml3d/generated/" + std::string(GetParam()) + "/features_263.npy");
     const FeatureMatrix f = feature_matrix_from_array(read_npy(features), features);
-    EXPECT_LT(max_abs_diff(flat(recover_from_ric(f)), read_npy(ref(GetParam(), "recover_from_ric.npy")).to<double>()), 1e-5);
+    EXPECT_LT(max_abs_diff(flat(recover_from_ric(f)), read_npy(ref(GetParam(), "recover_from_ric.npy")).to<double>()),
+              1e-5);
     const RootTrajectory root = recover_root_rot_pos(f);
     std::vector<double> quat, pos;
     for (size_t t = 0; t < root.rotation.size(); ++t) {
-        quat.insert(quat.end(), {root.rotation[t].w(), root.rotation[t].x(), root.rotation[t].y(), root.rotation[t].z()});
+        quat.insert(quat.end(),
+                    {root.rotation[t].w(), root.rotation[t].x(), root.rotation[t].y(), root.rotation[t].z()});
         pos.insert(pos.end(), {root.position[t].x(), root.position[t].y(), root.position[t].z()});
     }
     EXPECT_LT(max_abs_diff(quat, read_npy(ref(GetParam(), "recover_root_rot_quat.npy")).to<double>()), 1e-5);
@@ -118,7 +124,8 @@ TEST(HumanML3D, RoundTripOfFeaturesThroughJoints) {
     // recover_from_ric gives back the canonicalised global positions of frames 0..F-2.
     double m = 0;
     for (int f = 0; f < rec.num_frames; ++f)
-        for (int j = 0; j < 22; ++j) m = std::max(m, (rec.at(f, j) - r.global_positions.at(f, j)).cwiseAbs().maxCoeff());
+        for (int j = 0; j < 22; ++j)
+            m = std::max(m, (rec.at(f, j) - r.global_positions.at(f, j)).cwiseAbs().maxCoeff());
     EXPECT_LT(m, 1e-6);  // the canonicalised positions are held in float32, as in the reference
 }
 

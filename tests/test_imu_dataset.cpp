@@ -41,8 +41,9 @@ TEST(ImuDataset, RoundTripKeepsFieldsExtraColumnsAndFourDecimals) {
     r.t = {0, 0.02, 0.04};
     r.samples = {{0, 9.80666, -0.00001, 1, 2, 3}, {0.5, 9.8, 0, 1, 2, 3}, {1.23456, 9.8, 0, 1, 2, 3}};
     write_imu_dataset(dir, {r});
-    EXPECT_EQ(read_file_text(dir + "/s1/walk.csv"),
-              "t,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n0,0,9.8067,0,1,2,3\n0.02,0.5,9.8,0,1,2,3\n0.04,1.2346,9.8,0,1,2,3\n");
+    EXPECT_EQ(
+        read_file_text(dir + "/s1/walk.csv"),
+        "t,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n0,0,9.8067,0,1,2,3\n0.02,0.5,9.8,0,1,2,3\n0.04,1.2346,9.8,0,1,2,3\n");
     const std::vector<ImuRecording> back = read_imu_dataset(dir);
     ASSERT_EQ(back.size(), 1u);
     EXPECT_EQ(back[0].activity, "walking");
@@ -70,7 +71,8 @@ TEST(ImuDataset, RecordingsOneAtATimeThenTheManifest) {
     row.extra = {{"job", "j0"}, {"body", "body1"}, {"prompt", "walks"}};
     write_imu_manifest(dir, {row}, {"prompt", "body"});
     const CsvTable m = read_csv(dir + "/manifest.csv");
-    EXPECT_EQ(m.header, (std::vector<std::string>{"path", "dataset", "subject", "activity", "position", "rate_hz", "n_samples", "units", "prompt", "body", "job"}));
+    EXPECT_EQ(m.header, (std::vector<std::string>{"path", "dataset", "subject", "activity", "position", "rate_hz",
+                                                  "n_samples", "units", "prompt", "body", "job"}));
     const std::vector<ImuRecording> back = read_imu_dataset(dir);
     ASSERT_EQ(back.size(), 1u);
     EXPECT_NEAR(back[0].samples[4][2], 1.0 / 3.0, 1e-6);
@@ -96,7 +98,8 @@ TEST(ImuDataset, RefusesAWrongHeaderAndNonFiniteValues) {
     write_imu_manifest(dir, {row});
     write_file_atomic(dir + "/r.csv", "t,ax,ay,az,gx,gy,gz\n0,0,0,0,0,0,0\n0.1,0,0,0,0,0,0\n0.2,0,0,0,0,0,0\n");
     EXPECT_THROW(read_imu_dataset(dir), Error);
-    write_file_atomic(dir + "/r.csv", "t,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n0,0,0,0,0,0,0\n0.1,0,nan,0,0,0,0\n0.2,0,0,0,0,0,0\n");
+    write_file_atomic(dir + "/r.csv",
+                      "t,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n0,0,0,0,0,0,0\n0.1,0,nan,0,0,0,0\n0.2,0,0,0,0,0,0\n");
     try {
         read_imu_dataset(dir);
         FAIL() << "a NaN was accepted";
@@ -108,7 +111,8 @@ TEST(ImuDataset, RefusesAWrongHeaderAndNonFiniteValues) {
 TEST(ImuDataset, HugeAndNonFiniteSamplesAreRefusedNamingFileRowAndColumnAndNothingIsWritten) {
     // A value of 1e43 once advanced the writer past its 48-byte buffer and wrote NUL and binary bytes into the CSV.
     const std::string dir = test::scratch_dir("imu_dataset_huge");
-    const std::pair<double, const char*> bad[] = {{1e43, "acc_y"}, {1e300, "acc_y"}, {-1.5e6, "acc_y"}, {NAN, "acc_y"}, {INFINITY, "acc_y"}};
+    const std::pair<double, const char*> bad[] = {
+        {1e43, "acc_y"}, {1e300, "acc_y"}, {-1.5e6, "acc_y"}, {NAN, "acc_y"}, {INFINITY, "acc_y"}};
     for (const auto& [value, column] : bad) {
         ImuSignals s = signals(4, 10);
         s.acc[2].y() = value;
@@ -123,7 +127,9 @@ TEST(ImuDataset, HugeAndNonFiniteSamplesAreRefusedNamingFileRowAndColumnAndNothi
     r.t = {0, 0.1};
     r.samples = {{0, 0, 0, 0, 0, 0}, {0, 0, 0, 0, 0, 2e7}};
     const std::string m = test::error_message([&] { write_imu_dataset(dir, {r}); });
-    EXPECT_TRUE(test::contains(m, "rec.csv") && test::contains(m, "row 3") && test::contains(m, "gyr_z") && test::contains(m, "2e+07")) << m;
+    EXPECT_TRUE(test::contains(m, "rec.csv") && test::contains(m, "row 3") && test::contains(m, "gyr_z") &&
+                test::contains(m, "2e+07"))
+        << m;
     EXPECT_FALSE(std::ifstream(dir + "/manifest.csv").good());
 }
 

@@ -5,9 +5,9 @@
 #include <filesystem>
 
 #include "har/datasets/hugadb.hpp"
-#include "imu/imu_dataset.hpp"
 #include "har/datasets/sisfall.hpp"
 #include "har/datasets/umafall.hpp"
+#include "imu/imu_dataset.hpp"
 #include "test_util.hpp"
 
 using namespace t2imu;
@@ -69,14 +69,16 @@ TEST(ImuLoaders, SisFallRawSamplesReproduceTheCompactCopy) {
     const std::vector<ImuRecording> ours = import_sisfall(raw, &skipped);
     ASSERT_EQ(ours.size(), 2u);  // D05 (stairs_up_down) and D19 (jump_reach)
     std::map<std::string, ImuRecording> theirs;
-    for (ImuRecording& r : read_imu_dataset(test::unpacked_shared_archive("imu/sisfall/sisfall.tar.xz"))) theirs[r.path] = std::move(r);
+    for (ImuRecording& r : read_imu_dataset(test::unpacked_shared_archive("imu/sisfall/sisfall.tar.xz")))
+        theirs[r.path] = std::move(r);
     for (const ImuRecording& r : ours) {
         ASSERT_TRUE(theirs.count(r.path)) << r.path;
         const ImuRecording& c = theirs[r.path];
         ASSERT_EQ(c.samples.size(), r.samples.size());
         double acc = 0, gyr = 0;
         for (size_t i = 0; i < r.samples.size(); ++i)
-            for (size_t k = 0; k < 6; ++k) (k < 3 ? acc : gyr) = std::max(k < 3 ? acc : gyr, std::fabs(c.samples[i][k] - r.samples[i][k]));
+            for (size_t k = 0; k < 6; ++k)
+                (k < 3 ? acc : gyr) = std::max(k < 3 ? acc : gyr, std::fabs(c.samples[i][k] - r.samples[i][k]));
         EXPECT_LT(acc, 0.5e-3 + 1e-9) << r.path;
         EXPECT_LT(gyr, 0.5e-4 + 1e-9) << r.path;
     }

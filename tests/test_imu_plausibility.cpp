@@ -38,7 +38,8 @@ double stride_frequency(const std::vector<double>& x, double rate) {
     double best = 0, best_f = 0;
     for (double f = 0.4; f <= 1.6; f += 0.01) {
         std::complex<double> s = 0;
-        for (size_t k = 0; k < x.size(); ++k) s += (x[k] - mean) * std::polar(1.0, -2 * M_PI * f * static_cast<double>(k) / rate);
+        for (size_t k = 0; k < x.size(); ++k)
+            s += (x[k] - mean) * std::polar(1.0, -2 * M_PI * f * static_cast<double>(k) / rate);
         if (std::norm(s) > best) best = std::norm(s), best_f = f;
     }
     return best_f;
@@ -93,11 +94,14 @@ TEST(ImuPlausibility, CmuWalkOnAnAverageManLooksLikeHuGaDBWalking) {
             stride.push_back(s.stride_hz);
             mean_dir += s.mean_acc.normalized();
         }
-        const double angle = std::acos(std::clamp(syn.mean_acc.normalized().dot(mean_dir.normalized()), -1.0, 1.0)) * 180 / M_PI;
+        const double angle =
+            std::acos(std::clamp(syn.mean_acc.normalized().dot(mean_dir.normalized()), -1.0, 1.0)) * 180 / M_PI;
         const double real_p50 = percentile(p50, 0.5), real_p95 = percentile(p95, 0.5);
-        std::printf("%-11s gravity direction %5.1f deg apart | |acc| p50 %5.2f vs %5.2f, p95 %5.2f vs %5.2f m/s^2 | "
-                    "stride %.2f vs %.2f Hz (synthetic vs HuGaDB median of %zu)\n", position.c_str(), angle, syn.acc_p50,
-                    real_p50, syn.acc_p95, real_p95, syn.stride_hz, percentile(stride, 0.5), p50.size());
+        std::printf(
+            "%-11s gravity direction %5.1f deg apart | |acc| p50 %5.2f vs %5.2f, p95 %5.2f vs %5.2f m/s^2 | "
+            "stride %.2f vs %.2f Hz (synthetic vs HuGaDB median of %zu)\n",
+            position.c_str(), angle, syn.acc_p50, real_p50, syn.acc_p95, real_p95, syn.stride_hz,
+            percentile(stride, 0.5), p50.size());
         EXPECT_LT(angle, 30.0) << position;  // the mounting conventions agree with the real sensors
         EXPECT_NEAR(syn.acc_p50 / real_p50, 1.0, 0.25) << position;
         EXPECT_NEAR(syn.acc_p95 / real_p95, 1.0, 0.4) << position;  // HuGaDB clips at 2 g per axis

@@ -18,7 +18,8 @@ struct Motion {
     std::vector<Quat> q;
 };
 
-template <class Pose> Motion sample(double seconds, Pose pose) {
+template <class Pose>
+Motion sample(double seconds, Pose pose) {
     Motion m;
     for (int f = 0; f <= static_cast<int>(seconds * kSynthesisFps); ++f) {
         Vector3d p;
@@ -35,7 +36,10 @@ template <class Pose> Motion sample(double seconds, Pose pose) {
 TEST(ImuSynthesis, StaticSensorReadsGravityOnItsUpAxis) {
     // Rotated 90 degrees about Z: the sensor's +X axis is mapped onto world +Y, so it points up.
     const Quat tilt(Eigen::AngleAxisd(M_PI / 2, Vector3d::UnitZ()));
-    const Motion m = sample(2.0, [&](double, Vector3d& p, Quat& q) { p = {0.3, 1.1, -0.2}; q = tilt; });
+    const Motion m = sample(2.0, [&](double, Vector3d& p, Quat& q) {
+        p = {0.3, 1.1, -0.2};
+        q = tilt;
+    });
     const ImuSignals s = synthesize_imu(m.p, m.q, kSynthesisFps, 50);
     EXPECT_EQ(s.t.size(), 101u);
     for (size_t k = 0; k < s.t.size(); ++k) {
@@ -46,7 +50,10 @@ TEST(ImuSynthesis, StaticSensorReadsGravityOnItsUpAxis) {
 }
 
 TEST(ImuSynthesis, ConstantVelocityGivesGravityOnly) {
-    const Motion m = sample(3.0, [](double t, Vector3d& p, Quat& q) { p = Vector3d(1.4 * t, 0.9, -0.3 * t); q = Quat::Identity(); });
+    const Motion m = sample(3.0, [](double t, Vector3d& p, Quat& q) {
+        p = Vector3d(1.4 * t, 0.9, -0.3 * t);
+        q = Quat::Identity();
+    });
     const ImuSignals s = synthesize_imu(m.p, m.q, kSynthesisFps, 100);
     for (const Vector3d& a : s.acc) EXPECT_LT((a - Vector3d(0, kGravity, 0)).norm(), 1e-9);
 }
@@ -65,14 +72,17 @@ TEST(ImuSynthesis, TurningInPlaceGivesYawRateAndCentripetalForce) {
         // In the rotating sensor frame the centripetal acceleration points to the axis: -w^2 r along sensor x.
         worst_acc = std::max(worst_acc, (s.acc[k] - Vector3d(-w * w * r, kGravity, 0)).norm());
     }
-    EXPECT_LT(worst_gyr, 2e-3);   // spline of the quaternion at 20 fps: w h = 0.075 rad per frame
-    EXPECT_LT(worst_acc, 5e-3);   // of 0.45 m/s^2 centripetal
+    EXPECT_LT(worst_gyr, 2e-3);  // spline of the quaternion at 20 fps: w h = 0.075 rad per frame
+    EXPECT_LT(worst_acc, 5e-3);  // of 0.45 m/s^2 centripetal
 }
 
 TEST(ImuSynthesis, VerticalBounceMatchesAnalyticSpecificForce) {
     // p_y = 1 + A sin(2 pi f t): a_y = g - A (2 pi f)^2 sin(2 pi f t) in the (unrotated) sensor frame.
     const double A = 0.05, f = 1.0, om = 2 * M_PI * f;
-    const Motion m = sample(3.0, [&](double t, Vector3d& p, Quat& q) { p = {0, 1 + A * std::sin(om * t), 0}; q = Quat::Identity(); });
+    const Motion m = sample(3.0, [&](double t, Vector3d& p, Quat& q) {
+        p = {0, 1 + A * std::sin(om * t), 0};
+        q = Quat::Identity();
+    });
     const ImuSignals s = synthesize_imu(m.p, m.q, kSynthesisFps, 60);
     double worst = 0, worst_step = 0;
     for (size_t k = 0; k < s.t.size(); ++k) {
@@ -140,7 +150,8 @@ TEST(ImuSynthesis, StrapModeFiltersOnlyItsAxisByTheSpringMassTransferFunction) {
     }
     // Shaken across the strap, the sensor reads what a bolted one reads.
     const Motion across = shaken(Vector3d(0, 0.6, 0.8), A, 6, 2.0);
-    const ImuSignals bolted = synthesize_imu(across.p, across.q, 200, 1000), on_strap = synthesize_imu(across.p, across.q, 200, 1000, strap);
+    const ImuSignals bolted = synthesize_imu(across.p, across.q, 200, 1000),
+                     on_strap = synthesize_imu(across.p, across.q, 200, 1000, strap);
     ASSERT_EQ(bolted.t.size(), on_strap.t.size());
     for (size_t k = 0; k < bolted.t.size(); ++k) EXPECT_LT((bolted.acc[k] - on_strap.acc[k]).norm(), 1e-9) << k;
 }

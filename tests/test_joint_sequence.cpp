@@ -52,7 +52,8 @@ TEST(JointSequence, ConcatenatingTwoSlicesGivesTheWholeBack) {
     ASSERT_EQ(whole.num_frames, 6);
     EXPECT_EQ(whole.positions, s.positions);
     // Another joint count or rate is refused, naming what differs.
-    EXPECT_TRUE(test::contains(test::error_message([&] { concatenate_frames(s, JointSequence(2, 3, 20.0)); }), "3 joints"));
+    EXPECT_TRUE(
+        test::contains(test::error_message([&] { concatenate_frames(s, JointSequence(2, 3, 20.0)); }), "3 joints"));
     EXPECT_TRUE(test::contains(test::error_message([&] { concatenate_frames(s, JointSequence(2, 2, 30.0)); }), "30.0"));
 }
 
@@ -60,5 +61,6 @@ TEST(JointSequence, FrameRatesAboveZeroUpTo1000AreAccepted) {
     EXPECT_NO_THROW(check_motion_fps(20, "--fps"));
     EXPECT_NO_THROW(check_motion_fps(1000, "--fps"));
     for (const double bad : {0.0, -5.0, 1000.5, 1e12, std::nan(""), HUGE_VAL})
-        EXPECT_EQ(test::error_message([&] { check_motion_fps(bad, "--fps"); }).rfind("--fps: frame rate", 0), 0u) << bad;
+        EXPECT_EQ(test::error_message([&] { check_motion_fps(bad, "--fps"); }).rfind("--fps: frame rate", 0), 0u)
+            << bad;
 }

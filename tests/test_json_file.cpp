@@ -16,10 +16,16 @@ TEST(JsonFile, ASyntaxErrorNamesTheFileAndWhereItBroke) {
     const std::string m = test::error_message([&] { read_json_file(path); });
     EXPECT_EQ(m.rfind(path + ": json: expected a JSON document (got parse error at line 1", 0), 0u) << m;
     EXPECT_EQ(m.find("json.exception"), std::string::npos) << m;
-    EXPECT_NE(test::error_message([&] { parse_json_text("{\"a\": \"\xff\"}", "x.json"); }).find("x.json: json: expected a JSON document"), std::string::npos);
-    EXPECT_NE(test::error_message([&] { read_json_file(path + ".missing"); }).find(path + ".missing"), std::string::npos);
+    EXPECT_NE(test::error_message([&] {
+                  parse_json_text("{\"a\": \"\xff\"}", "x.json");
+              }).find("x.json: json: expected a JSON document"),
+              std::string::npos);
+    EXPECT_NE(test::error_message([&] { read_json_file(path + ".missing"); }).find(path + ".missing"),
+              std::string::npos);
     // A number beyond double's range (found by fuzz_job_marker: the parser throws out_of_range, not parse_error).
-    EXPECT_NE(test::error_message([&] { parse_json_text("{\"seed\": 0.1e1111111}", "big.json"); }).find("big.json: json: expected a JSON document (got number overflow"),
+    EXPECT_NE(test::error_message([&] {
+                  parse_json_text("{\"seed\": 0.1e1111111}", "big.json");
+              }).find("big.json: json: expected a JSON document (got number overflow"),
               std::string::npos);
 }
 
@@ -33,10 +39,15 @@ TEST(JsonFile, FieldsAreReadByTypeAndFaultsNameTheDottedKey) {
     EXPECT_TRUE(json_bool(doc, "ok", "f.json"));
     EXPECT_EQ(json_object(doc, "sub", "f.json").size(), 1u);
     EXPECT_EQ(test::error_message([&] { json_string(doc, "n", "f.json"); }), "f.json: n: expected a string (got 12)");
-    EXPECT_EQ(test::error_message([&] { json_count(doc, "neg", "f.json"); }), "f.json: neg: expected a whole number from 0 (got -3)");
-    EXPECT_EQ(test::error_message([&] { json_integer(doc, "x", "f.json"); }), "f.json: x: expected a whole number (got 0.5)");
-    EXPECT_EQ(test::error_message([&] { json_bool(doc, "missing", "f.json"); }), "f.json: missing: expected true or false (missing)");
-    EXPECT_EQ(test::error_message([&] { json_count(json_array(doc, "list", "f.json")[0], "n_samples", "f.json", "list.0"); }),
-              "f.json: list.0.n_samples: expected a whole number from 0 (got \"x\")");
-    EXPECT_EQ(test::error_message([&] { json_string(nlohmann::json::array(), "k", "f.json"); }), "f.json: json: expected an object (got array)");
+    EXPECT_EQ(test::error_message([&] { json_count(doc, "neg", "f.json"); }),
+              "f.json: neg: expected a whole number from 0 (got -3)");
+    EXPECT_EQ(test::error_message([&] { json_integer(doc, "x", "f.json"); }),
+              "f.json: x: expected a whole number (got 0.5)");
+    EXPECT_EQ(test::error_message([&] { json_bool(doc, "missing", "f.json"); }),
+              "f.json: missing: expected true or false (missing)");
+    EXPECT_EQ(
+        test::error_message([&] { json_count(json_array(doc, "list", "f.json")[0], "n_samples", "f.json", "list.0"); }),
+        "f.json: list.0.n_samples: expected a whole number from 0 (got \"x\")");
+    EXPECT_EQ(test::error_message([&] { json_string(nlohmann::json::array(), "k", "f.json"); }),
+              "f.json: json: expected an object (got array)");
 }

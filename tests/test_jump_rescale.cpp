@@ -25,7 +25,7 @@ using namespace smpl22;
 
 constexpr double kJumpStandPelvisHeight = 0.88;
 constexpr int kJumpStandFrames = 20, kJumpFlightFrames = 10;  // 1 s standing either side, 0.5 s in the air
-constexpr double kJumpTravel = 0.4;                       // m travelled in the air, +Z
+constexpr double kJumpTravel = 0.4;                           // m travelled in the air, +Z
 
 // Pelvis lift above standing at time t into the flight (s): a projectile that leaves and meets the floor level.
 double jump_projectile_lift(double t) {
@@ -43,13 +43,16 @@ JointSequence procedural_jump() {
         const Vector3d shift(0, jump_projectile_lift(t), kJumpTravel * in_air / kJumpFlightFrames);
         m.at(f, pelvis) = Vector3d(0, kJumpStandPelvisHeight, 0) + shift;
         for (int j = 1; j < kNumJoints; ++j)
-            if (!is_leg_joint(j)) m.at(f, j) = m.at(f, kParents[static_cast<size_t>(j)]) + kTargetOffsets[static_cast<size_t>(j)];
+            if (!is_leg_joint(j))
+                m.at(f, j) = m.at(f, kParents[static_cast<size_t>(j)]) + kTargetOffsets[static_cast<size_t>(j)];
         for (const LegJoints& leg : kLegs) {
             const double foot = kTargetOffsets[static_cast<size_t>(leg.toe)].norm();
             m.at(f, leg.ankle) = Vector3d(kTargetOffsets[static_cast<size_t>(leg.hip)].x(), 0.08, 0) + shift;
             m.at(f, leg.toe) = m.at(f, leg.ankle) + Vector3d(0, -0.06, std::sqrt(foot * foot - 0.06 * 0.06));
-            m.at(f, leg.knee) = solve_two_bone_ik(m.at(f, leg.hip), m.at(f, leg.ankle), kTargetOffsets[static_cast<size_t>(leg.knee)].norm(),
-                                                  kTargetOffsets[static_cast<size_t>(leg.ankle)].norm(), m.at(f, leg.hip) + Vector3d(0, -0.4, 1))
+            m.at(f, leg.knee) = solve_two_bone_ik(m.at(f, leg.hip), m.at(f, leg.ankle),
+                                                  kTargetOffsets[static_cast<size_t>(leg.knee)].norm(),
+                                                  kTargetOffsets[static_cast<size_t>(leg.ankle)].norm(),
+                                                  m.at(f, leg.hip) + Vector3d(0, -0.4, 1))
                                     .middle;
         }
     }
@@ -106,7 +109,8 @@ TEST(JumpRescale, TheFlightStaysBallisticWithApexKSquaredAndDurationK) {
         o.time_scale = k;
         const JointSequence m = rescale_jump(jump, o);
         const MeasuredFlight after = measure_jump_flight(m);
-        std::printf("[k %.2f] flight %d frames, apex %.3f m, acceleration %.2f m/s^2\n", k, after.frames, after.apex_m, after.acceleration);
+        std::printf("[k %.2f] flight %d frames, apex %.3f m, acceleration %.2f m/s^2\n", k, after.frames, after.apex_m,
+                    after.acceleration);
         EXPECT_NEAR(after.acceleration, -kGravity, 0.01 * kGravity) << "k " << k;
         EXPECT_NEAR(after.apex_m, k * k * before.apex_m, 0.01) << "k " << k;
         EXPECT_NEAR(after.frames, k * kJumpFlightFrames - 1, 1.0) << "k " << k;
@@ -149,7 +153,8 @@ TEST(JumpRescale, RefusesScalesOutOfRangeAndShortClips) {
     o.time_scale = 1.5;
     EXPECT_TRUE(test::contains(test::error_message([&] { rescale_jump(procedural_jump(), o); }), "time_scale"));
     o.time_scale = 1.1;
-    EXPECT_TRUE(test::contains(test::error_message([&] { rescale_jump(slice_frames(procedural_jump(), 0, 5), o); }), "0.5 s"));
+    EXPECT_TRUE(
+        test::contains(test::error_message([&] { rescale_jump(slice_frames(procedural_jump(), 0, 5), o); }), "0.5 s"));
 }
 
 // The jump turned about the vertical through the origin by `angle` (rad, x towards z).
@@ -178,8 +183,8 @@ TEST(JumpSeries, ChainedJumpsKeepEachFlightAndTravelOnFromEachLanding) {
 }
 
 TEST(JumpSeries, ANextJumpTurnsToFaceTheWayThePreviousOneEnds) {
-    const JointSequence jump = procedural_jump();                // faces and travels +Z
-    const JointSequence sideways = turned(jump, -M_PI / 2);      // faces and travels +X
+    const JointSequence jump = procedural_jump();            // faces and travels +Z
+    const JointSequence sideways = turned(jump, -M_PI / 2);  // faces and travels +X
     const JointSequence m = chain_jumps({jump, sideways}, JumpSeriesOptions{});
     const Vector3d facing = body_facing(m, m.num_frames - 1);
     EXPECT_NEAR(facing.z(), 1.0, 1e-6);
@@ -192,11 +197,16 @@ TEST(JumpSeries, RefusesOneJumpMixedRatesAndBlendsOutOfRange) {
     EXPECT_TRUE(test::contains(test::error_message([&] { chain_jumps({jump}, JumpSeriesOptions{}); }), "two jumps"));
     JointSequence faster = jump;
     faster.fps = 40;
-    EXPECT_TRUE(test::contains(test::error_message([&] { chain_jumps({jump, faster}, JumpSeriesOptions{}); }), "one frame rate"));
+    EXPECT_TRUE(test::contains(test::error_message([&] {
+                                   chain_jumps({jump, faster}, JumpSeriesOptions{});
+                               }),
+                               "one frame rate"));
     JumpSeriesOptions o;
     o.blend_s = 0.5;
     EXPECT_TRUE(test::contains(test::error_message([&] { chain_jumps({jump, jump}, o); }), "blend_s"));
-    EXPECT_TRUE(test::contains(test::error_message([&] { chain_jumps({jump, slice_frames(jump, 0, 5)}, JumpSeriesOptions{}); }),
+    EXPECT_TRUE(test::contains(test::error_message([&] {
+                                   chain_jumps({jump, slice_frames(jump, 0, 5)}, JumpSeriesOptions{});
+                               }),
                                "three blend windows"));
 }
 

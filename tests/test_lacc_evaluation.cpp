@@ -28,7 +28,8 @@ TEST(LaccEvaluation, OneRowPerClipSeededDrawsAndFiniteLosses) {
         for (std::string id; std::getline(in, id);)
             if (!id.empty()) clips.insert(id);
     }
-    const CsvTable a = evaluate_lacc(*model, data, "train", 7), b = evaluate_lacc(*model, data, "train", 7), c = evaluate_lacc(*model, data, "train", 8);
+    const CsvTable a = evaluate_lacc(*model, data, "train", 7), b = evaluate_lacc(*model, data, "train", 7),
+                   c = evaluate_lacc(*model, data, "train", 8);
     EXPECT_EQ(a.header, (std::vector<std::string>{"id", "caption", "t", "l_acc", "l_simple"}));
     ASSERT_EQ(a.rows.size(), clips.size());
     std::set<std::string> seen;

@@ -57,8 +57,10 @@ TEST(LowDataCurve, PointFromDraws) {
 TEST(LowDataCurve, DamagedNamesTheKey) {
     nlohmann::json j = low_data_curves_json({curve()});
     j["low_data_curves"][0]["arms"][1]["points"][2]["draws"][0] = "high";
-    EXPECT_TRUE(test::contains(test::error_message([&] { parse_low_data_curves(j, "c.json"); }), "c.json: low_data_curves.0.arms.1.points.2.draws"));
+    EXPECT_TRUE(test::contains(test::error_message([&] { parse_low_data_curves(j, "c.json"); }),
+                               "c.json: low_data_curves.0.arms.1.points.2.draws"));
     j = low_data_curves_json({curve()});
     j["low_data_curves"][0].erase("labels");
-    EXPECT_TRUE(test::contains(test::error_message([&] { parse_low_data_curves(j, "c.json"); }), "c.json: low_data_curves.0.labels"));
+    EXPECT_TRUE(test::contains(test::error_message([&] { parse_low_data_curves(j, "c.json"); }),
+                               "c.json: low_data_curves.0.labels"));
 }

@@ -17,7 +17,6 @@ namespace {
 using Eigen::Vector3d;
 using namespace smpl22;
 
-
 // A short "lie-down" clip of 5 frames: the rest pose with the forearms bent toward the belly, turned -90 deg
 // about X (head toward -Z, face up), the pelvis 0.1 m above the floor; frame 0 still standing.
 JointSequence lie_down() {
@@ -31,7 +30,8 @@ JointSequence lie_down() {
     for (int f = 0; f < m.num_frames; ++f) {
         m.at(f, pelvis) = Vector3d(0, f == 0 ? 0.9 : 0.1, 0);
         for (int j = 1; j < kNumJoints; ++j)
-            m.at(f, j) = m.at(f, kParents[static_cast<size_t>(j)]) + (f == 0 ? Eigen::Matrix3d::Identity() : supine) * bones[static_cast<size_t>(j)];
+            m.at(f, j) = m.at(f, kParents[static_cast<size_t>(j)]) +
+                         (f == 0 ? Eigen::Matrix3d::Identity() : supine) * bones[static_cast<size_t>(j)];
     }
     return m;
 }
@@ -51,7 +51,8 @@ TEST(LyingStill, HoldsTheLastPoseAndBreathesWithTheChestOnly) {
     const double half_breath = 60.0 / o.breaths_per_min / 2 * kFps;  // frames
     const int mid = static_cast<int>(std::lround(half_breath));
     // Turning about the body's left (+X, unchanged by the turn to supine) takes its up (-Z) toward its front (+Y).
-    const Vector3d turned = Eigen::AngleAxisd(0.02 * 0.5 * (1 - std::cos(2 * test::kPi * mid / (2 * half_breath))), Vector3d::UnitX()) * r;
+    const Vector3d turned =
+        Eigen::AngleAxisd(0.02 * 0.5 * (1 - std::cos(2 * test::kPi * mid / (2 * half_breath))), Vector3d::UnitX()) * r;
     EXPECT_NEAR(m.at(mid, head).y() - src.at(4, head).y(), turned.y() - r.y(), 1e-12);
     EXPECT_GT(m.at(mid, head).y() - src.at(4, head).y(), 0.005);
     EXPECT_NEAR(m.at(0, head).y(), src.at(4, head).y(), 1e-12);  // starts at the end of an exhale
@@ -68,7 +69,8 @@ TEST(LyingStill, ProneTheBreathingLiftsAndNeverSinks) {
     double floor = prone.at(4, 0).y();  // the pose's lowest joint: the hands, resting under the body
     for (int j = 0; j < kNumJoints; ++j) floor = std::min(floor, prone.at(4, j).y());
     for (int f = 0; f < m.num_frames; ++f)
-        for (int j = 0; j < kNumJoints; ++j) EXPECT_GE(m.at(f, j).y(), floor - 1e-12) << kJointNames[static_cast<size_t>(j)];
+        for (int j = 0; j < kNumJoints; ++j)
+            EXPECT_GE(m.at(f, j).y(), floor - 1e-12) << kJointNames[static_cast<size_t>(j)];
     EXPECT_GT(m.at(43, head).y(), prone.at(4, head).y() + 0.005);
 }
 

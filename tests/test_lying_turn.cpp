@@ -24,7 +24,8 @@ JointSequence supine_hold(int frames) {
     const Eigen::Matrix3d supine = Eigen::AngleAxisd(-test::kPi / 2, Vector3d::UnitX()).toRotationMatrix();
     for (int f = 0; f < frames; ++f) {
         m.at(f, pelvis) = Vector3d(0, 0.1, 0);
-        for (int j = 1; j < kNumJoints; ++j) m.at(f, j) = m.at(f, kParents[static_cast<size_t>(j)]) + supine * kTargetOffsets[static_cast<size_t>(j)];
+        for (int j = 1; j < kNumJoints; ++j)
+            m.at(f, j) = m.at(f, kParents[static_cast<size_t>(j)]) + supine * kTargetOffsets[static_cast<size_t>(j)];
     }
     return m;
 }
@@ -41,8 +42,9 @@ TEST(LyingTurn, TurnsAboutTheLongAxisByTheAngleAndComesBack) {
     const JointSequence m = lying_turn(src, o);
     ASSERT_EQ(m.num_frames, 161);
     EXPECT_LT(max_bone_length_error(m, bone_lengths(src, 0)), 1e-9);  // rigid
-    const int side = 80;                                               // 4 s: on the side
-    const Vector3d across0 = src.at(0, left_hip) - src.at(0, right_hip), across = m.at(side, left_hip) - m.at(side, right_hip);
+    const int side = 80;                                              // 4 s: on the side
+    const Vector3d across0 = src.at(0, left_hip) - src.at(0, right_hip),
+                   across = m.at(side, left_hip) - m.at(side, right_hip);
     EXPECT_NEAR(std::acos(across0.normalized().dot(across.normalized())), o.angle_rad, 1e-9);
     // About the long axis: the line from pelvis to neck keeps its direction.
     const Vector3d along0 = src.at(0, neck) - src.at(0, pelvis), along = m.at(side, neck) - m.at(side, pelvis);
@@ -63,7 +65,7 @@ TEST(LyingTurn, TheBodyRestsOnTheFloorContactAndTheSideLiesHigher) {
         lowest = std::min(lowest, lowest_joint(m, f));
     }
     EXPECT_NEAR(lowest, contact, 1e-9);
-    EXPECT_NEAR(lowest_joint(m, 80), contact, 0.01);     // on the side it rests on the floor, not above it
+    EXPECT_NEAR(lowest_joint(m, 80), contact, 0.01);                 // on the side it rests on the floor, not above it
     EXPECT_GT(m.at(80, pelvis).y(), src.at(80, pelvis).y() + 0.05);  // the hip's half width above the sacrum's
     EXPECT_TRUE(quality_failures(score_motion(m), default_quality_thresholds()).empty());
 }
@@ -81,7 +83,8 @@ TEST(LyingTurn, RefusesBadOptionsAndSourcesNamingTheField) {
     JointSequence standing = supine_hold(200);
     const Eigen::Matrix3d up = Eigen::AngleAxisd(test::kPi / 2, Vector3d::UnitX()).toRotationMatrix();
     for (int f = 0; f < standing.num_frames; ++f)
-        for (int j = 0; j < kNumJoints; ++j) standing.at(f, j) = Vector3d(0, 0.9, 0) + up * (standing.at(f, j) - Vector3d(0, 0.1, 0));
+        for (int j = 0; j < kNumJoints; ++j)
+            standing.at(f, j) = Vector3d(0, 0.9, 0) + up * (standing.at(f, j) - Vector3d(0, 0.1, 0));
     EXPECT_THROW(lying_turn(standing, LyingTurnOptions{}), Error);
 }
 

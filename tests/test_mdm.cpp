@@ -36,11 +36,23 @@ TEST(Mdm, MatchesTheOfficialForwardCondUncondAndGuided) {
     SHARED_OR_SKIP(weights, "reference/mdm/mdm_tiny.safetensors");
     Mdm model = tiny_model();
     torch::NoGradGuard no_grad;
-    const torch::Tensor x = load_mdm_reference("reference/mdm/forward/x.npy"), t = load_mdm_reference("reference/mdm/forward/timesteps.npy");
+    const torch::Tensor x = load_mdm_reference("reference/mdm/forward/x.npy"),
+                        t = load_mdm_reference("reference/mdm/forward/timesteps.npy");
     const torch::Tensor text = load_mdm_reference("reference/mdm/forward/text_embed.npy");
-    const double cond = (model->forward(x, t, text) - load_mdm_reference("reference/mdm/forward/out_cond.npy")).abs().max().item<double>();
-    const double uncond = (model->forward(x, t, text, true) - load_mdm_reference("reference/mdm/forward/out_uncond.npy")).abs().max().item<double>();
-    const double cfg = (model->forward_guided(x, t, text, 2.5) - load_mdm_reference("reference/mdm/forward/out_cfg_scale2.5.npy")).abs().max().item<double>();
+    const double cond = (model->forward(x, t, text) - load_mdm_reference("reference/mdm/forward/out_cond.npy"))
+                            .abs()
+                            .max()
+                            .item<double>();
+    const double uncond =
+        (model->forward(x, t, text, true) - load_mdm_reference("reference/mdm/forward/out_uncond.npy"))
+            .abs()
+            .max()
+            .item<double>();
+    const double cfg =
+        (model->forward_guided(x, t, text, 2.5) - load_mdm_reference("reference/mdm/forward/out_cfg_scale2.5.npy"))
+            .abs()
+            .max()
+            .item<double>();
     EXPECT_LT(cond, 1e-5);
     EXPECT_LT(uncond, 1e-5);
     EXPECT_LT(cfg, 1e-5);
@@ -84,7 +96,8 @@ TEST(Mdm, MaskedFramesDoNotChangeValidOnes) {
     torch::NoGradGuard no_grad;
     torch::manual_seed(5);
     torch::Tensor x = torch::randn({1, 263, 1, 10});
-    const torch::Tensor t = torch::tensor({int64_t{300}}), text = torch::randn({1, 512}), lengths = torch::tensor({int64_t{6}});
+    const torch::Tensor t = torch::tensor({int64_t{300}}), text = torch::randn({1, 512}),
+                        lengths = torch::tensor({int64_t{6}});
     const torch::Tensor a = model->forward(x, t, text, false, lengths);
     x.index_put_({0, torch::indexing::Slice(), 0, torch::indexing::Slice(6, 10)}, 100.0);  // change only padding
     const torch::Tensor b = model->forward(x, t, text, false, lengths);
@@ -101,19 +114,25 @@ TEST(Mdm, CliForwardMatchesTheReference) {
     SHARED_OR_SKIP(weights, "reference/mdm/mdm_tiny.safetensors");
     const std::string r = test::shared_path("reference/mdm");
     const std::string out = test::scratch_dir("mdm_cli") + "/out.npy";
-    const auto run = test::run_cli("model forward --weights " + weights + " --config " + r + "/mdm_tiny_config.json --x " + r +
-                                   "/forward/x.npy --timesteps " + r + "/forward/timesteps.npy --text-embed " + r +
-                                   "/forward/text_embed.npy --guidance 2.5 --out " + out);
+    const auto run =
+        test::run_cli("model forward --weights " + weights + " --config " + r + "/mdm_tiny_config.json --x " + r +
+                      "/forward/x.npy --timesteps " + r + "/forward/timesteps.npy --text-embed " + r +
+                      "/forward/text_embed.npy --guidance 2.5 --out " + out);
     ASSERT_EQ(run.exit_code, 0) << run.output;
-    EXPECT_LT((load_mdm_reference("reference/mdm/forward/out_cfg_scale2.5.npy") - [&] {
-                  const NdArray a = read_npy(out);
-                  std::vector<float> v = a.to<float>();
-                  return torch::from_blob(v.data(), a.shape, torch::kFloat).clone();
-              }()).abs().max().item<float>(),
+    EXPECT_LT((load_mdm_reference("reference/mdm/forward/out_cfg_scale2.5.npy") -
+               [&] {
+                   const NdArray a = read_npy(out);
+                   std::vector<float> v = a.to<float>();
+                   return torch::from_blob(v.data(), a.shape, torch::kFloat).clone();
+               }())
+                  .abs()
+                  .max()
+                  .item<float>(),
               1e-5);
-    const auto bad = test::run_cli("model forward --weights " + weights + " --config " + r + "/mdm_tiny_config.json --x " + r +
-                                   "/forward/text_embed.npy --timesteps " + r + "/forward/timesteps.npy --text-embed " + r +
-                                   "/forward/text_embed.npy --out " + out + "2");
+    const auto bad =
+        test::run_cli("model forward --weights " + weights + " --config " + r + "/mdm_tiny_config.json --x " + r +
+                      "/forward/text_embed.npy --timesteps " + r + "/forward/timesteps.npy --text-embed " + r +
+                      "/forward/text_embed.npy --out " + out + "2");
     EXPECT_EQ(bad.exit_code, 1);
     EXPECT_NE(bad.output.find("text_embed.npy: shape"), std::string::npos) << bad.output;
 }

@@ -20,12 +20,14 @@ MotionAttributes walk(double speed) {
 
 bool every_contains_one_of(const std::vector<std::string>& captions, const std::vector<std::string>& words) {
     return !captions.empty() && std::all_of(captions.begin(), captions.end(), [&](const std::string& c) {
-        return std::any_of(words.begin(), words.end(), [&](const std::string& w) { return c.find(w) != std::string::npos; });
+        return std::any_of(words.begin(), words.end(),
+                           [&](const std::string& w) { return c.find(w) != std::string::npos; });
     });
 }
 
 bool none_contains(const std::vector<std::string>& captions, const std::string& word) {
-    return std::none_of(captions.begin(), captions.end(), [&](const std::string& c) { return c.find(word) != std::string::npos; });
+    return std::none_of(captions.begin(), captions.end(),
+                        [&](const std::string& c) { return c.find(word) != std::string::npos; });
 }
 
 }  // namespace
@@ -56,7 +58,8 @@ TEST(MeasuredCaptions, ASlowWalkIsCaptionedSlowAndABriskOneFast) {
     EXPECT_TRUE(every_contains_one_of(brisk, {"quick", "brisk", "fast", "hurries"}));
     EXPECT_TRUE(none_contains(slow, "quick") && none_contains(slow, "fast"));
     EXPECT_TRUE(none_contains(brisk, "slow"));
-    const auto jog = measured_captions(walk(2.2), "running", 5, 1), sprint = measured_captions(walk(6.0), "running", 5, 1);
+    const auto jog = measured_captions(walk(2.2), "running", 5, 1),
+               sprint = measured_captions(walk(6.0), "running", 5, 1);
     EXPECT_TRUE(every_contains_one_of(jog, {"jog", "slowly"}));
     EXPECT_TRUE(every_contains_one_of(sprint, {"sprint", "very fast"}));
 }
@@ -70,7 +73,8 @@ TEST(MeasuredCaptions, RunningPaceWordsNameOnlyTheTails) {
         for (double v : {2.6, 2.8}) {
             const auto middle = measured_captions(walk(v), "running", 3, seed);
             ASSERT_FALSE(middle.empty());
-            EXPECT_TRUE(none_contains(middle, "slow") && none_contains(middle, "easy") && none_contains(middle, "fast") && none_contains(middle, "quick"));
+            EXPECT_TRUE(none_contains(middle, "slow") && none_contains(middle, "easy") &&
+                        none_contains(middle, "fast") && none_contains(middle, "quick"));
         }
     }
 }
@@ -96,10 +100,13 @@ TEST(MeasuredCaptions, TurnsAndTravelNameTheirSide) {
 TEST(MeasuredCaptions, SequencesKeepTheirOrder) {
     MotionAttributes stairs;
     stairs.steps_up = 6, stairs.steps_down = 6, stairs.transitions = {Transition::climb_up, Transition::climb_down};
-    EXPECT_TRUE(every_contains_one_of(measured_captions(stairs, "stairs", 3, 2), {"up the stairs and then", "up a flight of stairs and then", "up the stairs, turns"}));
+    EXPECT_TRUE(
+        every_contains_one_of(measured_captions(stairs, "stairs", 3, 2),
+                              {"up the stairs and then", "up a flight of stairs and then", "up the stairs, turns"}));
     MotionAttributes sit;
     sit.seated_s = 3, sit.transitions = {Transition::sit_down, Transition::stand_up};
-    EXPECT_TRUE(every_contains_one_of(measured_captions(sit, "sitting", 3, 2), {"stands up again", "stands back up", "then gets up"}));
+    EXPECT_TRUE(every_contains_one_of(measured_captions(sit, "sitting", 3, 2),
+                                      {"stands up again", "stands back up", "then gets up"}));
     MotionAttributes lie;
     lie.lying_s = 4, lie.lying_side = LyingSide::left, lie.transitions = {Transition::lie_down};
     EXPECT_TRUE(every_contains_one_of(measured_captions(lie, "lying", 3, 2), {"left side"}));

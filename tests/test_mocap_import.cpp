@@ -32,7 +32,8 @@ Plausibility measure(const JointSequence& s) {
     p.lowest_foot = 1e9;
     for (int j = 1; j < 22; ++j) {
         std::vector<double> len;
-        for (int f = 0; f < s.num_frames; ++f) len.push_back((s.at(f, j) - s.at(f, smpl22::kParents[static_cast<size_t>(j)])).norm());
+        for (int f = 0; f < s.num_frames; ++f)
+            len.push_back((s.at(f, j) - s.at(f, smpl22::kParents[static_cast<size_t>(j)])).norm());
         std::nth_element(len.begin(), len.begin() + static_cast<long>(len.size() / 2), len.end());
         const double median = len[len.size() / 2];
         double& dev = j == smpl22::head ? p.head_deviation : p.bone_deviation;
@@ -63,7 +64,11 @@ std::vector<std::string> files_in(const std::string& dir, const std::string& ext
     return out;
 }
 
-struct Archive { const char* archive; const char* folder; const char* ext; };
+struct Archive {
+    const char* archive;
+    const char* folder;
+    const char* ext;
+};
 const Archive kArchives[] = {
     {"mocap/cmu_daz_bvh_20fps.tar.xz", "bvh20", ".bvh"},
     {"mocap/cmu_iclone_bvh_20fps.tar.xz", "bvh20_iclone", ".bvh"},
@@ -103,13 +108,22 @@ TEST(MocapImport, EveryFileImportsPlausibly) {
             }
             ASSERT_GE(s.num_frames, 2) << path;
             const Plausibility p = measure(s);
-            if (p.bone_deviation > worst.bone_deviation) { worst.bone_deviation = p.bone_deviation; worst_bone_file = path; }
+            if (p.bone_deviation > worst.bone_deviation) {
+                worst.bone_deviation = p.bone_deviation;
+                worst_bone_file = path;
+            }
             worst.max_step = std::max(worst.max_step, p.max_step);
-            if (p.standing_height < min_height) { min_height = p.standing_height; min_height_file = path; }
-            if (p.standing_height > max_height) { max_height = p.standing_height; max_height_file = path; }
+            if (p.standing_height < min_height) {
+                min_height = p.standing_height;
+                min_height_file = path;
+            }
+            if (p.standing_height > max_height) {
+                max_height = p.standing_height;
+                max_height_file = path;
+            }
             min_floor = std::min(min_floor, p.lowest_foot);
             max_floor = std::max(max_floor, p.lowest_foot);
-            EXPECT_LT(p.bone_deviation, 1e-6) << path;                        // rigid bones
+            EXPECT_LT(p.bone_deviation, 1e-6) << path;  // rigid bones
             // SMPL's neck->head spans two source bones in HDM05 (lowerneck, upperneck), and Bandai Namco animates
             // the head joint's translation: their lengths vary by up to 1.8 cm.
             EXPECT_LT(p.head_deviation, 0.02) << path;
@@ -118,19 +132,21 @@ TEST(MocapImport, EveryFileImportsPlausibly) {
             // puts its crouched dashes at 1.32 m by this estimate.
             EXPECT_GT(p.standing_height, 1.3) << path;
             EXPECT_LT(p.standing_height, 2.0) << path;
-            EXPECT_LT(p.max_step, 1.0) << path;                               // < 20 m/s: no flips
+            EXPECT_LT(p.max_step, 1.0) << path;  // < 20 m/s: no flips
             if (moves_forward(path)) {
                 ++forward_clips;
-                forward_ok += p.forward_travel > 0;                           // left is +X when facing +Z
+                forward_ok += p.forward_travel > 0;  // left is +X when facing +Z
             }
         }
     }
     EXPECT_EQ(files, 99 + 41 + 5 + 287 + 666 + 22);
     EXPECT_EQ(forward_ok, forward_clips) << "clips walking or running forward must move along the body's forward";
-    std::printf("[ mocap    ] %d files; bone length deviation max %.2e m (%s), neck->head %.3f m; standing height %.3f (%s) .. %.3f m (%s); "
-                "lowest foot per clip %.3f .. %.3f m; max joint step %.3f m/frame; %d/%d forward clips move forward\n",
-                files, worst.bone_deviation, worst_bone_file.c_str(), worst.head_deviation, min_height, min_height_file.c_str(), max_height,
-                max_height_file.c_str(), min_floor, max_floor, worst.max_step, forward_ok, forward_clips);
+    std::printf(
+        "[ mocap    ] %d files; bone length deviation max %.2e m (%s), neck->head %.3f m; standing height %.3f (%s) .. "
+        "%.3f m (%s); "
+        "lowest foot per clip %.3f .. %.3f m; max joint step %.3f m/frame; %d/%d forward clips move forward\n",
+        files, worst.bone_deviation, worst_bone_file.c_str(), worst.head_deviation, min_height, min_height_file.c_str(),
+        max_height, max_height_file.c_str(), min_floor, max_floor, worst.max_step, forward_ok, forward_clips);
 }
 
 TEST(MocapImport, NativeRateFilesAgreeWithTheir20FpsVersions) {
@@ -147,12 +163,14 @@ TEST(MocapImport, NativeRateFilesAgreeWithTheir20FpsVersions) {
         // 1, 7, 13, ...): the resampling times fall on source frames, so the two must agree to rounding.
         const JointSequence a = import_motion(path), b = import_motion(twin);
         ASSERT_EQ(a.num_frames, b.num_frames) << path;
-        for (size_t i = 0; i < a.positions.size(); ++i) worst = std::max(worst, (a.positions[i] - b.positions[i]).norm());
+        for (size_t i = 0; i < a.positions.size(); ++i)
+            worst = std::max(worst, (a.positions[i] - b.positions[i]).norm());
         ++compared;
     }
     EXPECT_EQ(compared, 5);
     EXPECT_LT(worst, 1e-4);  // the 20 fps files are written with 6 significant digits
-    std::printf("[ mocap    ] native 120 fps vs shipped 20 fps: %d clips, max joint difference %.2e m\n", compared, worst);
+    std::printf("[ mocap    ] native 120 fps vs shipped 20 fps: %d clips, max joint difference %.2e m\n", compared,
+                worst);
 }
 
 TEST(MocapImport, CaptureRateKeepsCapturedFramesOnly) {
@@ -184,9 +202,12 @@ TEST(MocapImport, RefusesUnknownSkeletonNamingTheJoints) {
     const std::string dir = test::scratch_dir("mocap_unknown_skeleton");
     const std::string path = dir + "/robot.bvh";
     std::FILE* f = std::fopen(path.c_str(), "w");
-    std::fputs("HIERARCHY\nROOT base\n{\n OFFSET 0 0 0\n CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation\n"
-               " JOINT arm\n {\n  OFFSET 0 10 0\n  CHANNELS 1 Zrotation\n  End Site\n  {\n   OFFSET 0 5 0\n  }\n }\n}\n"
-               "MOTION\nFrames: 2\nFrame Time: 0.05\n0 0 0 0 0 0 10\n0 0 0 0 0 0 20\n", f);
+    std::fputs(
+        "HIERARCHY\nROOT base\n{\n OFFSET 0 0 0\n CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation "
+        "Yrotation\n"
+        " JOINT arm\n {\n  OFFSET 0 10 0\n  CHANNELS 1 Zrotation\n  End Site\n  {\n   OFFSET 0 5 0\n  }\n }\n}\n"
+        "MOTION\nFrames: 2\nFrame Time: 0.05\n0 0 0 0 0 0 10\n0 0 0 0 0 0 20\n",
+        f);
     std::fclose(f);
     try {
         import_motion(path);
@@ -206,7 +227,9 @@ TEST(MocapImport, ZUpSourcesAreTurnedToYUp) {
     const JointSequence a = import_motion(bvh), b = import_motion(bvh, z);
     ASSERT_EQ(a.positions.size(), b.positions.size());
     for (size_t i = 0; i < a.positions.size(); ++i)
-        EXPECT_LT((b.positions[i] - Eigen::Vector3d(a.positions[i].x(), a.positions[i].z(), -a.positions[i].y())).norm(), 1e-12);
+        EXPECT_LT(
+            (b.positions[i] - Eigen::Vector3d(a.positions[i].x(), a.positions[i].z(), -a.positions[i].y())).norm(),
+            1e-12);
     z.up = 'x';
     EXPECT_THROW(import_motion(bvh, z), Error);
 }

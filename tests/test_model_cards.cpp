@@ -28,7 +28,8 @@ TEST(ModelCards, EveryModelFolderHasAShortCardOfTheTemplate) {
     for (const auto& e : fs::directory_iterator(fs::path(T2IMU_SOURCE_DIR) / "models")) {
         // A folder still holding its training's checkpoint is a training's output (`t2imu train --out models/x`),
         // not a shipped model: the release ships weights and a card, no checkpoint.
-        if (!e.is_directory() || !fs::exists(e.path() / "model.json") || fs::exists(e.path() / "checkpoint.pt")) continue;
+        if (!e.is_directory() || !fs::exists(e.path() / "model.json") || fs::exists(e.path() / "checkpoint.pt"))
+            continue;
         ++cards;
         const std::string name = e.path().filename().string();
         const std::string card = t2imu::test::read_text(e.path() / "README.md");

@@ -35,7 +35,8 @@ TEST(MotionActivity, SmallClassesAreNotOutvotedByLargeOnes) {
     EXPECT_EQ(s.best, "sitting");
     // Distances in standardised units (x over its standard deviation in the reference).
     double mean = 0, mean2 = 0;
-    for (const ActivityExample& e : ref) mean += e.descriptors[0] / 102.0, mean2 += e.descriptors[0] * e.descriptors[0] / 102.0;
+    for (const ActivityExample& e : ref)
+        mean += e.descriptors[0] / 102.0, mean2 += e.descriptors[0] * e.descriptors[0] / 102.0;
     const double sd = std::sqrt(mean2 - mean * mean);
     EXPECT_NEAR(s.distance.at("sitting"), 0.5 / sd, 1e-9);
     EXPECT_NEAR(s.distance.at("walking"), (1.5 - 0.97) / sd, 1e-9);
@@ -47,9 +48,9 @@ TEST(MotionActivity, SmallClassesAreNotOutvotedByLargeOnes) {
 TEST(MotionActivity, LeaveOneSubjectOutLeavesTheWholeSubjectOut) {
     // Subject "odd" holds the only running clips near x = 1 and a walking clip at x = 1: without its own
     // clips, its walking clip is nearest the other subjects' running clips.
-    const std::vector<ActivityExample> ref = {
-        example("walking", "a", 0.0), example("walking", "b", 0.1), example("walking", "odd", 1.0),
-        example("running", "c", 1.05), example("running", "d", 1.1), example("running", "odd", 0.95)};
+    const std::vector<ActivityExample> ref = {example("walking", "a", 0.0),   example("walking", "b", 0.1),
+                                              example("walking", "odd", 1.0), example("running", "c", 1.05),
+                                              example("running", "d", 1.1),   example("running", "odd", 0.95)};
     const MotionActivityClassifier c(ref);
     std::vector<double> agreement;
     const auto confusion = c.leave_one_subject_out(&agreement);
@@ -63,7 +64,8 @@ TEST(MotionActivity, LeaveOneSubjectOutLeavesTheWholeSubjectOut) {
 
 TEST(MotionActivity, ReferenceTableRoundTripsThroughCsv) {
     std::vector<ActivityExample> ref;
-    for (int i = 0; i < 6; ++i) ref.push_back(example(i < 3 ? "lying" : "jumping", "s" + std::to_string(i), i * 0.37, i * 0.1));
+    for (int i = 0; i < 6; ++i)
+        ref.push_back(example(i < 3 ? "lying" : "jumping", "s" + std::to_string(i), i * 0.37, i * 0.1));
     const MotionActivityClassifier a(ref);
     const std::string path = test::scratch_dir("motion_activity") + "/reference.csv";
     write_csv(path, a.reference_table());

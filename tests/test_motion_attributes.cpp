@@ -47,8 +47,9 @@ std::array<Vector3d, 22> standing() {
 std::array<Vector3d, 22> seated() {
     std::array<Vector3d, 22> p = standing();
     const double drop = 0.4;
-    for (int k : {j::pelvis, j::spine1, j::spine2, j::spine3, j::neck, j::head, j::left_hip, j::right_hip, j::left_collar, j::right_collar,
-                  j::left_shoulder, j::right_shoulder, j::left_elbow, j::right_elbow, j::left_wrist, j::right_wrist})
+    for (int k : {j::pelvis, j::spine1, j::spine2, j::spine3, j::neck, j::head, j::left_hip, j::right_hip,
+                  j::left_collar, j::right_collar, j::left_shoulder, j::right_shoulder, j::left_elbow, j::right_elbow,
+                  j::left_wrist, j::right_wrist})
         p[static_cast<size_t>(k)].y() -= drop;
     for (int side : {-1, 1}) {
         const bool left = side > 0;
@@ -201,9 +202,11 @@ TEST(MotionAttributes, ABodyLiftedInAParabolaJumpsOnceAtItsHeight) {
 
 TEST(MotionAttributes, LyingOnTheBackTheFrontAndTheLeftSide) {
     const auto side_of = [](const Eigen::Matrix3d& r) { return measure_attributes(laid(r, 40)).lying_side; };
-    const Eigen::Matrix3d back = Eigen::AngleAxisd(-M_PI / 2, Vector3d::UnitX()).toRotationMatrix();  // belly (+Z) to +Y
+    const Eigen::Matrix3d back =
+        Eigen::AngleAxisd(-M_PI / 2, Vector3d::UnitX()).toRotationMatrix();  // belly (+Z) to +Y
     const Eigen::Matrix3d front = Eigen::AngleAxisd(M_PI / 2, Vector3d::UnitX()).toRotationMatrix();
-    // On the left side: laid on the back (head to -Z), then rolled about the body's long axis so its left (+X) points down.
+    // On the left side: laid on the back (head to -Z), then rolled about the body's long axis so its left (+X) points
+    // down.
     const Eigen::Matrix3d left = Eigen::AngleAxisd(-M_PI / 2, Vector3d::UnitZ()).toRotationMatrix() * back;
     EXPECT_EQ(side_of(back), LyingSide::back);
     EXPECT_EQ(side_of(front), LyingSide::front);
@@ -214,7 +217,8 @@ TEST(MotionAttributes, LyingOnTheBackTheFrontAndTheLeftSide) {
 }
 
 TEST(MotionAttributes, SittingDownAndStandingUpInThatOrder) {
-    const JointSequence m = concatenate_frames(concatenate_frames(still(standing(), 20), still(seated(), 40)), still(standing(), 20));
+    const JointSequence m =
+        concatenate_frames(concatenate_frames(still(standing(), 20), still(seated(), 40)), still(standing(), 20));
     const MotionAttributes a = measure_attributes(m);
     ASSERT_EQ(a.transitions.size(), 2u);
     EXPECT_EQ(a.transitions[0], Transition::sit_down);
@@ -222,7 +226,8 @@ TEST(MotionAttributes, SittingDownAndStandingUpInThatOrder) {
     EXPECT_NEAR(a.seated_s, 2.0, 1e-9);
     EXPECT_STREQ(transition_name(a.transitions[0]), "sit_down");
     // A two-frame dip into the seat is not a sit (shorter than kMinPostureSeconds).
-    const JointSequence dip = concatenate_frames(concatenate_frames(still(standing(), 20), still(seated(), 2)), still(standing(), 20));
+    const JointSequence dip =
+        concatenate_frames(concatenate_frames(still(standing(), 20), still(seated(), 2)), still(standing(), 20));
     EXPECT_TRUE(measure_attributes(dip).transitions.empty());
 }
 

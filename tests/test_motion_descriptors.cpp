@@ -16,7 +16,20 @@ using Eigen::Vector3d;
 namespace j = smpl22;
 
 namespace {
-enum Descriptor { kPelvisHeight, kPelvisSd, kHeadAbove, kTrunk, kThigh, kKnee, kRootSpeed, kVerticalSd, kClimb, kFootSpeed, kWristSpeed, kAirborne };
+enum Descriptor {
+    kPelvisHeight,
+    kPelvisSd,
+    kHeadAbove,
+    kTrunk,
+    kThigh,
+    kKnee,
+    kRootSpeed,
+    kVerticalSd,
+    kClimb,
+    kFootSpeed,
+    kWristSpeed,
+    kAirborne
+};
 
 // A standing body: pelvis 0.9 m up, straight legs, ankles 0.05 m above the floor, head 0.65 m above the pelvis.
 std::array<Vector3d, 22> standing() {
@@ -53,7 +66,8 @@ JointSequence motion(int frames, const std::array<Vector3d, 22>& pose, Offset of
 
 TEST(MotionDescriptors, GlidingUprightAtOneMetrePerSecond) {
     // Every joint moves at (0.8, 0, 0.6) m/s: horizontal speed 1, feet at 1, wrists still relative to the pelvis.
-    const MotionDescriptors d = describe_motion(motion(40, standing(), [](int f, int) -> Vector3d { return Vector3d(0.8, 0, 0.6) * f / 20.0; }));
+    const MotionDescriptors d = describe_motion(
+        motion(40, standing(), [](int f, int) -> Vector3d { return Vector3d(0.8, 0, 0.6) * f / 20.0; }));
     EXPECT_NEAR(d[kPelvisHeight], 0.9, 1e-12);
     EXPECT_NEAR(d[kPelvisSd], 0.0, 1e-12);
     EXPECT_NEAR(d[kHeadAbove], 0.65, 1e-12);
@@ -72,7 +86,8 @@ TEST(MotionDescriptors, GlidingUprightAtOneMetrePerSecond) {
 TEST(MotionDescriptors, AirborneMeansMoreThanFiveCentimetresUp) {
     // The whole body lifted in frames 10..14 of 40: 6 cm is flight (5 frames), 4 cm is below kAirborneHeight.
     const auto lifted = [](double h) {
-        return describe_motion(motion(40, standing(), [h](int f, int) -> Vector3d { return Vector3d(0, f >= 10 && f < 15 ? h : 0.0, 0); }));
+        return describe_motion(motion(
+            40, standing(), [h](int f, int) -> Vector3d { return Vector3d(0, f >= 10 && f < 15 ? h : 0.0, 0); }));
     };
     EXPECT_DOUBLE_EQ(lifted(0.06)[kAirborne], 5.0 / 40);
     EXPECT_DOUBLE_EQ(lifted(0.04)[kAirborne], 0.0);
@@ -87,7 +102,8 @@ TEST(MotionDescriptors, SeatedAndLyingPostures) {
         seated[left ? j::left_knee : j::right_knee] = {0.1 * side, 0.5, 0.45};
         seated[left ? j::left_ankle : j::right_ankle] = {0.1 * side, 0.05, 0.45};
     }
-    const MotionDescriptors s = describe_motion(motion(10, seated, [](int, int) -> Vector3d { return Vector3d::Zero(); }));
+    const MotionDescriptors s =
+        describe_motion(motion(10, seated, [](int, int) -> Vector3d { return Vector3d::Zero(); }));
     EXPECT_NEAR(s[kThigh], M_PI / 2, 1e-12);
     EXPECT_NEAR(s[kKnee], M_PI / 2, 1e-12);
     // Lying: the standing body turned 90 deg about X (head towards +Z) and lowered to 0.15 m: trunk and thighs
@@ -95,7 +111,8 @@ TEST(MotionDescriptors, SeatedAndLyingPostures) {
     std::array<Vector3d, 22> lying;
     const Eigen::Matrix3d turn = Eigen::AngleAxisd(M_PI / 2, Vector3d::UnitX()).toRotationMatrix();
     for (size_t k = 0; k < 22; ++k) lying[k] = turn * (standing()[k] - Vector3d(0, 0.9, 0)) + Vector3d(0, 0.15, 0);
-    const MotionDescriptors l = describe_motion(motion(10, lying, [](int, int) -> Vector3d { return Vector3d::Zero(); }));
+    const MotionDescriptors l =
+        describe_motion(motion(10, lying, [](int, int) -> Vector3d { return Vector3d::Zero(); }));
     EXPECT_NEAR(l[kTrunk], M_PI / 2, 1e-12);
     EXPECT_NEAR(l[kThigh], M_PI / 2, 1e-12);
     EXPECT_NEAR(l[kHeadAbove], 0.0, 1e-12);
@@ -161,7 +178,8 @@ namespace {
 std::array<Eigen::Vector3d, smpl22::kNumJoints> rest_pose() {
     std::array<Eigen::Vector3d, smpl22::kNumJoints> p;
     for (int j = 0; j < smpl22::kNumJoints; ++j)
-        p[j] = smpl22::kParents[j] < 0 ? Eigen::Vector3d(Eigen::Vector3d::Zero()) : Eigen::Vector3d(p[smpl22::kParents[j]] + smpl22::kTargetOffsets[j]);
+        p[j] = smpl22::kParents[j] < 0 ? Eigen::Vector3d(Eigen::Vector3d::Zero())
+                                       : Eigen::Vector3d(p[smpl22::kParents[j]] + smpl22::kTargetOffsets[j]);
     double lowest = INFINITY;
     for (const Eigen::Vector3d& x : p) lowest = std::min(lowest, x.y());
     for (Eigen::Vector3d& x : p) x.y() -= lowest;
@@ -187,8 +205,8 @@ double descriptor(const MotionDescriptors& d, const std::string& name) {
 }
 
 TEST(MotionDescriptors, WalkingPaceTranslationOfAnUprightBody) {
-    const MotionDescriptors d = describe_motion(rigid_motion(60, Eigen::Matrix3d::Identity(),
-                                                             [](double t) { return Eigen::Vector3d(0, 0, 1.2 * t); }));
+    const MotionDescriptors d = describe_motion(
+        rigid_motion(60, Eigen::Matrix3d::Identity(), [](double t) { return Eigen::Vector3d(0, 0, 1.2 * t); }));
     EXPECT_NEAR(descriptor(d, "root_speed_m_s"), 1.2, 1e-9);
     EXPECT_NEAR(descriptor(d, "foot_speed_m_s"), 1.2, 1e-9);
     EXPECT_NEAR(descriptor(d, "wrist_speed_m_s"), 0.0, 1e-9);  // relative to the pelvis
@@ -208,7 +226,8 @@ TEST(MotionDescriptors, LyingBodyHasItsHeadAtPelvisHeight) {
     // Rotated -90 degrees about X: the head points along -Z, the face up. The rest skeleton carries its head
     // about 0.1 m forward of the spine, which lying on the back turns into height.
     const Eigen::Matrix3d on_back = Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
-    const MotionDescriptors d = describe_motion(rigid_motion(40, on_back, [](double) { return Eigen::Vector3d::Zero(); }));
+    const MotionDescriptors d =
+        describe_motion(rigid_motion(40, on_back, [](double) { return Eigen::Vector3d::Zero(); }));
     EXPECT_NEAR(descriptor(d, "head_above_pelvis_m"), 0.0, 0.15);
     EXPECT_NEAR(descriptor(d, "trunk_tilt_rad"), M_PI / 2, 0.15);
     EXPECT_NEAR(descriptor(d, "thigh_tilt_rad"), M_PI / 2, 0.1);
@@ -216,14 +235,14 @@ TEST(MotionDescriptors, LyingBodyHasItsHeadAtPelvisHeight) {
 }
 
 TEST(MotionDescriptors, SteadyClimbIsNotFlight) {
-    const MotionDescriptors d = describe_motion(rigid_motion(80, Eigen::Matrix3d::Identity(),
-                                                             [](double t) { return Eigen::Vector3d(0, 0.2 * t, 0.4 * t); }));
+    const MotionDescriptors d = describe_motion(
+        rigid_motion(80, Eigen::Matrix3d::Identity(), [](double t) { return Eigen::Vector3d(0, 0.2 * t, 0.4 * t); }));
     EXPECT_NEAR(descriptor(d, "climb_rate_m_s"), 0.2, 1e-9);
     EXPECT_NEAR(descriptor(d, "root_vertical_speed_sd_m_s"), 0.0, 1e-9);
     EXPECT_EQ(descriptor(d, "airborne_fraction"), 0.0);
     // Going down the same slope: the sign tells stairs down from up.
-    const MotionDescriptors down = describe_motion(rigid_motion(80, Eigen::Matrix3d::Identity(),
-                                                                [](double t) { return Eigen::Vector3d(0, 1.0 - 0.2 * t, 0.4 * t); }));
+    const MotionDescriptors down = describe_motion(rigid_motion(
+        80, Eigen::Matrix3d::Identity(), [](double t) { return Eigen::Vector3d(0, 1.0 - 0.2 * t, 0.4 * t); }));
     EXPECT_NEAR(descriptor(down, "climb_rate_m_s"), -0.2, 1e-9);
 }
 

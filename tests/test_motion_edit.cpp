@@ -14,13 +14,13 @@ namespace {
 using Eigen::Vector3d;
 using namespace smpl22;
 
-
 // HumanML3D's target skeleton in its rest pose (upright, arms down, legs straight), pelvis at `pelvis_height`.
 JointSequence rest_pose(int frames, double pelvis_height = 1.0) {
     JointSequence m(frames, kNumJoints, kFps);
     for (int f = 0; f < frames; ++f) {
         m.at(f, pelvis) = Vector3d(0, pelvis_height, 0);
-        for (int j = 1; j < kNumJoints; ++j) m.at(f, j) = m.at(f, kParents[static_cast<size_t>(j)]) + kTargetOffsets[static_cast<size_t>(j)];
+        for (int j = 1; j < kNumJoints; ++j)
+            m.at(f, j) = m.at(f, kParents[static_cast<size_t>(j)]) + kTargetOffsets[static_cast<size_t>(j)];
     }
     return m;
 }
@@ -43,7 +43,7 @@ TEST(MotionEdit, RetimingHalvesTheSpeedWithoutOvershoot) {
         for (int j = 0; j < kNumJoints; ++j) m.at(f, j).x() += 0.1 * std::min(f, 10);
     const JointSequence slow = retime(m, 0.5);
     ASSERT_EQ(slow.num_frames, 41);
-    EXPECT_NEAR(slow.at(9, pelvis).x(), 0.45, 1e-12);      // halfway between source frames 4 and 5
+    EXPECT_NEAR(slow.at(9, pelvis).x(), 0.45, 1e-12);  // halfway between source frames 4 and 5
     EXPECT_NEAR(slow.at(40, pelvis).x(), 1.0, 1e-12);
     for (int g = 20; g < slow.num_frames; ++g) EXPECT_LE(slow.at(g, pelvis).x(), 1.0 + 1e-12) << "frame " << g;
     EXPECT_LT(max_bone_length_error(slow, bone_lengths(m, 0)), 1e-9);
@@ -59,7 +59,7 @@ TEST(MotionEdit, TurnedToFaceTurnsAboutThePivotAndMovesItThere) {
     EXPECT_LT((body_facing(t, 1) - facing).norm(), 1e-12);
     for (int f = 0; f < m.num_frames; ++f)
         for (int j = 0; j < kNumJoints; ++j) {
-            EXPECT_DOUBLE_EQ(t.at(f, j).y(), m.at(f, j).y());  // heights unchanged
+            EXPECT_DOUBLE_EQ(t.at(f, j).y(), m.at(f, j).y());            // heights unchanged
             const Vector3d a = m.at(f, j) - pivot, b = t.at(f, j) - to;  // horizontal distance to the pivot kept
             EXPECT_NEAR(std::hypot(a.x(), a.z()), std::hypot(b.x(), b.z()), 1e-12);
         }

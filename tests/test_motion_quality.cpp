@@ -13,7 +13,8 @@ JointSequence standing(int frames) {
     for (int f = 0; f < frames; ++f)
         for (int j = 0; j < smpl22::kNumJoints; ++j) m.at(f, j) = Eigen::Vector3d(0.01 * j, 1.7 * j / 21.0, 0.0);
     for (int f = 0; f < frames; ++f)
-        for (int j : {smpl22::left_ankle, smpl22::left_foot, smpl22::right_ankle, smpl22::right_foot}) m.at(f, j).y() = 0.0;
+        for (int j : {smpl22::left_ankle, smpl22::left_foot, smpl22::right_ankle, smpl22::right_foot})
+            m.at(f, j).y() = 0.0;
     return m;
 }
 

@@ -30,18 +30,21 @@ std::string misleading_dataset(const std::string& name) {
     clips.header = {"id", "activity_tags", "split"};
     for (int k = 0; k < 6; ++k) {
         const bool walking = k < 3;
-        std::ofstream(dir + "/texts/c" + std::to_string(k) + ".txt") << (walking ? "a person runs fast" : "a person walks") << "##0.0#0.0\n";
+        std::ofstream(dir + "/texts/c" + std::to_string(k) + ".txt")
+            << (walking ? "a person runs fast" : "a person walks") << "##0.0#0.0\n";
         clips.rows.push_back({"c" + std::to_string(k), walking ? "walking" : "running", "train"});
     }
     write_csv(dir + "/clips.csv", clips);
     const std::vector<std::string> words = {"a", "person", "walks", "runs", "fast", "jogs", "claps"};
     std::vector<float> v(words.size() * 100);
-    for (size_t i = 0; i < v.size(); ++i) v[i] = static_cast<float>(std::cos(0.37 * static_cast<double>(i)) + (i % 100 == i / 100 ? 3 : 0));
+    for (size_t i = 0; i < v.size(); ++i)
+        v[i] = static_cast<float>(std::cos(0.37 * static_cast<double>(i)) + (i % 100 == i / 100 ? 3 : 0));
     WordVectors(words, v).save(dir + "/vocab.safetensors");
     return dir;
 }
 
-std::set<std::string> clips_drawn(MotionSource& s, const std::string& prompt, const std::string& label, std::string* tier = nullptr) {
+std::set<std::string> clips_drawn(MotionSource& s, const std::string& prompt, const std::string& label,
+                                  std::string* tier = nullptr) {
     std::set<std::string> out;
     for (uint64_t seed = 0; seed < 40; ++seed) {
         s.generate({prompt}, {label}, {seed}, 40);
@@ -58,7 +61,7 @@ TEST(MotionSource, RetrievalTakesTheAskedActivityFromTheLabelOrTheWordsNotTheCap
     std::string tier;
     EXPECT_EQ(clips_drawn(*source, "a person runs fast", "jogging", &tier), running);  // SisFall's label
     EXPECT_EQ(tier, "tags");
-    EXPECT_EQ(clips_drawn(*source, "a person jogs", ""), running);                 // no label: the words
+    EXPECT_EQ(clips_drawn(*source, "a person jogs", ""), running);  // no label: the words
     EXPECT_EQ(clips_drawn(*source, "a person runs fast", "walking"), walking);
     source->generate({"a person walks"}, {"running"}, {3}, 40);
     EXPECT_TRUE(source->draw_record(0)["tags_show_activity"].get<bool>());
@@ -81,7 +84,8 @@ TEST(MotionSource, RetrievalDrawsFromEveryClipTiedWithTheKth) {
     }
     write_csv(data + "/clips.csv", clips);
     auto source = open_motion_source("retrieval:" + data, SampleOptions{}, "cpu", data + "/vocab.safetensors");
-    EXPECT_EQ(clips_drawn(*source, "a person walks", "walking"), (std::set<std::string>{"c0", "c1", "c2", "c3", "c4", "c5"}));
+    EXPECT_EQ(clips_drawn(*source, "a person walks", "walking"),
+              (std::set<std::string>{"c0", "c1", "c2", "c3", "c4", "c5"}));
 }
 
 TEST(MotionSource, RetrievalRanksClipsNamingThePromptsAttributesFirst) {
@@ -92,7 +96,8 @@ TEST(MotionSource, RetrievalRanksClipsNamingThePromptsAttributesFirst) {
     CsvTable clips;
     clips.header = {"id", "activity_tags", "split"};
     for (int k = 0; k < 6; ++k) {
-        std::ofstream(data + "/texts/c" + std::to_string(k) + ".txt") << (k == 5 ? "a person jogs slowly" : "a person walks") << "##0.0#0.0\n";
+        std::ofstream(data + "/texts/c" + std::to_string(k) + ".txt")
+            << (k == 5 ? "a person jogs slowly" : "a person walks") << "##0.0#0.0\n";
         clips.rows.push_back({"c" + std::to_string(k), "walking", "train"});
     }
     write_csv(data + "/clips.csv", clips);
@@ -140,7 +145,8 @@ TEST(MotionSource, RetrievalGivesTheSameSpanAtTheCaptureRate) {
     auto source = open_motion_source("retrieval:" + data, SampleOptions{}, "cpu", data + "/vocab.safetensors");
     int with_copy = 0, without = 0;
     for (uint64_t seed = 0; seed < 30; ++seed) {
-        const JointSequence draw = source->generate({"a person walks"}, {seed % 2 ? "walking" : "running"}, {seed}, 30)[0];
+        const JointSequence draw =
+            source->generate({"a person walks"}, {seed % 2 ? "walking" : "running"}, {seed}, 30)[0];
         const std::optional<JointSequence> copy = source->capture_rate_motion(0);
         if (source->draw_record(0)["clip"] == "c5") {
             EXPECT_FALSE(copy.has_value());
@@ -188,12 +194,15 @@ TEST(MotionSource, HybridFinishesTheRetrievedClipWithTheModel) {
     torch::set_num_threads(1);
     const std::string data = misleading_dataset("hybrid");
     const std::string model = test::scratch_dir("hybrid_model") + "/model";
-    train_mdm(read_train_config(test::write_tiny_train_config(test::scratch_dir("hybrid_model"), data, model)), false, "", 10);
+    train_mdm(read_train_config(test::write_tiny_train_config(test::scratch_dir("hybrid_model"), data, model)), false,
+              "", 10);
     SampleOptions sampling;
     sampling.sampler = Sampler::dpmpp;
     sampling.steps = 4;
-    auto source = open_motion_source("hybrid:" + model + "," + data + ",0.3", sampling, "cpu", data + "/vocab.safetensors");
-    const std::vector<JointSequence> a = source->generate({"a person jogs", "a person walks"}, {"running", "walking"}, {5, 6}, 40);
+    auto source =
+        open_motion_source("hybrid:" + model + "," + data + ",0.3", sampling, "cpu", data + "/vocab.safetensors");
+    const std::vector<JointSequence> a =
+        source->generate({"a person jogs", "a person walks"}, {"running", "walking"}, {5, 6}, 40);
     ASSERT_EQ(a.size(), 2u);
     EXPECT_EQ(a[0].num_frames, 40);
     EXPECT_TRUE(std::set<std::string>({"c3", "c4", "c5"}).count(source->draw_record(0)["clip"].get<std::string>()));
@@ -205,9 +214,11 @@ TEST(MotionSource, HybridFinishesTheRetrievedClipWithTheModel) {
     EXPECT_EQ(d["sampler"], "dpmpp");
     const std::vector<JointSequence> b = source->generate({"a person jogs"}, {"running"}, {5}, 40);
     double diff = 0;  // the same seed, the same motion (up to the batch's float rounding)
-    for (size_t k = 0; k < a[0].positions.size(); ++k) diff = std::max(diff, (a[0].positions[k] - b[0].positions[k]).cwiseAbs().maxCoeff());
+    for (size_t k = 0; k < a[0].positions.size(); ++k)
+        diff = std::max(diff, (a[0].positions[k] - b[0].positions[k]).cwiseAbs().maxCoeff());
     EXPECT_LT(diff, 1e-4);
-    for (const std::string& bad : {"hybrid:" + model, "hybrid:" + model + "," + data + ",1.5", "hybrid:" + model + "," + data + ",0", "hybrid:" + model + "," + data + ",x"}) {
+    for (const std::string& bad : {"hybrid:" + model, "hybrid:" + model + "," + data + ",1.5",
+                                   "hybrid:" + model + "," + data + ",0", "hybrid:" + model + "," + data + ",x"}) {
         try {
             open_motion_source(bad, sampling, "cpu", data + "/vocab.safetensors");
             ADD_FAILURE() << bad << " was accepted";

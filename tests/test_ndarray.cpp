@@ -9,7 +9,7 @@ using namespace t2imu;
 TEST(NdArray, HalfPrecisionConversions) {
     EXPECT_EQ(half_to_float(0x3c00), 1.0f);
     EXPECT_EQ(half_to_float(0xc000), -2.0f);
-    EXPECT_EQ(half_to_float(0x7bff), 65504.0f);            // largest finite half
+    EXPECT_EQ(half_to_float(0x7bff), 65504.0f);               // largest finite half
     EXPECT_EQ(half_to_float(0x0001), std::ldexp(1.0f, -24));  // smallest subnormal
     EXPECT_TRUE(std::isinf(half_to_float(0x7c00)));
     EXPECT_TRUE(std::isnan(half_to_float(0x7e00)));

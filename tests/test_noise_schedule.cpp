@@ -36,7 +36,8 @@ TEST_P(CosineSchedule, MatchesTheOfficialArrays) {
         const std::vector<double> expected = read_npy(test::shared_path(dir + "/" + name + ".npy")).to<double>();
         ASSERT_EQ(ours->size(), expected.size()) << name;
         for (size_t i = 0; i < expected.size(); ++i)
-            EXPECT_NEAR((*ours)[i], expected[i], 1e-12 * std::max(1.0, std::fabs(expected[i]))) << name << "[" << i << "]";
+            EXPECT_NEAR((*ours)[i], expected[i], 1e-12 * std::max(1.0, std::fabs(expected[i])))
+                << name << "[" << i << "]";
     }
 }
 

@@ -12,7 +12,8 @@ TEST(Normalization, ReproducesMdmInputWithHumanML3DStats) {
     const std::string root = test::shared_path("reference/humanml3d/repo_files/HumanML3D");
     const FeatureStats stats = read_feature_stats(root + "/Mean.npy", root + "/Std.npy");
     const FeatureMatrix x = feature_matrix_from_array(read_npy(features), features);
-    const std::string norm_path = test::shared_path("reference/humanml3d/generated/seq_synth_walk/features_263_normalized.npy");
+    const std::string norm_path =
+        test::shared_path("reference/humanml3d/generated/seq_synth_walk/features_263_normalized.npy");
     const FeatureMatrix expected = feature_matrix_from_array(read_npy(norm_path), norm_path);
     const FeatureMatrix ours = normalize_features(x, stats);
     EXPECT_LT((ours - expected).cwiseAbs().maxCoeff(), 1e-4);  // float32 reference; values reach ~100

@@ -37,7 +37,8 @@ std::vector<uint8_t> floats(std::initializer_list<float> v) {
 
 TEST(Npy, ReadsHandBuiltVersions1To3) {
     for (int major : {1, 2, 3}) {
-        const auto bytes = npy_bytes("{'descr': '<f4', 'fortran_order': False, 'shape': (2, 3), }", floats({1, 2, 3, 4, 5, 6}), major);
+        const auto bytes =
+            npy_bytes("{'descr': '<f4', 'fortran_order': False, 'shape': (2, 3), }", floats({1, 2, 3, 4, 5, 6}), major);
         const NdArray a = parse_npy(bytes.data(), bytes.size(), "v.npy");
         EXPECT_EQ(a.dtype, DType::f32);
         EXPECT_EQ(a.shape, (std::vector<int64_t>{2, 3}));
@@ -47,14 +48,16 @@ TEST(Npy, ReadsHandBuiltVersions1To3) {
 
 TEST(Npy, FortranOrderIsReadIntoCOrder) {
     // np.asfortranarray([[1, 2, 3], [4, 5, 6]]) stores the columns one after the other: 1 4 2 5 3 6.
-    const auto bytes = npy_bytes("{'descr': '<f4', 'fortran_order': True, 'shape': (2, 3), }", floats({1, 4, 2, 5, 3, 6}));
+    const auto bytes =
+        npy_bytes("{'descr': '<f4', 'fortran_order': True, 'shape': (2, 3), }", floats({1, 4, 2, 5, 3, 6}));
     const NdArray a = parse_npy(bytes.data(), bytes.size(), "f.npy");
     EXPECT_EQ(a.shape, (std::vector<int64_t>{2, 3}));
     EXPECT_EQ(a.to<float>(), (std::vector<float>{1, 2, 3, 4, 5, 6}));
 }
 
 TEST(Npy, ZeroDimensionalAndEmptyArrays) {
-    const auto scalar = npy_bytes("{'descr': '<f8', 'fortran_order': False, 'shape': (), }", std::vector<uint8_t>(8, 0));
+    const auto scalar =
+        npy_bytes("{'descr': '<f8', 'fortran_order': False, 'shape': (), }", std::vector<uint8_t>(8, 0));
     EXPECT_EQ(parse_npy(scalar.data(), scalar.size(), "s.npy").size(), 1);
     const auto empty = npy_bytes("{'descr': '<i8', 'fortran_order': False, 'shape': (0, 5), }", {});
     EXPECT_EQ(parse_npy(empty.data(), empty.size(), "e.npy").size(), 0);
@@ -73,11 +76,10 @@ TEST(Npy, WriterLayoutMatchesNumPy) {
 
 TEST(Npy, RoundTripsEveryDtype) {
     const std::string dir = test::scratch_dir("npy_roundtrip");
-    std::vector<NdArray> arrays = {NdArray::from(std::vector<double>{1.5, -2.25}, {2}),
-                                   NdArray::from(std::vector<int32_t>{-7, 8, 9}, {3, 1}),
-                                   NdArray::from(std::vector<int64_t>{1ll << 40}, {1}),
-                                   NdArray::from(std::vector<uint8_t>{0, 255}, {2}),
-                                   NdArray::from(std::vector<bool>{true, false, true}, {3})};
+    std::vector<NdArray> arrays = {
+        NdArray::from(std::vector<double>{1.5, -2.25}, {2}), NdArray::from(std::vector<int32_t>{-7, 8, 9}, {3, 1}),
+        NdArray::from(std::vector<int64_t>{1ll << 40}, {1}), NdArray::from(std::vector<uint8_t>{0, 255}, {2}),
+        NdArray::from(std::vector<bool>{true, false, true}, {3})};
     NdArray half;
     half.dtype = DType::f16;
     half.shape = {2};
@@ -106,7 +108,11 @@ TEST(Npy, ReadsNumPyWrittenFiles) {
 
 TEST(Npy, RefusesMalformedInputNamingTheField) {
     const std::vector<uint8_t> six = floats({1, 2, 3, 4, 5, 6});
-    struct Case { std::string dict; std::vector<uint8_t> data; const char* field; };
+    struct Case {
+        std::string dict;
+        std::vector<uint8_t> data;
+        const char* field;
+    };
     const Case cases[] = {
         {"{'descr': '>f4', 'fortran_order': False, 'shape': (2, 3), }", six, "descr"},
         {"{'descr': '|O', 'fortran_order': False, 'shape': (2, 3), }", six, "descr"},
@@ -154,7 +160,9 @@ TEST(Npy, RefusesMalformedInputNamingTheField) {
         parse_npy(trailing.data(), trailing.size(), "long.npy");
         ADD_FAILURE() << "trailing bytes accepted";
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("long.npy: data: expected 24 bytes of data for shape (2, 3) (got 28 bytes (4 trailing))"), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find(
+                      "long.npy: data: expected 24 bytes of data for shape (2, 3) (got 28 bytes (4 trailing))"),
+                  std::string::npos)
             << e.what();
     }
     // A negative dimension: the message quotes the header from the offending character.
@@ -163,19 +171,27 @@ TEST(Npy, RefusesMalformedInputNamingTheField) {
         parse_npy(negative.data(), negative.size(), "neg.npy");
         ADD_FAILURE() << "a negative dimension accepted";
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("expected a non-negative integer (got '-1, 3), }"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("expected a non-negative integer (got '-1, 3), }"), std::string::npos)
+            << e.what();
     }
     // A dimension past 64 bits is quoted from its first digit (it once showed only the digits after the overflow).
     const auto huge = npy_bytes("{'descr': '<f4', 'fortran_order': False, 'shape': (98765432109876543210, 3), }", six);
     const std::string m = test::error_message([&] { parse_npy(huge.data(), huge.size(), "huge.npy"); });
-    EXPECT_TRUE(test::contains(m, "expected a dimension that fits in 64 bits (got '98765432109876543210, 3), }' at header offset 51)")) << m;
+    EXPECT_TRUE(test::contains(
+        m, "expected a dimension that fits in 64 bits (got '98765432109876543210, 3), }' at header offset 51)"))
+        << m;
     std::vector<uint8_t> long_header = good;
     long_header[9] = 0x7f;  // header length 32 KB in a 152-byte file
     EXPECT_THROW(parse_npy(long_header.data(), long_header.size(), "long.npy"), Error);
 }
 
 TEST(Npy, ReadsEveryListedDescr) {
-    struct Case { const char* descr; DType dtype; std::vector<uint8_t> data; double first; };
+    struct Case {
+        const char* descr;
+        DType dtype;
+        std::vector<uint8_t> data;
+        double first;
+    };
     const Case cases[] = {
         {"<f2", DType::f16, {0x00, 0xbc}, -1.0},
         {"<f4", DType::f32, {0x00, 0x00, 0x20, 0x40}, 2.5},
@@ -186,7 +202,8 @@ TEST(Npy, ReadsEveryListedDescr) {
         {"|b1", DType::boolean, {1}, 1.0},
     };
     for (const Case& c : cases) {
-        const auto bytes = npy_bytes(std::string("{'descr': '") + c.descr + "', 'fortran_order': False, 'shape': (1,), }", c.data);
+        const auto bytes =
+            npy_bytes(std::string("{'descr': '") + c.descr + "', 'fortran_order': False, 'shape': (1,), }", c.data);
         const NdArray a = parse_npy(bytes.data(), bytes.size(), "d.npy");
         EXPECT_EQ(a.dtype, c.dtype) << c.descr;
         EXPECT_EQ(a.to<double>(), std::vector<double>{c.first}) << c.descr;
@@ -196,7 +213,8 @@ TEST(Npy, ReadsEveryListedDescr) {
 
 TEST(Npy, Version3HeaderIsUtf8AndDoubleQuotesAreAccepted) {
     // Version 3.0 exists for UTF-8 headers; the dict is otherwise the same Python literal.
-    const auto bytes = npy_bytes("{\"descr\": \"<f4\", \"fortran_order\": False, \"shape\": (1,)}  \u00e9", floats({7}), 3);
+    const auto bytes =
+        npy_bytes("{\"descr\": \"<f4\", \"fortran_order\": False, \"shape\": (1,)}  \u00e9", floats({7}), 3);
     EXPECT_THROW(parse_npy(bytes.data(), bytes.size(), "junk3.npy"), Error);  // text after the dict
     const auto ok = npy_bytes("{\"descr\": \"<f4\", \"fortran_order\": False, \"shape\": (1,)}", floats({7}), 3);
     EXPECT_EQ(parse_npy(ok.data(), ok.size(), "v3.npy").to<float>(), std::vector<float>{7});

@@ -32,21 +32,46 @@ std::vector<uint8_t> stored_zip(const std::vector<std::pair<std::string, std::ve
     for (const auto& [name, data] : members) {
         const size_t offset = out.size();
         const uint32_t crc = crc32_of(data);
-        put(out, 0x04034b50, 4); put(out, 20, 2); put(out, 0, 2); put(out, 0, 2);  // signature, version, flags, stored
-        put(out, 0, 4); put(out, crc, 4); put(out, data.size(), 4); put(out, data.size(), 4);  // time+date, crc, sizes
-        put(out, name.size(), 2); put(out, 0, 2);
+        put(out, 0x04034b50, 4);
+        put(out, 20, 2);
+        put(out, 0, 2);
+        put(out, 0, 2);  // signature, version, flags, stored
+        put(out, 0, 4);
+        put(out, crc, 4);
+        put(out, data.size(), 4);
+        put(out, data.size(), 4);  // time+date, crc, sizes
+        put(out, name.size(), 2);
+        put(out, 0, 2);
         out.insert(out.end(), name.begin(), name.end());
         out.insert(out.end(), data.begin(), data.end());
-        put(central, 0x02014b50, 4); put(central, 20, 2); put(central, 20, 2); put(central, 0, 2); put(central, 0, 2);
-        put(central, 0, 4); put(central, crc, 4); put(central, data.size(), 4); put(central, data.size(), 4);
-        put(central, name.size(), 2); put(central, 0, 2); put(central, 0, 2); put(central, 0, 2); put(central, 0, 2);
-        put(central, 0, 4); put(central, offset, 4);
+        put(central, 0x02014b50, 4);
+        put(central, 20, 2);
+        put(central, 20, 2);
+        put(central, 0, 2);
+        put(central, 0, 2);
+        put(central, 0, 4);
+        put(central, crc, 4);
+        put(central, data.size(), 4);
+        put(central, data.size(), 4);
+        put(central, name.size(), 2);
+        put(central, 0, 2);
+        put(central, 0, 2);
+        put(central, 0, 2);
+        put(central, 0, 2);
+        put(central, 0, 4);
+        put(central, offset, 4);
         central.insert(central.end(), name.begin(), name.end());
     }
     const size_t cd_offset = out.size();
     out.insert(out.end(), central.begin(), central.end());
-    put(out, 0x06054b50, 4); put(out, 0, 2); put(out, 0, 2); put(out, members.size(), 2); put(out, members.size(), 2);
-    put(out, central.size(), 4); put(out, cd_offset, 4); put(out, 0, 2);
+    put(out, 0x06054b50, 4);
+    put(out, 0, 2);
+    put(out, 0, 2);
+    put(out, members.size(), 2);
+    put(out, members.size(), 2);
+    put(out, central.size(), 4);
+    put(out, cd_offset, 4);
+    put(out, 0, 2);
     return out;
 }
 

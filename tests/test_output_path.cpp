@@ -9,8 +9,8 @@
 #include <unistd.h>
 
 #include <filesystem>
-#include <functional>
 #include <fstream>
+#include <functional>
 #include <iterator>
 
 #include "core/error.hpp"
@@ -27,7 +27,8 @@ std::string tree_listing(const std::string& root) {
     std::string listing;
     for (auto it = fs::recursive_directory_iterator(root); it != fs::recursive_directory_iterator(); ++it) {
         listing += it->path().string();
-        if (it->is_symlink()) listing += " -> " + fs::read_symlink(it->path()).string();
+        if (it->is_symlink())
+            listing += " -> " + fs::read_symlink(it->path()).string();
         else if (it->is_regular_file()) {
             std::ifstream in(it->path(), std::ios::binary);
             listing += " = " + std::string(std::istreambuf_iterator<char>(in), {});
@@ -52,15 +53,18 @@ TEST(OutputPath, MissingFoldersAreProvenAndLeftUnmade) {
     EXPECT_NO_THROW(check_output(dir + "/a/b/c/out.csv", "--out", OutputKind::file));
     EXPECT_FALSE(fs::exists(dir + "/a"));  // nothing left behind
     EXPECT_NO_THROW(check_output(dir + "/existing.csv", "--out", OutputKind::file));
-    EXPECT_NO_THROW(check_output(dir + "/run/", "--out", OutputKind::folder));  // a folder to be made, with a trailing slash
+    EXPECT_NO_THROW(
+        check_output(dir + "/run/", "--out", OutputKind::folder));  // a folder to be made, with a trailing slash
     EXPECT_FALSE(fs::exists(dir + "/run"));
 }
 
 TEST(OutputPath, AFileInTheWayAndAnEmptyPathAreRefused) {
     const std::string dir = test::scratch_dir("output_path_file");
     std::ofstream(dir + "/file.txt") << "x";
-    std::string m = test::error_message([&] { check_output(dir + "/file.txt/sub/out.csv", "--report", OutputKind::file); });
-    EXPECT_TRUE(test::contains(m, "--report") && test::contains(m, dir + "/file.txt") && test::contains(m, "is a file")) << m;
+    std::string m =
+        test::error_message([&] { check_output(dir + "/file.txt/sub/out.csv", "--report", OutputKind::file); });
+    EXPECT_TRUE(test::contains(m, "--report") && test::contains(m, dir + "/file.txt") && test::contains(m, "is a file"))
+        << m;
     m = test::error_message([&] { check_output("", "--out", OutputKind::file); });
     EXPECT_TRUE(test::contains(m, "--out") && test::contains(m, "an output path")) << m;
     m = test::error_message([&] { make_directories(dir + "/file.txt/sub", "output folder"); });
@@ -135,8 +139,10 @@ TEST(OutputPath, NeverReplacesAUsersFileOrFolder) {
     std::ofstream(file) << "mine\n";
     fs::create_directories(folder);
     std::ofstream(folder + "/a.txt") << "mine\n";
-    EXPECT_TRUE(test::contains(test::error_message([&] { check_output(file, "--out", OutputKind::folder); }), "--out: " + file));
-    EXPECT_TRUE(test::contains(test::error_message([&] { check_output(folder, "--out", OutputKind::folder); }), "did not make"));
+    EXPECT_TRUE(test::contains(test::error_message([&] { check_output(file, "--out", OutputKind::folder); }),
+                               "--out: " + file));
+    EXPECT_TRUE(test::contains(test::error_message([&] { check_output(folder, "--out", OutputKind::folder); }),
+                               "did not make"));
     std::ofstream(folder + "/" + kOutputMarker) << "\n";
     EXPECT_NO_THROW(check_output(folder, "--out", OutputKind::folder));  // a folder t2imu made: written into again
     fs::remove(folder + "/" + kOutputMarker);
@@ -159,10 +165,13 @@ TEST(OutputPath, PathsFromInputsStayInsideTheirFolder) {
     EXPECT_EQ(confined_path(dir, "a/b.csv", "path"), dir + "/a/b.csv");
     EXPECT_EQ(confined_path(dir, "a/../b.csv", "path"), dir + "/b.csv");
     for (const char* bad : {"../x.csv", "a/../../x.csv", "/etc/passwd", "", "."})
-        EXPECT_TRUE(test::contains(test::error_message([&] { confined_path(dir, bad, "manifest.csv row 2"); }), "manifest.csv row 2")) << bad;
+        EXPECT_TRUE(test::contains(test::error_message([&] { confined_path(dir, bad, "manifest.csv row 2"); }),
+                                   "manifest.csv row 2"))
+            << bad;
     fs::create_directories(dir + "/real");
     fs::create_symlink("/tmp", dir + "/link");
-    EXPECT_TRUE(test::contains(test::error_message([&] { confined_path(dir, "link/x.csv", "path"); }), "symbolic link"));
+    EXPECT_TRUE(
+        test::contains(test::error_message([&] { confined_path(dir, "link/x.csv", "path"); }), "symbolic link"));
 }
 
 TEST(OutputPath, ASymbolicLinkAsOutIsRefusedWhereverItPoints) {
@@ -176,7 +185,8 @@ TEST(OutputPath, ASymbolicLinkAsOutIsRefusedWhereverItPoints) {
         expect_refused([&] { check_output(dir + "/link/", "--out", kind); }, dir, "symbolic link");
         expect_refused([&] { check_output(dir + "/dangling", "--out", kind); }, dir, "symbolic link");
     }
-    EXPECT_NO_THROW(check_output(dir + "/link/inner", "--out", OutputKind::folder));  // a link above the output is the system's business
+    EXPECT_NO_THROW(check_output(dir + "/link/inner", "--out",
+                                 OutputKind::folder));  // a link above the output is the system's business
 }
 
 TEST(OutputPath, LinkDotDotIsResolvedAsTheSystemResolvesIt) {
@@ -220,7 +230,8 @@ TEST(OutputPath, AFolderWhereAFileGoesAndAForeignFolderAreRefused) {
     expect_refused([&] { check_output("/dev/null", "--out", OutputKind::file); }, dir, "special file");
     EXPECT_NO_THROW(check_output(dir + "/empty", "--out", OutputKind::folder));
     EXPECT_NO_THROW(check_output(dir + "/made", "--out", OutputKind::folder));
-    EXPECT_NO_THROW(check_output(dir + "/users/manifest.csv", "--out", OutputKind::file));  // a file is replaced by a file
+    EXPECT_NO_THROW(
+        check_output(dir + "/users/manifest.csv", "--out", OutputKind::file));  // a file is replaced by a file
 }
 
 TEST(OutputPath, AnInputAsOutputIsRefused) {
@@ -230,12 +241,18 @@ TEST(OutputPath, AnInputAsOutputIsRefused) {
     std::ofstream(dir + "/set/manifest.csv") << "m\n";
     std::ofstream(dir + "/series.txt") << "1 2 3\n";
     fs::create_symlink(dir + "/series.txt", dir + "/series-link.txt");
-    expect_refused([&] { check_output(dir + "/series.txt", "--out", OutputKind::file, {dir + "/series.txt"}); }, dir, "it is the input");
-    expect_refused([&] { check_output(dir + "/./series.txt", "--out", OutputKind::file, {dir + "/series-link.txt"}); }, dir, "it is the input");
-    expect_refused([&] { check_output(dir + "/set", "--out", OutputKind::folder, {dir + "/set"}); }, dir, "it is the input");
-    expect_refused([&] { check_output(dir + "/set/", "--out", OutputKind::folder, {dir + "/set/manifest.csv"}); }, dir, "it holds the input");
-    EXPECT_NO_THROW(check_output(dir + "/set/report", "--out", OutputKind::folder, {dir + "/set"}));  // below an input is fine
-    EXPECT_NO_THROW(check_output(dir + "/out.csv", "--out", OutputKind::file, {"", dir + "/series.txt"}));  // "": an option not given
+    expect_refused([&] { check_output(dir + "/series.txt", "--out", OutputKind::file, {dir + "/series.txt"}); }, dir,
+                   "it is the input");
+    expect_refused([&] { check_output(dir + "/./series.txt", "--out", OutputKind::file, {dir + "/series-link.txt"}); },
+                   dir, "it is the input");
+    expect_refused([&] { check_output(dir + "/set", "--out", OutputKind::folder, {dir + "/set"}); }, dir,
+                   "it is the input");
+    expect_refused([&] { check_output(dir + "/set/", "--out", OutputKind::folder, {dir + "/set/manifest.csv"}); }, dir,
+                   "it holds the input");
+    EXPECT_NO_THROW(
+        check_output(dir + "/set/report", "--out", OutputKind::folder, {dir + "/set"}));  // below an input is fine
+    EXPECT_NO_THROW(check_output(dir + "/out.csv", "--out", OutputKind::file,
+                                 {"", dir + "/series.txt"}));  // "": an option not given
 }
 
 TEST(OutputPath, APlaceThatRefusesNewEntriesFailsTheCheck) {

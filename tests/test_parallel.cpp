@@ -16,7 +16,8 @@ TEST(ParallelFor, RunsEveryIndexExactlyOnce) {
     for (int threads : {0, 1, 3, 64}) {
         std::vector<std::atomic<int>> hits(1000);
         parallel_for(hits.size(), threads, [&](size_t i) { ++hits[i]; });
-        for (size_t i = 0; i < hits.size(); ++i) ASSERT_EQ(hits[i].load(), 1) << "index " << i << ", " << threads << " threads";
+        for (size_t i = 0; i < hits.size(); ++i)
+            ASSERT_EQ(hits[i].load(), 1) << "index " << i << ", " << threads << " threads";
     }
     parallel_for(0, 4, [](size_t) { FAIL() << "no index to run"; });
 }

@@ -27,14 +27,17 @@ TEST(Parse, IntegersAreDecimalDigitsWithinLongLong) {
     EXPECT_EQ(parse_integer("42"), 42);
     EXPECT_EQ(parse_integer("-7"), -7);
     EXPECT_EQ(parse_integer("9223372036854775807"), 9223372036854775807LL);
-    for (const char* bad : {"", "+1", " 1", "1.0", "1e3", "0x10", "9223372036854775808", "12a"}) EXPECT_FALSE(parse_integer(bad)) << bad;
+    for (const char* bad : {"", "+1", " 1", "1.0", "1e3", "0x10", "9223372036854775808", "12a"})
+        EXPECT_FALSE(parse_integer(bad)) << bad;
 }
 
 TEST(Parse, ThrowingFormsNameTheSourceAndField) {
     EXPECT_EQ(finite_number("0.25", "f.csv", "line 3"), 0.25);
-    EXPECT_EQ(test::error_message([] { finite_number("nan", "f.csv", "line 3"); }), "f.csv: line 3: expected a number (got 'nan')");
+    EXPECT_EQ(test::error_message([] { finite_number("nan", "f.csv", "line 3"); }),
+              "f.csv: line 3: expected a number (got 'nan')");
     EXPECT_EQ(integer_in("17", 0, 99, "env", "RANK"), 17);
-    EXPECT_EQ(test::error_message([] { integer_in("100", 0, 99, "env", "RANK"); }), "env: RANK: expected a whole number from 0 to 99 (got '100')");
+    EXPECT_EQ(test::error_message([] { integer_in("100", 0, 99, "env", "RANK"); }),
+              "env: RANK: expected a whole number from 0 to 99 (got '100')");
 }
 
 TEST(Parse, ListsDropEmptyItemsAndSuffixesAreChecked) {
@@ -53,7 +56,8 @@ TEST(Parse, NamedOverridesSplitOnceForEveryPresetOption) {
     EXPECT_EQ(o.overrides[1], (std::pair<std::string, std::string>{"acc_range_g", "8"}));
     EXPECT_EQ(parse_named_overrides("none", "--noise").overrides.size(), 0u);
     EXPECT_EQ(parse_named_overrides("8,seed=", "--body").overrides[0].second, "");  // the value's parser refuses it
-    EXPECT_EQ(test::error_message([] { parse_named_overrides("smartphone,bits", "--noise"); }), "--noise: bits: expected key=value");
+    EXPECT_EQ(test::error_message([] { parse_named_overrides("smartphone,bits", "--noise"); }),
+              "--noise: bits: expected key=value");
     EXPECT_THROW(parse_named_overrides("smartphone,,bits=3", "--noise"), Error);
 }
 
@@ -62,7 +66,8 @@ TEST(Parse, ShardsAreTwoWholeNumbersWithOneToN) {
     EXPECT_EQ(parse_shard("1/1", "--shard", "shard"), (std::pair<int, int>{1, 1}));
     for (const char* bad : {"0/3", "4/3", "1/0", "1/", "/3", "1/3x", "1 /3", "1/3/4", "+1/3", "1.0/3", "", "3"})
         EXPECT_THROW(parse_shard(bad, "--shard", "shard"), Error) << bad;
-    EXPECT_EQ(test::error_message([] { parse_shard("4/3", "--shard", "shard"); }), "--shard: shard: expected I/N with 1 <= I <= N (got 4/3)");
+    EXPECT_EQ(test::error_message([] { parse_shard("4/3", "--shard", "shard"); }),
+              "--shard: shard: expected I/N with 1 <= I <= N (got 4/3)");
 }
 
 // Numbers from text are read in core/parse alone (the strict forms above): no other file of src/ converts text with
@@ -75,7 +80,8 @@ TEST(Parse, NoSourceOutsideCoreReadsNumbersOnItsOwn) {
         if (!e.is_regular_file() || path.find("/src/core/") != std::string::npos) continue;
         std::ifstream in(e.path());
         std::string line;
-        for (int n = 1; std::getline(in, line); ++n) EXPECT_FALSE(std::regex_search(line, stray)) << path << ":" << n << ": " << line;
+        for (int n = 1; std::getline(in, line); ++n)
+            EXPECT_FALSE(std::regex_search(line, stray)) << path << ":" << n << ": " << line;
         ++files;
     }
     EXPECT_GT(files, 100);

@@ -20,7 +20,8 @@ TEST(Placement, BuiltinSetsHaveTheDatasetsPositions) {
         for (const SensorPlacement& p : builtin_placement_set(set).sensors) out.push_back(p.position);
         return out;
     };
-    EXPECT_EQ(names("realworld"), (std::vector<std::string>{"chest", "left_forearm", "head", "left_shin", "left_thigh", "left_upperarm", "waist"}));
+    EXPECT_EQ(names("realworld"), (std::vector<std::string>{"chest", "left_forearm", "head", "left_shin", "left_thigh",
+                                                            "left_upperarm", "waist"}));
     EXPECT_EQ(names("sisfall"), (std::vector<std::string>{"waist"}));
     EXPECT_EQ(names("umafall"), (std::vector<std::string>{"ankle", "waist", "chest", "wrist"}));
     EXPECT_EQ(names("hugadb").size(), 6u);
@@ -33,7 +34,8 @@ TEST(Placement, MountedAxesAreRightHandedAndFollowTheWords) {
     for (const std::string& set : builtin_placement_set_names())
         for (const SensorPlacement& p : builtin_placement_set(set).sensors) {
             const SensorMount m = mount_sensor(body, p);
-            EXPECT_LT((m.rest_from_sensor.transpose() * m.rest_from_sensor - Matrix3d::Identity()).norm(), 1e-12) << p.position;
+            EXPECT_LT((m.rest_from_sensor.transpose() * m.rest_from_sensor - Matrix3d::Identity()).norm(), 1e-12)
+                << p.position;
             EXPECT_NEAR(m.rest_from_sensor.determinant(), 1.0, 1e-12) << p.position;
         }
     // HuGaDB left thigh: x down the leg, z out of the front of the thigh, so y = z x x points to the left.
@@ -49,8 +51,9 @@ TEST(Placement, MountedAxesAreRightHandedAndFollowTheWords) {
 TEST(Placement, ReadsACustomTomlSet) {
     const std::string dir = test::scratch_dir("placement_toml");
     const std::string path = dir + "/mine.toml";
-    std::ofstream(path) << "name = \"mine\"\n[[sensor]]\nposition = \"right_wrist\"\nsegment = \"right_elbow\"\nalong = 0.9\n"
-                           "around = -90\nx = \"distal\"\nz = \"out\"\nnote = \"watch\"\n";
+    std::ofstream(path)
+        << "name = \"mine\"\n[[sensor]]\nposition = \"right_wrist\"\nsegment = \"right_elbow\"\nalong = 0.9\n"
+           "around = -90\nx = \"distal\"\nz = \"out\"\nnote = \"watch\"\n";
     const PlacementSet set = read_placement_toml(path);
     ASSERT_EQ(set.sensors.size(), 1u);
     EXPECT_EQ(set.name, "mine");
@@ -63,20 +66,22 @@ TEST(Placement, ReadsACustomTomlSet) {
         std::ofstream(path) << body_text;
         EXPECT_THROW(read_placement_toml(path), Error) << body_text;
     };
-    bad("[[sensor]]\nposition = \"a\"\nsegment = \"elbow\"\nx = \"up\"\ny = \"out\"\n");      // not a joint name
-    bad("[[sensor]]\nposition = \"a\"\nsegment = \"neck\"\nx = \"up\"\n");                    // one axis
-    bad("[[sensor]]\nposition = \"a\"\nsegment = \"neck\"\nx = \"sky\"\ny = \"out\"\n");      // unknown word
-    bad("name = \"x\"\n");                                                                     // no sensors
-    bad("[[sensor]\n");                                                                        // not TOML
+    bad("[[sensor]]\nposition = \"a\"\nsegment = \"elbow\"\nx = \"up\"\ny = \"out\"\n");  // not a joint name
+    bad("[[sensor]]\nposition = \"a\"\nsegment = \"neck\"\nx = \"up\"\n");                // one axis
+    bad("[[sensor]]\nposition = \"a\"\nsegment = \"neck\"\nx = \"sky\"\ny = \"out\"\n");  // unknown word
+    bad("name = \"x\"\n");                                                                // no sensors
+    bad("[[sensor]\n");                                                                   // not TOML
     // A float where an integer belongs is refused, not converted: 4.9e47 into an integer is undefined
     // behaviour (UBSan, fuzz/fuzz_sensor_toml).
     try {
-        parse_placement_toml("[[sensor]]\nposition = \"a\"\nsegment = \"neck\"\nvertex = 4.9e47\nx = \"up\"\ny = \"out\"\n", "v.toml");
+        parse_placement_toml(
+            "[[sensor]]\nposition = \"a\"\nsegment = \"neck\"\nvertex = 4.9e47\nx = \"up\"\ny = \"out\"\n", "v.toml");
         ADD_FAILURE() << "a float vertex was accepted";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("vertex: expected an integer"), std::string::npos) << e.what();
     }
     bad("[[sensor]]\nposition = \"a\"\nsegment = \"neck\"\nx = \"up\"\ny = \"out\"\naroud = -90\n");  // misspelt key
-    bad("[[sensor]]\nposition = \"a\"\nsegment = \"neck\"\nx = \"up\"\ny = \"out\"\nalong = \"far\"\n");  // not a number
-    bad("[[sensor]]\nsegment = \"neck\"\nx = \"up\"\ny = \"out\"\n");                      // no position
+    bad("[[sensor]]\nposition = \"a\"\nsegment = \"neck\"\nx = \"up\"\ny = \"out\"\nalong = \"far\"\n");  // not a
+                                                                                                          // number
+    bad("[[sensor]]\nsegment = \"neck\"\nx = \"up\"\ny = \"out\"\n");                                     // no position
 }

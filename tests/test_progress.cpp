@@ -18,8 +18,10 @@ struct OutputGuard {  // restores the process-wide setting after a test
 }  // namespace
 
 TEST(Progress, LineShowsCountsRateElapsedAndEta) {
-    EXPECT_EQ(Progress::line("synth", 3, 10, "jobs", 2.0), "synth: 3/10 jobs, 1.5/s, 2 s, ETA 5 s");  // 7 left at 1.5/s: 4.7 s
-    EXPECT_EQ(Progress::line("HAR", 10, 10, "trainings", 300.0), "HAR: 10/10 trainings, 0.0333/s, 5.0 min");  // done: no ETA
+    EXPECT_EQ(Progress::line("synth", 3, 10, "jobs", 2.0),
+              "synth: 3/10 jobs, 1.5/s, 2 s, ETA 5 s");  // 7 left at 1.5/s: 4.7 s
+    EXPECT_EQ(Progress::line("HAR", 10, 10, "trainings", 300.0),
+              "HAR: 10/10 trainings, 0.0333/s, 5.0 min");               // done: no ETA
     EXPECT_EQ(Progress::line("x", 0, 4, "", 0.0), "x: 0/4, 0/s, 0 s");  // no rate yet: no ETA
     EXPECT_EQ(Progress::line("train", 1, 7201, "steps", 1.0), "train: 1/7201 steps, 1/s, 1 s, ETA 2.0 h");
 }

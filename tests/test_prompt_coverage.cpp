@@ -15,15 +15,19 @@ using namespace t2imu;
 namespace {
 
 WordVectors vocabulary() {
-    return test::axis_vocabulary(
-        {{"walks", {1, 0, 0, 0}}, {"left", {0, 1, 0, 0}}, {"slowly", {0, 0, 1, 0}}, {"runs", {0, 0, 0, 1}}, {"irons", {0.5f, 0.5f, 0.5f, 0}}});
+    return test::axis_vocabulary({{"walks", {1, 0, 0, 0}},
+                                  {"left", {0, 1, 0, 0}},
+                                  {"slowly", {0, 0, 1, 0}},
+                                  {"runs", {0, 0, 0, 1}},
+                                  {"irons", {0.5f, 0.5f, 0.5f, 0}}});
 }
 
 }  // namespace
 
 TEST(PromptCoverage, AKnownActivityWithAttributesItsCaptionsNameIsCovered) {
     const WordVectors vocab = vocabulary();
-    const CaptionIndex index(vocab, {{"walking", "walks"}, {"walking", "walks left"}, {"running", "runs slowly"}}, "captions.tsv");
+    const CaptionIndex index(vocab, {{"walking", "walks"}, {"walking", "walks left"}, {"running", "runs slowly"}},
+                             "captions.tsv");
     const PromptCoverage c = prompt_coverage(index, "walking", "walks left");
     EXPECT_TRUE(c.activity_known);
     EXPECT_TRUE(c.covered());
@@ -35,7 +39,8 @@ TEST(PromptCoverage, AKnownActivityWithAttributesItsCaptionsNameIsCovered) {
 
 TEST(PromptCoverage, AnAttributeOnlyAnotherActivitysCaptionsNameIsUncovered) {
     const WordVectors vocab = vocabulary();
-    const CaptionIndex index(vocab, {{"walking", "walks"}, {"walking", "walks left"}, {"running", "runs slowly"}}, "captions.tsv");
+    const CaptionIndex index(vocab, {{"walking", "walks"}, {"walking", "walks left"}, {"running", "runs slowly"}},
+                             "captions.tsv");
     const PromptCoverage c = prompt_coverage(index, "walking", "walks slowly");
     EXPECT_TRUE(c.activity_known);
     EXPECT_FALSE(c.covered());
@@ -69,15 +74,19 @@ TEST(PromptCoverage, CheckingASetWarnsOrWithRequireRefusesTheFirstUncoveredPromp
         check_prompts_covered(index, prompts, "p.tsv", true);
         ADD_FAILURE() << "an uncovered prompt passed with require";
     } catch (const Error& e) {
-        EXPECT_EQ(std::string(e.what()), "p.tsv: prompt 2: --require-coverage: expected a prompt the model's training captions cover (got the training captions of 'walking' never name: pace_slow)");
+        EXPECT_EQ(std::string(e.what()),
+                  "p.tsv: prompt 2: --require-coverage: expected a prompt the model's training captions cover (got the "
+                  "training captions of 'walking' never name: pace_slow)");
     }
 }
 
 TEST(PromptCoverage, DocsCoverageIsWhatTheShippedModelsCaptionsCover) {
     // docs/coverage.md is made by `t2imu text coverage --model models/default`: it must follow the model's captions.
     const std::string root = T2IMU_SOURCE_DIR;
-    const std::vector<Prompt> captions = read_prompt_set(root + "/models/default/captions.tsv", PromptActivity::required);
+    const std::vector<Prompt> captions =
+        read_prompt_set(root + "/models/default/captions.tsv", PromptActivity::required);
     std::ifstream in(root + "/docs/coverage.md");
     const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    EXPECT_EQ(doc, coverage_markdown(captions, "models/default")) << "remake it: build/t2imu text coverage --model models/default --out docs/coverage.md";
+    EXPECT_EQ(doc, coverage_markdown(captions, "models/default"))
+        << "remake it: build/t2imu text coverage --model models/default --out docs/coverage.md";
 }

@@ -8,15 +8,16 @@
 
 #include "analysis/activity_categories.hpp"
 #include "har/class_map.hpp"
-#include "text/prompt_set.hpp"
 #include "test_util.hpp"
+#include "text/prompt_set.hpp"
 
 using namespace t2imu;
 
 namespace {
 std::vector<std::pair<std::string, std::string>> shipped_prompts(const std::string& set = "realworld") {
     std::vector<std::pair<std::string, std::string>> out;
-    for (const Prompt& p : read_prompt_set(test::source_dir() + "/prompts/" + set + ".tsv")) out.push_back({p.activity, p.text});
+    for (const Prompt& p : read_prompt_set(test::source_dir() + "/prompts/" + set + ".tsv"))
+        out.push_back({p.activity, p.text});
     return out;
 }
 
@@ -33,13 +34,15 @@ void expect_ten_per_class(const std::string& set, const std::set<std::string>& c
 }  // namespace
 
 TEST(Prompts, TenDistinctPromptsPerRealWorldClass) {
-    expect_ten_per_class("realworld", {"walking", "running", "jumping", "sitting", "standing", "lying", "stairs_up", "stairs_down"});
+    expect_ten_per_class("realworld",
+                         {"walking", "running", "jumping", "sitting", "standing", "lying", "stairs_up", "stairs_down"});
 }
 
 // The paraphrase set (issue 25: text conditioning on unseen wording): the same classes, ten each, none of them a
 // prompt of the main set, and none in the captions' stock opening "a person".
 TEST(Prompts, ParaphraseSetIsFreshWordingForTheSameClasses) {
-    expect_ten_per_class("paraphrase", {"walking", "running", "jumping", "sitting", "standing", "lying", "stairs_up", "stairs_down"});
+    expect_ten_per_class("paraphrase",
+                         {"walking", "running", "jumping", "sitting", "standing", "lying", "stairs_up", "stairs_down"});
     std::set<std::string> main_set;
     for (const auto& [activity, prompt] : shipped_prompts()) main_set.insert(prompt);
     for (const auto& [activity, prompt] : shipped_prompts("paraphrase")) {
@@ -55,19 +58,23 @@ TEST(Prompts, RealDataSetsPromptSetsUseTheirOwnClassNames) {
     expect_ten_per_class("sisfall", {"walking", "jogging", "stairs_up_down", "sit_down_stand_up", "lying"});
     expect_ten_per_class("umafall", {"walking", "jogging", "jumping", "stairs_up", "stairs_down", "sit_down_stand_up",
                                      "lie_down_get_up_bed", "bending", "hands_up", "applauding"});
-    for (const auto& [activity, prompt] : shipped_prompts("sisfall")) EXPECT_EQ(map_activity("t2imu", activity), map_activity("sisfall", activity));
-    for (const auto& [activity, prompt] : shipped_prompts("umafall")) EXPECT_EQ(map_activity("t2imu", activity), map_activity("umafall", activity));
+    for (const auto& [activity, prompt] : shipped_prompts("sisfall"))
+        EXPECT_EQ(map_activity("t2imu", activity), map_activity("sisfall", activity));
+    for (const auto& [activity, prompt] : shipped_prompts("umafall"))
+        EXPECT_EQ(map_activity("t2imu", activity), map_activity("umafall", activity));
 }
 
 TEST(Prompts, TheCategoriserReadsTheirActivity) {
     const std::string vocab = test::source_dir() + "/cache/text/glove-100k.safetensors";
-    if (!std::filesystem::exists(vocab)) GTEST_SKIP() << "cache/text/glove-100k.safetensors absent (scripts/setup.sh makes it)";
+    if (!std::filesystem::exists(vocab))
+        GTEST_SKIP() << "cache/text/glove-100k.safetensors absent (scripts/setup.sh makes it)";
     const WordVectors v = WordVectors::load(vocab);
     const SifEncoder sif(v, kCategorySifWeight);
     const ActivityCategorizer categorizer(sif, 0.0);  // nearest category, no Other
-    const std::map<std::string, std::string> category = {{"walking", "Walking"}, {"running", "Running"}, {"jumping", "Jumping"},
-                                                         {"sitting", "Sitting"}, {"standing", "Standing"}, {"lying", "Lying"},
-                                                         {"stairs_up", "Stair climbing"}, {"stairs_down", "Stair climbing"}};
+    const std::map<std::string, std::string> category = {
+        {"walking", "Walking"},          {"running", "Running"},           {"jumping", "Jumping"},
+        {"sitting", "Sitting"},          {"standing", "Standing"},         {"lying", "Lying"},
+        {"stairs_up", "Stair climbing"}, {"stairs_down", "Stair climbing"}};
     int agree = 0, total = 0;
     for (const auto& [activity, prompt] : shipped_prompts()) {
         agree += categorizer.categorize(prompt).category == category.at(activity);
@@ -81,7 +88,8 @@ TEST(Prompts, TheCategoriserReadsTheirActivity) {
 // blank prompts and activities, bidi controls and control bytes are refused naming the line; a file that never
 // ends is refused after its cap instead of filling memory.
 TEST(Prompts, ByteOrderMarkBlankTextBidiControlsAndEndlessFiles) {
-    const std::vector<Prompt> p = parse_prompt_set("\xEF\xBB\xBFwalking\ta person walks\n", "p.tsv", PromptActivity::required);
+    const std::vector<Prompt> p =
+        parse_prompt_set("\xEF\xBB\xBFwalking\ta person walks\n", "p.tsv", PromptActivity::required);
     ASSERT_EQ(p.size(), 1u);
     EXPECT_EQ(p[0].activity, "walking");
     const std::pair<const char*, const char*> bad[] = {
@@ -92,7 +100,8 @@ TEST(Prompts, ByteOrderMarkBlankTextBidiControlsAndEndlessFiles) {
         {"walking\ta person \x1b[31mwalks\n", "U+001B"},
     };
     for (const auto& [text, why] : bad) {
-        const std::string m = test::error_message([&] { parse_prompt_set(std::string("# set\n") + text, "p.tsv", PromptActivity::required); });
+        const std::string m = test::error_message(
+            [&] { parse_prompt_set(std::string("# set\n") + text, "p.tsv", PromptActivity::required); });
         EXPECT_TRUE(test::contains(m, "p.tsv: line 2") && test::contains(m, why)) << m;
     }
     if (!std::filesystem::exists("/dev/zero")) GTEST_SKIP() << "no /dev/zero";

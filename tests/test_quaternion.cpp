@@ -15,7 +15,9 @@ namespace {
 std::vector<double> helper(const std::string& name) {
     return read_npy(test::shared_path("reference/humanml3d/generated/helpers/" + name + ".npy")).to<double>();
 }
-Quat quat_at(const std::vector<double>& v, size_t i) { return Quat(v[4 * i], v[4 * i + 1], v[4 * i + 2], v[4 * i + 3]); }
+Quat quat_at(const std::vector<double>& v, size_t i) {
+    return Quat(v[4 * i], v[4 * i + 1], v[4 * i + 2], v[4 * i + 3]);
+}
 Eigen::Vector3d vec_at(const std::vector<double>& v, size_t i) { return {v[3 * i], v[3 * i + 1], v[3 * i + 2]}; }
 
 }  // namespace
@@ -24,7 +26,8 @@ TEST(Quaternion, MatchesReferenceHelpers) {
     std::string q_path;
     SHARED_OR_SKIP(q_path, "reference/humanml3d/generated/helpers/q.npy");
     const auto q = helper("q"), r = helper("r"), v = helper("v"), v1 = helper("v1");
-    const auto mul = helper("qmul_q_r"), rot = helper("qrot_q_v"), inv = helper("qinv_q"), between = helper("qbetween_v_v1");
+    const auto mul = helper("qmul_q_r"), rot = helper("qrot_q_v"), inv = helper("qinv_q"),
+               between = helper("qbetween_v_v1");
     const auto mat = helper("quaternion_to_matrix_q"), c6 = helper("quaternion_to_cont6d_q");
     const size_t n = q.size() / 4;
     ASSERT_GT(n, 0u);
@@ -34,7 +37,9 @@ TEST(Quaternion, MatchesReferenceHelpers) {
         worst = std::max(worst, (qmul(qi, ri).coeffs() - quat_at(mul, i).coeffs()).cwiseAbs().maxCoeff());
         worst = std::max(worst, (qrot(qi, vec_at(v, i)) - vec_at(rot, i)).cwiseAbs().maxCoeff());
         worst = std::max(worst, (qinv(qi).coeffs() - quat_at(inv, i).coeffs()).cwiseAbs().maxCoeff());
-        worst = std::max(worst, (qbetween(vec_at(v, i), vec_at(v1, i)).coeffs() - quat_at(between, i).coeffs()).cwiseAbs().maxCoeff());
+        worst = std::max(
+            worst,
+            (qbetween(vec_at(v, i), vec_at(v1, i)).coeffs() - quat_at(between, i).coeffs()).cwiseAbs().maxCoeff());
         const Eigen::Matrix3d m = quaternion_to_matrix(qi);
         for (int a = 0; a < 3; ++a)
             for (int b = 0; b < 3; ++b) worst = std::max(worst, std::fabs(m(a, b) - mat[9 * i + 3 * a + b]));
@@ -74,7 +79,8 @@ TEST(Quaternion, QfixMatchesReference) {
     double worst = 0;
     for (size_t f = 0; f < frames; ++f)
         for (size_t j = 0; j < joints; ++j)
-            worst = std::max(worst, (seq[f][j].coeffs() - quat_at(expected, f * joints + j).coeffs()).cwiseAbs().maxCoeff());
+            worst = std::max(worst,
+                             (seq[f][j].coeffs() - quat_at(expected, f * joints + j).coeffs()).cwiseAbs().maxCoeff());
     EXPECT_LT(worst, 1e-12);
 }
 

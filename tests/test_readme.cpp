@@ -48,8 +48,10 @@ TEST(Readme, LinksEveryDocsPageAndEveryLocalLinkExists) {
     for (const auto& e : fs::directory_iterator(root / "docs")) {
         if (e.path().extension() != ".md") continue;
         ++pages;
-        EXPECT_EQ(links.count("docs/" + e.path().filename().string()), 1u) << e.path().filename() << " is not linked from README.md";
+        EXPECT_EQ(links.count("docs/" + e.path().filename().string()), 1u)
+            << e.path().filename() << " is not linked from README.md";
     }
     EXPECT_GE(pages, 8);  // 8 pages on 2026-12-04
-    for (const std::string& l : links) EXPECT_TRUE(fs::exists(root / l)) << "README.md links " << l << ", which does not exist";
+    for (const std::string& l : links)
+        EXPECT_TRUE(fs::exists(root / l)) << "README.md links " << l << ", which does not exist";
 }

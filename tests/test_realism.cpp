@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <regex>
 
@@ -16,8 +16,8 @@
 #include "core/error.hpp"
 #include "imu/realism.hpp"
 #include "imu/virtual_imu.hpp"
-#include "test_util.hpp"
 #include "motion/skeleton.hpp"
+#include "test_util.hpp"
 
 using namespace t2imu;
 using namespace t2imu::smpl22;
@@ -130,7 +130,8 @@ JointSequence yawing() {
     JointSequence s(120, kNumJoints, 20);
     const Vector3d pivot = body.rest_joints()[pelvis];
     for (int f = 0; f < s.num_frames; ++f) {
-        const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.2 * std::sin(2 * M_PI * f / 20.0), Vector3d::UnitY()).toRotationMatrix();
+        const Eigen::Matrix3d turn =
+            Eigen::AngleAxisd(0.2 * std::sin(2 * M_PI * f / 20.0), Vector3d::UnitY()).toRotationMatrix();
         for (int j = 0; j < kNumJoints; ++j) s.at(f, j) = pivot + turn * (body.rest_joints()[j] - pivot);
     }
     return s;
@@ -159,9 +160,11 @@ TEST(Realism, TrunkSwayTurnsAndMovesTheWaistTagLessAndLeavesTheAnkleAlone) {
     // lever arm turns with it.
     const double kept = 0.5 + 0.5 * std::exp(-std::pow(2 * M_PI * 0.5, 2) / 2);
     EXPECT_NEAR(one_hertz_amplitude(ideal.signals[1].gyr, 0), 2 * M_PI * 0.2, 0.02);
-    EXPECT_NEAR(one_hertz_amplitude(swayed.signals[1].gyr, 0) / one_hertz_amplitude(ideal.signals[1].gyr, 0), kept, 0.01);
+    EXPECT_NEAR(one_hertz_amplitude(swayed.signals[1].gyr, 0) / one_hertz_amplitude(ideal.signals[1].gyr, 0), kept,
+                0.01);
     EXPECT_GT(one_hertz_amplitude(ideal.signals[1].acc, 1), 0.3);
-    EXPECT_NEAR(one_hertz_amplitude(swayed.signals[1].acc, 1) / one_hertz_amplitude(ideal.signals[1].acc, 1), kept, 0.02);
+    EXPECT_NEAR(one_hertz_amplitude(swayed.signals[1].acc, 1) / one_hertz_amplitude(ideal.signals[1].acc, 1), kept,
+                0.02);
     for (size_t k = 0; k < ideal.signals[0].acc.size(); ++k) {  // the ankle's track is its own
         EXPECT_EQ(ideal.signals[0].acc[k], swayed.signals[0].acc[k]);
         EXPECT_EQ(ideal.signals[0].gyr[k], swayed.signals[0].gyr[k]);
@@ -239,7 +242,8 @@ bool mentions(const std::string& m, const std::string& part) { return m.find(par
 TEST(Realism, PresetsTurnOnOnlyTiltAndTheirOwnDevice) {
     // realism.hpp: "none" is the ideal sensor; landings, soft tissue and tempo are off in every preset; each
     // other preset uses the device model of the same name; the calibrated ones spread the tilt over recordings.
-    EXPECT_EQ(realism_preset_names(), (std::vector<std::string>{"none", "realworld", "sisfall", "umafall", "hugadb", "smartphone"}));
+    EXPECT_EQ(realism_preset_names(),
+              (std::vector<std::string>{"none", "realworld", "sisfall", "umafall", "hugadb", "smartphone"}));
     const RealismModel none = realism_preset("none");
     EXPECT_EQ(none.tilt.mean_deg, 0);
     EXPECT_EQ(none.tilt.sd_deg, 0);
@@ -298,8 +302,14 @@ TEST(Realism, ValidationNamesTheKeyOutOfRange) {
         {"trunk_yaw_gain", [](RealismModel& m) { m.trunk.yaw_gain = -1.5; }},
         {"trunk_sigma_s", [](RealismModel& m) { m.trunk.sigma_s = 0; }},
         {"strap_hz", [](RealismModel& m) { m.strap.frequency_hz = 0.5; }},
-        {"strap_damping", [](RealismModel& m) { m.strap = {6, 0}; }},
-        {"tissue_damping", [](RealismModel& m) { m.tissue = {6, 3}; }},
+        {"strap_damping",
+         [](RealismModel& m) {
+             m.strap = {6, 0};
+         }},
+        {"tissue_damping",
+         [](RealismModel& m) {
+             m.tissue = {6, 3};
+         }},
     };
     for (const auto& [key, spoil] : cases) {
         RealismModel m;
@@ -384,8 +394,10 @@ TEST(RealismTable, TheHelpNamesEveryLeverAndKeyWithItsRange) {
     const std::string help = realism_help();
     for (const std::string& preset : realism_preset_names()) EXPECT_TRUE(mentions(help, preset)) << preset;
     for (const RealismLever& lever : realism_levers()) {
-        EXPECT_TRUE(mentions(help, std::string(lever.name) + " (" + realism_stage_name(lever.stage) + ")")) << lever.name;
-        for (const RealismKey& k : lever.keys) EXPECT_TRUE(mentions(help, std::string("      ") + k.key + ": ")) << k.key;
+        EXPECT_TRUE(mentions(help, std::string(lever.name) + " (" + realism_stage_name(lever.stage) + ")"))
+            << lever.name;
+        for (const RealismKey& k : lever.keys)
+            EXPECT_TRUE(mentions(help, std::string("      ") + k.key + ": ")) << k.key;
     }
     EXPECT_TRUE(mentions(help, "tilt_deg: -90 to 90 deg; off 0, calibrated 7.5")) << help;
     EXPECT_TRUE(mentions(help, "sensor_rate_hz: 0 (off) or 5 to 2000 Hz, whole")) << help;
@@ -423,7 +435,8 @@ TEST(RealismTable, EveryKeyIsWrittenInAtMostTwoFilesOfTheLibrary) {
     for (const auto& e : fs::recursive_directory_iterator(fs::path(T2IMU_SOURCE_DIR) / "src")) {
         if (!e.is_regular_file()) continue;
         std::ifstream in(e.path());
-        sources.emplace_back(e.path().filename().string(), std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()));
+        sources.emplace_back(e.path().filename().string(),
+                             std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()));
     }
     for (const RealismLever& lever : realism_levers())
         for (const RealismKey& k : lever.keys) {

@@ -14,7 +14,8 @@ using namespace t2imu;
 namespace {
 
 // A stream on its own clock: samples from start_ms every step_ms until end_ms; value = f(t_ms).
-std::vector<uint8_t> stream_csv(double start_ms, double step_ms, double end_ms, double (*fx)(double), double y, double z) {
+std::vector<uint8_t> stream_csv(double start_ms, double step_ms, double end_ms, double (*fx)(double), double y,
+                                double z) {
     std::string s = "id,attr_time,attr_x,attr_y,attr_z\n";
     int id = 1;
     for (double t = start_ms; t <= end_ms; t += step_ms) {
@@ -32,17 +33,20 @@ std::string make_proband() {
     namespace fs = std::filesystem;
     const std::string dir = test::scratch_dir("realworld") + "/proband3";
     fs::create_directories(dir + "/data");
-    write_zip(dir + "/data/acc_walking_csv.zip", {{"acc_walking_chest.csv", stream_csv(1000, 20, 3000, acc_x, 9.81, 0)},
-                                                  {"acc_walking_waist.csv", stream_csv(1010, 20, 3100, acc_x, 9.7, 0)},
-                                                  {"acc_walking_thigh.csv", stream_csv(1000, 20, 3000, acc_x, 9.7, 0)}});
-    write_zip(dir + "/data/gyr_walking_csv.zip", {{"Gyroscope_walking_chest.csv", stream_csv(1005, 20, 2990, gyr_x, 0, 1)},
-                                                  {"Gyroscope_walking_waist.csv", stream_csv(995, 20, 3100, gyr_x, 0, 1)}});
+    write_zip(dir + "/data/acc_walking_csv.zip",
+              {{"acc_walking_chest.csv", stream_csv(1000, 20, 3000, acc_x, 9.81, 0)},
+               {"acc_walking_waist.csv", stream_csv(1010, 20, 3100, acc_x, 9.7, 0)},
+               {"acc_walking_thigh.csv", stream_csv(1000, 20, 3000, acc_x, 9.7, 0)}});
+    write_zip(dir + "/data/gyr_walking_csv.zip",
+              {{"Gyroscope_walking_chest.csv", stream_csv(1005, 20, 2990, gyr_x, 0, 1)},
+               {"Gyroscope_walking_waist.csv", stream_csv(995, 20, 3100, gyr_x, 0, 1)}});
     // Climbing, split into parts, with the accelerometer part inside a nested zip.
     ZipMembers inner = {{"acc_climbingdown_2_chest.csv", stream_csv(0, 20, 1000, acc_x, 9.81, 0)}};
     const std::string inner_path = dir + "/inner.zip";
     write_zip(inner_path, inner);
     write_zip(dir + "/data/acc_climbingdown_csv.zip", {{"acc_climbingdown_2_csv.zip", read_file_bytes(inner_path)}});
-    write_zip(dir + "/data/gyr_climbingdown_csv.zip", {{"Gyroscope_climbingdown_2_chest.csv", stream_csv(0, 20, 1000, gyr_x, 0, 1)}});
+    write_zip(dir + "/data/gyr_climbingdown_csv.zip",
+              {{"Gyroscope_climbingdown_2_chest.csv", stream_csv(0, 20, 1000, gyr_x, 0, 1)}});
     fs::remove(inner_path);
     return dir;
 }

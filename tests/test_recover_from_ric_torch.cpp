@@ -13,14 +13,16 @@ TEST(RecoverFromRicTorch, MatchesTheReferenceAndIsDifferentiable) {
     SHARED_OR_SKIP(path, "reference/humanml3d/generated/seq_synth_turn/features_263.npy");
     const NdArray a = read_npy(path);
     std::vector<float> v = a.to<float>();
-    const torch::Tensor features = torch::from_blob(v.data(), {1, a.shape[0], 263}, torch::kFloat).clone().requires_grad_(true);
+    const torch::Tensor features =
+        torch::from_blob(v.data(), {1, a.shape[0], 263}, torch::kFloat).clone().requires_grad_(true);
     const torch::Tensor joints = recover_from_ric_torch(features);
     ASSERT_EQ(joints.sizes(), (std::vector<int64_t>{1, a.shape[0], 22, 3}));
     const std::vector<double> expected =
         read_npy(test::shared_path("reference/humanml3d/generated/seq_synth_turn/recover_from_ric.npy")).to<double>();
     const torch::Tensor flat = joints.detach().reshape({-1}).to(torch::kDouble);
     double worst = 0;
-    for (size_t i = 0; i < expected.size(); ++i) worst = std::max(worst, std::abs(flat[static_cast<int64_t>(i)].item<double>() - expected[i]));
+    for (size_t i = 0; i < expected.size(); ++i)
+        worst = std::max(worst, std::abs(flat[static_cast<int64_t>(i)].item<double>() - expected[i]));
     EXPECT_LT(worst, 1e-5);
     // A turn of the first frame's yaw rate moves every later root position: the gradient reaches channel 0.
     joints.index({0, -1, 0, 0}).backward();

@@ -30,7 +30,8 @@ const SensorPlacement& placement_in(const std::string& set, const std::string& p
 ImuRecording as_recording(const ImuSignals& s) {
     ImuRecording r;
     r.t = s.t;
-    for (size_t k = 0; k < s.t.size(); ++k) r.samples.push_back({s.acc[k].x(), s.acc[k].y(), s.acc[k].z(), s.gyr[k].x(), s.gyr[k].y(), s.gyr[k].z()});
+    for (size_t k = 0; k < s.t.size(); ++k)
+        r.samples.push_back({s.acc[k].x(), s.acc[k].y(), s.acc[k].z(), s.gyr[k].x(), s.gyr[k].y(), s.gyr[k].z()});
     return r;
 }
 
@@ -65,13 +66,16 @@ TEST(Reframe, UmafallWaistInSisfallAxesIsTheAxisPermutation) {
 
 TEST(Reframe, ThereAndBackIsTheIdentity) {
     const ProceduralBody body(paper_bodies()[7]);
-    const std::pair<const char*, const char*> pairs[] = {{"umafall", "realworld"}, {"sisfall", "realworld"}, {"umafall", "sisfall"}};
+    const std::pair<const char*, const char*> pairs[] = {
+        {"umafall", "realworld"}, {"sisfall", "realworld"}, {"umafall", "sisfall"}};
     for (const auto& [a, b] : pairs)
         for (const char* position : {"waist", "chest"}) {
-            if (std::string(position) == "chest" && (std::string(a) == "sisfall" || std::string(b) == "sisfall")) continue;
+            if (std::string(position) == "chest" && (std::string(a) == "sisfall" || std::string(b) == "sisfall"))
+                continue;
             const Matrix3d ab = reframe_rotation(body, placement_in(a, position), placement_in(b, position));
             const Matrix3d ba = reframe_rotation(body, placement_in(b, position), placement_in(a, position));
-            EXPECT_LT((ba * ab - Matrix3d::Identity()).cwiseAbs().maxCoeff(), 1e-12) << a << " " << b << " " << position;
+            EXPECT_LT((ba * ab - Matrix3d::Identity()).cwiseAbs().maxCoeff(), 1e-12)
+                << a << " " << b << " " << position;
             EXPECT_NEAR(ab.determinant(), 1.0, 1e-12);
         }
 }
@@ -101,12 +105,16 @@ TEST(Reframe, CommandWritesTheFrameAndTurnsBackByIt) {
     namespace fs = std::filesystem;
     const std::string dir = test::scratch_dir("reframe_cli");
     fs::create_directories(dir + "/uma/s1");
-    std::ofstream(dir + "/uma/manifest.csv") << "path,dataset,subject,activity,position,rate_hz,n_samples,units\n"
-                                                "s1/w.csv,umafall,s1,walking,waist,20,3,-\ns1/c.csv,umafall,s1,walking,chest,20,3,-\n";
-    const std::string rows = "t,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n0,9.5,0.25,-1.5,0.1,0.2,0.3\n0.05,9.75,-0.5,2,0,0,-0.4\n0.1,9,1,0.5,1,-1,0\n";
+    std::ofstream(dir + "/uma/manifest.csv")
+        << "path,dataset,subject,activity,position,rate_hz,n_samples,units\n"
+           "s1/w.csv,umafall,s1,walking,waist,20,3,-\ns1/c.csv,umafall,s1,walking,chest,20,3,-\n";
+    const std::string rows =
+        "t,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n0,9.5,0.25,-1.5,0.1,0.2,0.3\n0.05,9.75,-0.5,2,0,0,-0.4\n0.1,9,1,0.5,1,-"
+        "1,0\n";
     std::ofstream(dir + "/uma/s1/w.csv") << rows;
     std::ofstream(dir + "/uma/s1/c.csv") << rows;
-    const test::CliResult there = test::run_cli("data reframe " + dir + "/uma --to sisfall --positions waist --out " + dir + "/sis");
+    const test::CliResult there =
+        test::run_cli("data reframe " + dir + "/uma --to sisfall --positions waist --out " + dir + "/sis");
     ASSERT_EQ(there.exit_code, 0) << there.output;
     const std::vector<ImuRecording> sis = read_imu_dataset(dir + "/sis");
     ASSERT_EQ(sis.size(), 1u);  // the chest has no SisFall placement: left out by --positions
@@ -116,7 +124,9 @@ TEST(Reframe, CommandWritesTheFrameAndTurnsBackByIt) {
     for (int c = 0; c < 6; ++c) EXPECT_NEAR(sis[0].samples[0][c], first[c], 1e-9) << c;
     const test::CliResult back = test::run_cli("data reframe " + dir + "/sis --to umafall --out " + dir + "/back");
     ASSERT_EQ(back.exit_code, 0) << back.output;
-    const std::vector<ImuRecording> original = read_imu_dataset(dir + "/uma"), returned = read_imu_dataset(dir + "/back");
+    const std::vector<ImuRecording> original = read_imu_dataset(dir + "/uma"),
+                                    returned = read_imu_dataset(dir + "/back");
     for (size_t k = 0; k < 3; ++k)
-        for (int c = 0; c < 6; ++c) EXPECT_NEAR(returned[0].samples[k][c], original[0].samples[k][c], 1e-9) << k << " " << c;
+        for (int c = 0; c < 6; ++c)
+            EXPECT_NEAR(returned[0].samples[k][c], original[0].samples[k][c], 1e-9) << k << " " << c;
 }

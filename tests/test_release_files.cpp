@@ -38,8 +38,8 @@ std::vector<ImuRecording> fake_reader(const std::string& path) {
 TEST(ReleaseFiles, ReadsMatchingFilesInSortedOrderAndSkipsRefusedOnes) {
     const std::string dir = make_release("release_files_ok");
     std::vector<std::string> skipped;
-    const std::vector<ImuRecording> r = import_release_files(dir, std::regex(R"([A-Z]+\d*_SA\d+_R\d+\.txt)"),
-                                                             "SisFall trials", fake_reader, &skipped);
+    const std::vector<ImuRecording> r =
+        import_release_files(dir, std::regex(R"([A-Z]+\d*_SA\d+_R\d+\.txt)"), "SisFall trials", fake_reader, &skipped);
     // Sorted by full path: SA01/D01, SA01/D02, SA02/D01; README.txt and the .bak copy do not match.
     ASSERT_EQ(r.size(), 3u);
     EXPECT_EQ(r[0].path, "D01_SA01_R01.txt");

@@ -20,7 +20,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-
 // A SisFall walking trial of 40 samples at 200 Hz; `bad` (when given) replaces line `at`.
 void write_sisfall(const std::string& path, int at = -1, const std::string& bad = "") {
     fs::create_directories(fs::path(path).parent_path());
@@ -61,7 +60,9 @@ TEST(ReleaseImporters, UmafallRefusesAHugeSensorIdByNameNotByStoi) {
     std::vector<std::string> skipped;
     EXPECT_THROW(import_umafall(dir, &skipped), Error);
     ASSERT_EQ(skipped.size(), 1u);
-    EXPECT_NE(skipped[0].find("line 3 sensor id: expected a whole number from 0 to 999999 (got '99999999999999')"), std::string::npos) << skipped[0];
+    EXPECT_NE(skipped[0].find("line 3 sensor id: expected a whole number from 0 to 999999 (got '99999999999999')"),
+              std::string::npos)
+        << skipped[0];
     EXPECT_EQ(skipped[0].find("stoi"), std::string::npos);
     // A sample counter of 1.5e21 (found by fuzz_umafall: its cast to long was undefined behaviour).
     std::ofstream(file) << kUmafallHeader << "% C4:BE:84:70:64:8A; 3; WAIST; SensorTag\n"
@@ -69,8 +70,11 @@ TEST(ReleaseImporters, UmafallRefusesAHugeSensorIdByNameNotByStoi) {
     skipped.clear();
     EXPECT_THROW(import_umafall(dir, &skipped), Error);
     ASSERT_EQ(skipped.size(), 1u);
-    EXPECT_NE(skipped[0].find("line 4 sample no: expected a whole number from 0 to 10^12 (got '1.5e21')"), std::string::npos) << skipped[0];
-    EXPECT_EQ(test::error_message([] { release_index("-3", "f", "id"); }), "f: id: expected a whole number from 0 to 999999 (got '-3')");
+    EXPECT_NE(skipped[0].find("line 4 sample no: expected a whole number from 0 to 10^12 (got '1.5e21')"),
+              std::string::npos)
+        << skipped[0];
+    EXPECT_EQ(test::error_message([] { release_index("-3", "f", "id"); }),
+              "f: id: expected a whole number from 0 to 999999 (got '-3')");
     EXPECT_EQ(release_index("000042", "f", "id"), 42);
 }
 
@@ -79,14 +83,17 @@ TEST(ReleaseImporters, RealWorldRefusesANanCellAndAHugePartNumber) {
     fs::create_directories(dir + "/proband1/data");
     const auto csv = [](const std::string& cell) {
         std::string s = "id,attr_time,attr_x,attr_y,attr_z\n";
-        for (int i = 0; i < 60; ++i) s += std::to_string(i + 1) + "," + std::to_string(1000 + 20 * i) + "," + (i == 5 ? cell : "0.1") + ",9.8,0\n";
+        for (int i = 0; i < 60; ++i)
+            s += std::to_string(i + 1) + "," + std::to_string(1000 + 20 * i) + "," + (i == 5 ? cell : "0.1") +
+                 ",9.8,0\n";
         return std::vector<uint8_t>(s.begin(), s.end());
     };
     write_zip(dir + "/proband1/data/acc_walking_csv.zip", {{"acc_walking_chest.csv", csv("nan")}});
     write_zip(dir + "/proband1/data/gyr_walking_csv.zip", {{"Gyroscope_walking_chest.csv", csv("0.2")}});
     std::vector<std::string> skipped;
     const std::string m = test::error_message([&] { import_realworld(dir, &skipped); });
-    EXPECT_NE((m + (skipped.empty() ? "" : skipped[0])).find("acc_walking_chest.csv: row 7 column 'attr_x': expected a finite number (got nan)"),
+    EXPECT_NE((m + (skipped.empty() ? "" : skipped[0]))
+                  .find("acc_walking_chest.csv: row 7 column 'attr_x': expected a finite number (got nan)"),
               std::string::npos)
         << m << " / " << (skipped.empty() ? "" : skipped[0]);
     fs::remove_all(dir + "/proband1/data");
@@ -94,7 +101,9 @@ TEST(ReleaseImporters, RealWorldRefusesANanCellAndAHugePartNumber) {
     write_zip(dir + "/proband1/data/acc_walking_csv.zip", {{"acc_walking_99999999999_chest.csv", csv("0.1")}});
     skipped.clear();
     const std::string huge = test::error_message([&] { import_realworld(dir, &skipped); });
-    EXPECT_NE((huge + (skipped.empty() ? "" : skipped[0])).find("part number: expected a whole number from 0 to 999999"), std::string::npos)
+    EXPECT_NE(
+        (huge + (skipped.empty() ? "" : skipped[0])).find("part number: expected a whole number from 0 to 999999"),
+        std::string::npos)
         << huge;
 }
 

@@ -50,7 +50,8 @@ Image decode_png(const std::vector<uint8_t>& png) {
             EXPECT_EQ(png[at + 20], 0) << "interlace";
             channels = png[at + 17] == 6 ? 4 : png[at + 17] == 2 ? 3 : 0;
         } else if (type == "IDAT") {
-            z.insert(z.end(), png.begin() + static_cast<long>(at) + 8, png.begin() + static_cast<long>(at + 8 + length));
+            z.insert(z.end(), png.begin() + static_cast<long>(at) + 8,
+                     png.begin() + static_cast<long>(at + 8 + length));
         }
         at += 12 + length;
     }
@@ -63,9 +64,13 @@ Image decode_png(const std::vector<uint8_t>& png) {
     for (uint32_t y = 0; y < im.height; ++y) {
         const uint8_t filter = raw[y * (stride + 1)];
         for (size_t i = 0; i < stride; ++i) {
-            const int x = raw[y * (stride + 1) + 1 + i], a = i >= static_cast<size_t>(channels) ? row[i - channels] : 0, b = previous[i],
-                      c = i >= static_cast<size_t>(channels) ? previous[i - channels] : 0;
-            const int predicted = filter == 1 ? a : filter == 2 ? b : filter == 3 ? (a + b) / 2 : filter == 4 ? paeth(a, b, c) : 0;
+            const int x = raw[y * (stride + 1) + 1 + i], a = i >= static_cast<size_t>(channels) ? row[i - channels] : 0,
+                      b = previous[i], c = i >= static_cast<size_t>(channels) ? previous[i - channels] : 0;
+            const int predicted = filter == 1   ? a
+                                  : filter == 2 ? b
+                                  : filter == 3 ? (a + b) / 2
+                                  : filter == 4 ? paeth(a, b, c)
+                                                : 0;
             row[i] = static_cast<uint8_t>(x + predicted);
         }
         for (uint32_t px = 0; px < im.width; ++px)
@@ -75,12 +80,15 @@ Image decode_png(const std::vector<uint8_t>& png) {
     return im;
 }
 
-bool has_command(const std::string& name) { return std::system(("command -v " + name + " > /dev/null 2>&1").c_str()) == 0; }
+bool has_command(const std::string& name) {
+    return std::system(("command -v " + name + " > /dev/null 2>&1").c_str()) == 0;
+}
 
 }  // namespace
 
 TEST(ReportRender, SynthesisPageRendersWithAStripAndBvhLinkPerKeptMotion) {
-    if (!has_command("chromium")) GTEST_SKIP() << "chromium not installed (scripts/setup.sh installs it for this screenshot test)";
+    if (!has_command("chromium"))
+        GTEST_SKIP() << "chromium not installed (scripts/setup.sh installs it for this screenshot test)";
     if (!has_command("gnuplot")) GTEST_SKIP() << "gnuplot not installed (scripts/setup.sh installs gnuplot-nox)";
     const std::string dir = test::scratch_dir("report_render"), in = dir + "/synth", report = in + "/report";
     test::write_synth_fixture(in);
@@ -88,7 +96,9 @@ TEST(ReportRender, SynthesisPageRendersWithAStripAndBvhLinkPerKeptMotion) {
 
     const std::string html = read_file_text(report + "/index.html");
     size_t strips = 0;
-    for (size_t p = html.find("<svg class=\"pose-strip\""); p != std::string::npos; p = html.find("<svg class=\"pose-strip\"", p + 1)) ++strips;
+    for (size_t p = html.find("<svg class=\"pose-strip\""); p != std::string::npos;
+         p = html.find("<svg class=\"pose-strip\"", p + 1))
+        ++strips;
     EXPECT_EQ(strips, 2u);  // the fixture's kept motions
     const std::regex link("<a class=\"bvh\" href=\"([^\"]+)\">");
     std::set<std::string> targets;
@@ -101,9 +111,10 @@ TEST(ReportRender, SynthesisPageRendersWithAStripAndBvhLinkPerKeptMotion) {
                                               fs::weakly_canonical(in + "/motions/j00001.bvh").string()}));
 
     const std::string shot = dir + "/screenshot.png";
-    const std::string command = "timeout 60 chromium --headless --no-sandbox --disable-gpu --hide-scrollbars --user-data-dir=" + dir +
-                                "/chromium-profile --screenshot=" + shot + " --window-size=1200,2000 file://" +
-                                fs::absolute(report + "/index.html").string() + " > " + dir + "/chromium.log 2>&1";
+    const std::string command =
+        "timeout 60 chromium --headless --no-sandbox --disable-gpu --hide-scrollbars --user-data-dir=" + dir +
+        "/chromium-profile --screenshot=" + shot + " --window-size=1200,2000 file://" +
+        fs::absolute(report + "/index.html").string() + " > " + dir + "/chromium.log 2>&1";
     ASSERT_EQ(std::system(command.c_str()), 0) << read_file_text(dir + "/chromium.log");
     const Image im = decode_png(read_file_bytes(shot));
     EXPECT_EQ(im.width, 1200u);

@@ -29,7 +29,7 @@ TEST(ResamplePoly, KaiserLowpassHasUnitGainAndSymmetry) {
 TEST(ResamplePoly, LinesPassExactlyAndSlowSinesKeepTheirShape) {
     std::vector<double> ramp(400), sine(400);
     for (int i = 0; i < 400; ++i) {
-        ramp[static_cast<size_t>(i)] = 9.81 + 0.01 * i;          // gravity plus a drift
+        ramp[static_cast<size_t>(i)] = 9.81 + 0.01 * i;                       // gravity plus a drift
         sine[static_cast<size_t>(i)] = std::sin(2 * M_PI * 2.0 * i / 200.0);  // 2 Hz at 200 Hz
     }
     const std::vector<double> r = resample_poly(ramp, 1, 4), s = resample_poly(sine, 1, 4);

@@ -15,10 +15,12 @@ namespace fs = std::filesystem;
 namespace {
 
 // Pipeline order: text -> motion -> bodies -> sensors -> HAR and analysis -> report; the job and the CLI last.
-const std::vector<std::string> kOrder = {"core", "nn", "motion", "data", "text", "diffusion", "body", "imu", "har", "analysis", "report", "pipeline", "cli"};
+const std::vector<std::string> kOrder = {"core", "nn",  "motion",   "data",   "text",     "diffusion", "body",
+                                         "imu",  "har", "analysis", "report", "pipeline", "cli"};
 // Compiled into libt2imu, without libtorch (CMakeLists.txt's T2IMU_ROOMS); a room's nn/ folder (text/nn, har/nn) is
 // its libtorch part, built into the libtorch library.
-const std::vector<std::string> kTorchFree = {"core", "motion", "data", "text", "body", "imu", "har", "analysis", "report"};
+const std::vector<std::string> kTorchFree = {"core", "motion", "data",     "text",  "body",
+                                             "imu",  "har",    "analysis", "report"};
 
 int rank_of(const std::string& room) {
     for (size_t i = 0; i < kOrder.size(); ++i)
@@ -57,16 +59,20 @@ TEST(RoomOrder, EveryRoomIsKnownAndIncludesOnlyUpstream) {
         const std::string room = room_of(i.file);
         ASSERT_GE(rank_of(room), 0) << i.file << ": a room DESIGN.md's order does not name";
         if (i.target.find('/') == std::string::npos || rank_of(room_of(i.target)) < 0) continue;  // system headers
-        EXPECT_LE(rank_of(room_of(i.target)), rank_of(room)) << i.file << " includes " << i.target << ", a room downstream of " << room;
+        EXPECT_LE(rank_of(room_of(i.target)), rank_of(room))
+            << i.file << " includes " << i.target << ", a room downstream of " << room;
     }
 }
 
 TEST(RoomOrder, TorchFreeRoomsNeverIncludeLibtorch) {
     for (const Include& i : includes_of_src()) {
         const std::string room = room_of(i.file);
-        if (std::find(kTorchFree.begin(), kTorchFree.end(), room) == kTorchFree.end() || i.file.find("/nn/") != std::string::npos) continue;
-        const bool torch = i.target.rfind("torch/", 0) == 0 || i.target.rfind("ATen/", 0) == 0 || i.target.rfind("c10/", 0) == 0 ||
-                           i.target.rfind("nn/", 0) == 0 || i.target.rfind("diffusion/", 0) == 0 || i.target.rfind("pipeline/", 0) == 0 ||
+        if (std::find(kTorchFree.begin(), kTorchFree.end(), room) == kTorchFree.end() ||
+            i.file.find("/nn/") != std::string::npos)
+            continue;
+        const bool torch = i.target.rfind("torch/", 0) == 0 || i.target.rfind("ATen/", 0) == 0 ||
+                           i.target.rfind("c10/", 0) == 0 || i.target.rfind("nn/", 0) == 0 ||
+                           i.target.rfind("diffusion/", 0) == 0 || i.target.rfind("pipeline/", 0) == 0 ||
                            i.target.find("/nn/") != std::string::npos;
         EXPECT_FALSE(torch) << i.file << " includes " << i.target << " but " << room << " is built without libtorch";
     }

@@ -46,13 +46,18 @@ TEST(SafeTensors, RoundTripWithMetadataAndNameOrder) {
 }
 
 TEST(SafeTensors, RefusesEveryMalformedLayout) {
-    struct Case { std::string header; size_t data; const char* field; };
+    struct Case {
+        std::string header;
+        size_t data;
+        const char* field;
+    };
     const Case cases[] = {
-        {R"({"w":{"dtype":"F32","shape":[2],"data_offsets":[0,8]}})", 4, "w.data_offsets"},        // out of range
-        {R"({"w":{"dtype":"F32","shape":[3],"data_offsets":[0,8]}})", 8, "w.data_offsets"},        // size mismatch
-        {R"({"w":{"dtype":"F32","shape":[2],"data_offsets":[0,8]},"v":{"dtype":"F32","shape":[2],"data_offsets":[4,12]}})", 12, "v.data_offsets"},  // overlap
-        {R"({"w":{"dtype":"F32","shape":[1],"data_offsets":[4,8]}})", 8, "w.data_offsets"},        // gap
-        {R"({"w":{"dtype":"F32","shape":[1],"data_offsets":[0,4]}})", 8, "data"},                  // trailing bytes
+        {R"({"w":{"dtype":"F32","shape":[2],"data_offsets":[0,8]}})", 4, "w.data_offsets"},  // out of range
+        {R"({"w":{"dtype":"F32","shape":[3],"data_offsets":[0,8]}})", 8, "w.data_offsets"},  // size mismatch
+        {R"({"w":{"dtype":"F32","shape":[2],"data_offsets":[0,8]},"v":{"dtype":"F32","shape":[2],"data_offsets":[4,12]}})",
+         12, "v.data_offsets"},                                                              // overlap
+        {R"({"w":{"dtype":"F32","shape":[1],"data_offsets":[4,8]}})", 8, "w.data_offsets"},  // gap
+        {R"({"w":{"dtype":"F32","shape":[1],"data_offsets":[0,4]}})", 8, "data"},            // trailing bytes
         {R"({"w":{"dtype":"C64","shape":[1],"data_offsets":[0,8]}})", 8, "w.dtype"},
         {R"({"w":{"dtype":"F32","shape":[-1],"data_offsets":[0,4]}})", 4, "w.shape"},
         {R"({"w":{"dtype":"F32","shape":[1]}})", 4, "w"},
@@ -66,7 +71,8 @@ TEST(SafeTensors, RefusesEveryMalformedLayout) {
             parse_safetensors(bytes.data(), bytes.size(), "bad.safetensors");
             ADD_FAILURE() << "accepted " << c.header;
         } catch (const Error& e) {
-            EXPECT_NE(std::string(e.what()).find(std::string("bad.safetensors: ") + c.field), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find(std::string("bad.safetensors: ") + c.field), std::string::npos)
+                << e.what();
         }
     }
     std::vector<uint8_t> huge = file_with("{}", 0);

@@ -31,14 +31,20 @@ TEST(SampleOptions, DefaultsPassAndEachBadValueIsRefusedByItsOption) {
     };
     EXPECT_NE(refusal([](SampleOptions& o) { o.frames = 197; }).find("--frames"), std::string::npos);
     EXPECT_NE(refusal([](SampleOptions& o) { o.frames = 3; }).find("--frames"), std::string::npos);
-    EXPECT_NE(refusal([](SampleOptions& o) { o.sampler = Sampler::dpmpp; o.steps = 0; }).find("--steps"), std::string::npos);
+    EXPECT_NE(refusal([](SampleOptions& o) {
+                  o.sampler = Sampler::dpmpp;
+                  o.steps = 0;
+              }).find("--steps"),
+              std::string::npos);
     EXPECT_NE(refusal([](SampleOptions& o) { o.guidance = std::nan(""); }).find("--guidance"), std::string::npos);
     EXPECT_NE(refusal([](SampleOptions& o) { o.guidance = 1e20; }).find("--guidance"), std::string::npos);
     EXPECT_NE(refusal([](SampleOptions& o) { o.guidance = -1; }).find("--guidance"), std::string::npos);
     EXPECT_NE(refusal([](SampleOptions& o) { o.eta = 1.5; }).find("--eta"), std::string::npos);
     EXPECT_NE(refusal([](SampleOptions& o) { o.batch = 0; }).find("--batch"), std::string::npos);
     EXPECT_NE(refusal([](SampleOptions& o) { o.strength = 0; }).find("--strength"), std::string::npos);
-    EXPECT_NE(refusal([](SampleOptions& o) { o.start_motions = {FeatureMatrix::Zero(o.frames - 1, 263)}; }).find("start motion"),
+    EXPECT_NE(refusal([](SampleOptions& o) {
+                  o.start_motions = {FeatureMatrix::Zero(o.frames - 1, 263)};
+              }).find("start motion"),
               std::string::npos);
     // DDPM takes every step of the schedule: its `steps` is not read, so not checked.
     SampleOptions ddpm;

@@ -21,7 +21,8 @@ TEST(SamplerComparison, ParsesTheSamplerList) {
     EXPECT_EQ(c[1].sampler, Sampler::ddim);
     EXPECT_EQ(c[1].steps, 20);
     EXPECT_EQ(c[2].name(), "dpmpp:5");
-    for (const char* bad : {"ddpm:5", "ddim", "euler:3", "ddim:1", "dpmpp:x", ""}) EXPECT_THROW(parse_sampler_configs(bad), Error) << bad;
+    for (const char* bad : {"ddpm:5", "ddim", "euler:3", "ddim:1", "dpmpp:x", ""})
+        EXPECT_THROW(parse_sampler_configs(bad), Error) << bad;
 }
 
 TEST(SamplerComparison, OptionsAreCheckedBeforeAnyModelIsLoaded) {

@@ -28,7 +28,9 @@ NoiseSource seeded_noise(uint64_t seed) {
     return [gen](const torch::Tensor& like) { return torch::randn(like.sizes(), *gen, like.options()); };
 }
 
-torch::Tensor start(int n, uint64_t seed) { return torch::randn({n}, at::detail::createCPUGenerator(seed), torch::kFloat64); }
+torch::Tensor start(int n, uint64_t seed) {
+    return torch::randn({n}, at::detail::createCPUGenerator(seed), torch::kFloat64);
+}
 
 }  // namespace
 
@@ -60,7 +62,8 @@ TEST(Samplers, GaussianDataHasTheRightMoments) {
     for (int steps : {10, 50}) {
         const Moments ddim = moments(sample_ddim(s, denoiser, x, steps, 0.0, seeded_noise(5)));
         const Moments dpm = moments(sample_dpmpp_2m(s, denoiser, x, steps));
-        std::printf("K = %2d: DDIM sd ratio %.4f, DPM-Solver++ 2M sd ratio %.4f, DDPM (1000) %.4f\n", steps, ddim.sd / sd, dpm.sd / sd, ddpm.sd / sd);
+        std::printf("K = %2d: DDIM sd ratio %.4f, DPM-Solver++ 2M sd ratio %.4f, DDPM (1000) %.4f\n", steps,
+                    ddim.sd / sd, dpm.sd / sd, ddpm.sd / sd);
         EXPECT_NEAR(ddim.mean, mu, 0.005);
         EXPECT_NEAR(dpm.mean, mu, 0.005);
         // Discretisation error of each scheme (computed analytically for this problem: see samplers.hpp).
@@ -75,8 +78,8 @@ TEST(Samplers, GaussianDataHasTheRightMoments) {
 TEST(Samplers, TimestepsFromAnIntermediateStep) {
     EXPECT_EQ(sampling_timesteps(1000, 5, 499), (std::vector<int>{499, 281, 125, 31, 0}));  // 499 (1 - k/4)^2
     EXPECT_EQ(sampling_timesteps(1000, 3, 2), (std::vector<int>{2, 1, 0}));
-    EXPECT_THROW(sampling_timesteps(1000, 4, 2), Error);   // more evaluations than steps left
-    EXPECT_THROW(sampling_timesteps(10, 1, 10), Error);    // beyond the schedule
+    EXPECT_THROW(sampling_timesteps(1000, 4, 2), Error);  // more evaluations than steps left
+    EXPECT_THROW(sampling_timesteps(10, 1, 10), Error);   // beyond the schedule
 }
 
 // SDEdit (the hybrid source) on Gaussian data N(mu, s^2): a start point x_s noised to step t, x_t = sqrt(a) x_s +

@@ -48,7 +48,9 @@ TEST(Segments, RestPoseGivesIdentity) {
 
 TEST(Segments, ARigidTurnTurnsEverySegment) {
     const Joints22 rest = standing();
-    const Matrix3d q = (Eigen::AngleAxisd(1.1, Vector3d::UnitY()) * Eigen::AngleAxisd(0.3, Vector3d(1, 0, 1).normalized())).toRotationMatrix();
+    const Matrix3d q =
+        (Eigen::AngleAxisd(1.1, Vector3d::UnitY()) * Eigen::AngleAxisd(0.3, Vector3d(1, 0, 1).normalized()))
+            .toRotationMatrix();
     Joints22 moved;
     for (int k = 0; k < kNumJoints; ++k) moved[k] = q * rest[k] + Vector3d(2, 0.1, -3);
     const std::vector<Rotations22> r = segment_rotations({moved}, rest_axes(rest));
@@ -107,7 +109,7 @@ TEST(Segments, AxisFrameAndCrossSectionAxes) {
     cross_section_axes(Vector3d(0, -1, 0), &front, &side);  // a hanging limb: front +Z, side +X
     EXPECT_LT((front - Vector3d::UnitZ()).norm(), 1e-12);
     EXPECT_LT((side - Vector3d::UnitX()).norm(), 1e-12);
-    cross_section_axes(Vector3d(1, 0, 0), &front, &side);   // a sideways collar: side is up
+    cross_section_axes(Vector3d(1, 0, 0), &front, &side);  // a sideways collar: side is up
     EXPECT_LT((front - Vector3d::UnitZ()).norm(), 1e-12);
     EXPECT_LT((side - Vector3d::UnitY()).norm(), 1e-12);
 }

@@ -21,7 +21,8 @@ ImuSignals constant_signals(size_t n, double rate, const Vector3d& acc, const Ve
 }  // namespace
 
 TEST(SensorNoise, WhiteNoiseHasTheDensitysStandardDeviation) {
-    SensorNoiseModel m = parse_noise_model("smartphone,acc_bias_sd=0,gyr_bias_sd=0,acc_bias_walk=0,gyr_bias_walk=0,scale_sd=0,misalignment_deg=0,bits=0");
+    SensorNoiseModel m = parse_noise_model(
+        "smartphone,acc_bias_sd=0,gyr_bias_sd=0,acc_bias_walk=0,gyr_bias_walk=0,scale_sd=0,misalignment_deg=0,bits=0");
     ImuSignals s = constant_signals(200000, 100, Vector3d(0, 9.81, 0), Vector3d::Zero());
     apply_sensor_noise(m, 1, &s);
     double sum = 0, sum2 = 0;
@@ -36,8 +37,9 @@ TEST(SensorNoise, WhiteNoiseHasTheDensitysStandardDeviation) {
 }
 
 TEST(SensorNoise, SaturatesAndQuantises) {
-    SensorNoiseModel m = parse_noise_model("hugadb,acc_noise_density=0,gyr_noise_density=0,acc_bias_sd=0,gyr_bias_sd=0,"
-                                           "acc_bias_walk=0,gyr_bias_walk=0,scale_sd=0,misalignment_deg=0");
+    SensorNoiseModel m = parse_noise_model(
+        "hugadb,acc_noise_density=0,gyr_noise_density=0,acc_bias_sd=0,gyr_bias_sd=0,"
+        "acc_bias_walk=0,gyr_bias_walk=0,scale_sd=0,misalignment_deg=0");
     ImuSignals s = constant_signals(10, 50, Vector3d(30, -30, 1.0), Vector3d(0.0123456, 50, 0));
     apply_sensor_noise(m, 1, &s);
     const double range = 2 * 9.80665, lsb = 2 * range / 65536;
@@ -49,7 +51,8 @@ TEST(SensorNoise, SaturatesAndQuantises) {
 }
 
 TEST(SensorNoise, SeededBiasIsConstantWithoutWalkAndDiffersBetweenSeeds) {
-    SensorNoiseModel m = parse_noise_model("smartphone,acc_noise_density=0,gyr_noise_density=0,acc_bias_walk=0,gyr_bias_walk=0,bits=0");
+    SensorNoiseModel m =
+        parse_noise_model("smartphone,acc_noise_density=0,gyr_noise_density=0,acc_bias_walk=0,gyr_bias_walk=0,bits=0");
     ImuSignals a = constant_signals(50, 50, Vector3d(0, 9.81, 0), Vector3d::Zero()), b = a, c = a;
     apply_sensor_noise(m, 5, &a);
     apply_sensor_noise(m, 5, &b);

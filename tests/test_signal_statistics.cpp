@@ -13,14 +13,16 @@ using namespace t2imu;
 namespace {
 
 // 30 s at 50 Hz: x sways at fx with amplitude ax, y carries gravity tilted by tilt_deg towards z and a bounce.
-ImuRecording recording(const std::string& activity, double fx, double ax, double tilt_deg, double fy = 1.8, double ay = 1.0) {
+ImuRecording recording(const std::string& activity, double fx, double ax, double tilt_deg, double fy = 1.8,
+                       double ay = 1.0) {
     ImuRecording r;
     r.dataset = "t2imu", r.activity = activity, r.position = "waist", r.rate_hz = 50, r.path = activity + ".csv";
     const double g = 9.81, tilt = tilt_deg * M_PI / 180;
     for (int i = 0; i < 1500; ++i) {
         const double t = i / 50.0;
         r.t.push_back(t);
-        r.samples.push_back({ax * std::sin(2 * M_PI * fx * t), -g * std::cos(tilt) + ay * std::sin(2 * M_PI * fy * t), -g * std::sin(tilt), 0, 0, 0});
+        r.samples.push_back({ax * std::sin(2 * M_PI * fx * t), -g * std::cos(tilt) + ay * std::sin(2 * M_PI * fy * t),
+                             -g * std::sin(tilt), 0, 0, 0});
     }
     return r;
 }
@@ -77,12 +79,14 @@ TEST(SignalStatistics, ComparesActivitiesBothSetsHoldWithRatios) {
     // The result file reads back as written, to the byte; a broken field is refused by its dotted key.
     const nlohmann::json doc = signal_statistics_comparison_json(c);
     EXPECT_EQ(doc["walking"]["recordings"]["synthetic"], 2);
-    EXPECT_EQ(signal_statistics_comparison_json(parse_signal_statistics_comparison(doc, "s.json")).dump(2), doc.dump(2));
+    EXPECT_EQ(signal_statistics_comparison_json(parse_signal_statistics_comparison(doc, "s.json")).dump(2),
+              doc.dump(2));
     nlohmann::json broken = doc;
     broken["walking"]["sd_x"]["ratio"] = "half";
     EXPECT_EQ(test::error_message([&] { parse_signal_statistics_comparison(broken, "s.json"); }),
               "s.json: walking.sd_x.ratio: expected a number (got \"half\")");
-    EXPECT_THROW(compare_signal_statistics(real, synthetic, {"wrist", 20}), Error);  // a position neither holds: refused, not {}
+    EXPECT_THROW(compare_signal_statistics(real, synthetic, {"wrist", 20}),
+                 Error);  // a position neither holds: refused, not {}
     ImuRecording short_one = recording("walking", 0.9, 1.0, 0);
     short_one.samples.resize(60);
     short_one.t.resize(60);
@@ -109,7 +113,8 @@ ImuRecording rolling_board(double f, double roll_amp, double sway, double phase)
     for (int i = 0; i < 1500; ++i) {
         const double t = i / 50.0, w = 2 * M_PI * f, roll = roll_amp * std::sin(w * t);
         r.t.push_back(t);
-        r.samples.push_back({-g * std::sin(roll) + sway * std::sin(w * t + phase), -g * std::cos(roll), 0, 0, -0.3 * std::sin(w * t), roll_amp * w * std::cos(w * t)});
+        r.samples.push_back({-g * std::sin(roll) + sway * std::sin(w * t + phase), -g * std::cos(roll), 0, 0,
+                             -0.3 * std::sin(w * t), roll_amp * w * std::cos(w * t)});
     }
     return r;
 }

@@ -29,14 +29,17 @@ JointSequence procedural_stand(int frames) {
         const double t = f / kFps;
         m.at(f, pelvis) = Vector3d(0.01 * std::sin(2 * test::kPi * t / 4), kStandPelvisHeight, 0);
         for (int j = 1; j < kNumJoints; ++j)
-            if (!is_leg_joint(j)) m.at(f, j) = m.at(f, kParents[static_cast<size_t>(j)]) + kTargetOffsets[static_cast<size_t>(j)];
+            if (!is_leg_joint(j))
+                m.at(f, j) = m.at(f, kParents[static_cast<size_t>(j)]) + kTargetOffsets[static_cast<size_t>(j)];
         flex_trunk(m, f, Vector3d::UnitZ(), 0.035 * std::sin(2 * test::kPi * t / 3));
         for (const LegJoints& leg : kLegs) {
             const double foot = kTargetOffsets[static_cast<size_t>(leg.toe)].norm();
             m.at(f, leg.ankle) = Vector3d(kTargetOffsets[static_cast<size_t>(leg.hip)].x(), 0.08, 0);
             m.at(f, leg.toe) = m.at(f, leg.ankle) + Vector3d(0, -0.06, std::sqrt(foot * foot - 0.06 * 0.06));
-            m.at(f, leg.knee) = solve_two_bone_ik(m.at(f, leg.hip), m.at(f, leg.ankle), kTargetOffsets[static_cast<size_t>(leg.knee)].norm(),
-                                                  kTargetOffsets[static_cast<size_t>(leg.ankle)].norm(), m.at(f, leg.hip) + Vector3d(0, -0.4, 1))
+            m.at(f, leg.knee) = solve_two_bone_ik(m.at(f, leg.hip), m.at(f, leg.ankle),
+                                                  kTargetOffsets[static_cast<size_t>(leg.knee)].norm(),
+                                                  kTargetOffsets[static_cast<size_t>(leg.ankle)].norm(),
+                                                  m.at(f, leg.hip) + Vector3d(0, -0.4, 1))
                                     .middle;
         }
     }
@@ -73,7 +76,8 @@ TEST(SitToStand, SeatedThePelvisRestsOnTheSeatWithTheKneesAtARightAngle) {
             for (int leg = 0; leg < 2; ++leg) {
                 const LegJoints& l = kLegs[static_cast<size_t>(leg)];
                 const double knee_height = 0.08 + kTargetOffsets[static_cast<size_t>(l.ankle)].norm();
-                const double slope = std::asin((m.at(f, l.hip).y() - knee_height) / kTargetOffsets[static_cast<size_t>(l.knee)].norm());
+                const double slope =
+                    std::asin((m.at(f, l.hip).y() - knee_height) / kTargetOffsets[static_cast<size_t>(l.knee)].norm());
                 EXPECT_NEAR(knee_flexion_rad(m, f, leg), test::kPi / 2 - slope, 0.05) << "seat " << seat;
             }
         }
@@ -131,17 +135,22 @@ TEST(SitToStand, ASlowerPaceLowersThePelvisAccelerationByItsSquare) {
     auto peak_vertical_acceleration = [](const JointSequence& m, double from_s, double to_s) {  // m/s^2
         double peak = 0;
         for (int f = std::max(1, frames_of(from_s, m.fps)); f < std::min(m.num_frames - 1, frames_of(to_s, m.fps)); ++f)
-            peak = std::max(peak, std::abs(m.at(f + 1, pelvis).y() - 2 * m.at(f, pelvis).y() + m.at(f - 1, pelvis).y()) * m.fps * m.fps);
+            peak =
+                std::max(peak, std::abs(m.at(f + 1, pelvis).y() - 2 * m.at(f, pelvis).y() + m.at(f - 1, pelvis).y()) *
+                                   m.fps * m.fps);
         return peak;
     };
     ChairOptions natural, slow;
     slow.sit_down_s = 1.3 * natural.sit_down_s;
     slow.stand_up_s = 1.3 * natural.stand_up_s;
     slow.seated_s = 1.0;
-    const JointSequence a = stand_sit_stand(procedural_stand(200), natural), b = stand_sit_stand(procedural_stand(200), slow);
-    const double down_a = peak_vertical_acceleration(a, 1.0, 3.2), down_b = peak_vertical_acceleration(b, 1.0, 1.0 + slow.sit_down_s);
+    const JointSequence a = stand_sit_stand(procedural_stand(200), natural),
+                        b = stand_sit_stand(procedural_stand(200), slow);
+    const double down_a = peak_vertical_acceleration(a, 1.0, 3.2),
+                 down_b = peak_vertical_acceleration(b, 1.0, 1.0 + slow.sit_down_s);
     const double up_from_a = 6.2, up_from_b = 1.0 + slow.sit_down_s + 1.0;
-    const double up_a = peak_vertical_acceleration(a, up_from_a, up_from_a + 1.8), up_b = peak_vertical_acceleration(b, up_from_b, up_from_b + slow.stand_up_s);
+    const double up_a = peak_vertical_acceleration(a, up_from_a, up_from_a + 1.8),
+                 up_b = peak_vertical_acceleration(b, up_from_b, up_from_b + slow.stand_up_s);
     EXPECT_GT(down_a, 0.5);
     EXPECT_GT(up_a, 0.5);
     EXPECT_NEAR(down_a / down_b, 1.69, 0.2);
@@ -190,12 +199,17 @@ TEST(SitToStand, ACapturedIdleStandSitsDown) {
     const MotionQuality q = score_motion(m);
     double ankle_move = 0, seated_knee = 0;
     for (int f = 0; f < m.num_frames; ++f)
-        for (int leg = 0; leg < 2; ++leg) ankle_move = std::max(ankle_move, (m.at(f, kLegs[static_cast<size_t>(leg)].ankle) - m.at(0, kLegs[static_cast<size_t>(leg)].ankle)).norm());
+        for (int leg = 0; leg < 2; ++leg)
+            ankle_move = std::max(ankle_move, (m.at(f, kLegs[static_cast<size_t>(leg)].ankle) -
+                                               m.at(0, kLegs[static_cast<size_t>(leg)].ankle))
+                                                  .norm());
     for (int leg = 0; leg < 2; ++leg) seated_knee += 0.5 * knee_flexion_rad(m, 90, leg);
-    std::printf("[captured sit] frames %d, seated pelvis %.3f m, seated knee %.0f deg, ankle moved %.4f m, skate %.2f, penetration %.3f, "
-                "hover %.3f, max acc %.0f, pelvis acc %.1f\n",
-                m.num_frames, m.at(90, pelvis).y(), seated_knee * 180 / test::kPi, ankle_move, q.foot_skate_m_s, q.penetration_m, q.hover_m,
-                q.max_acc_m_s2, q.pelvis_acc_m_s2);
+    std::printf(
+        "[captured sit] frames %d, seated pelvis %.3f m, seated knee %.0f deg, ankle moved %.4f m, skate %.2f, "
+        "penetration %.3f, "
+        "hover %.3f, max acc %.0f, pelvis acc %.1f\n",
+        m.num_frames, m.at(90, pelvis).y(), seated_knee * 180 / test::kPi, ankle_move, q.foot_skate_m_s,
+        q.penetration_m, q.hover_m, q.max_acc_m_s2, q.pelvis_acc_m_s2);
     // The importer keeps ReActIdle's bones rigid (only the root's position channels count), and so does the edit.
     EXPECT_LT(max_bone_length_error(m, bone_lengths(stand, 0)), 1e-6);
     EXPECT_LT(ankle_move, 0.01);

@@ -74,7 +74,8 @@ TEST(SkeletonMap, LeftAndRightAreMirrored) {
                 EXPECT_NE(a.from, b.from) << m.flavour << " " << smpl22::kJointNames[j];
             }
             // Each SMPL joint has its own source point.
-            EXPECT_TRUE(used.insert(a.from + ">" + a.to + "@" + std::to_string(a.t)).second) << m.flavour << " " << smpl22::kJointNames[j];
+            EXPECT_TRUE(used.insert(a.from + ">" + a.to + "@" + std::to_string(a.t)).second)
+                << m.flavour << " " << smpl22::kJointNames[j];
         }
     }
 }

@@ -60,7 +60,8 @@ std::string write_test_model(const std::string& dir, std::mt19937_64& rng) {
             for (int c = 0; c < 3; ++c) {
                 shapedirs[static_cast<size_t>((3 * i + c) * kBetas + 0)] = c == 1 ? 0.1 * p.y() : 0.0;
                 shapedirs[static_cast<size_t>((3 * i + c) * kBetas + 1)] = 0.01 * n(rng);
-                for (int d = 0; d < kPoseDims; ++d) posedirs[static_cast<size_t>((3 * i + c) * kPoseDims + d)] = 1e-3 * n(rng);
+                for (int d = 0; d < kPoseDims; ++d)
+                    posedirs[static_cast<size_t>((3 * i + c) * kPoseDims + d)] = 1e-3 * n(rng);
             }
             weights[static_cast<size_t>(i * K + k)] = 1.0;
             regressor[static_cast<size_t>(k * V + i)] = 1.0 / kRing;
@@ -151,7 +152,8 @@ TEST(SmplModel, PoseBlendShapesAndBlendedSkinning) {
     const auto corrected = [&](int v) {
         Vector3d x = body.shaped_vertices().row(v).transpose();
         for (int c = 0; c < 3; ++c)
-            for (int d = 0; d < kPoseDims; ++d) x[c] += posedirs[static_cast<size_t>((3 * v + c) * kPoseDims + d)] * feature[d];
+            for (int d = 0; d < kPoseDims; ++d)
+                x[c] += posedirs[static_cast<size_t>((3 * v + c) * kPoseDims + d)] * feature[d];
         return x;
     };
     const Vector3d elbow = body.rest_joints()[left_elbow];

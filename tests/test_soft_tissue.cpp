@@ -70,10 +70,11 @@ TEST(SoftTissue, RungeKuttaGrowthMatchesItsStabilityLimitAndUnstableSettingsAreR
     // RK4 on the real axis is stable down to z = -2.785293563 (the real root of z^3 + 4 z^2 + 12 z + 24 = 0).
     const double limit = 2.785293563, dt = 1 / kAttachmentRateHz;
     const double zeta = 2, fast = zeta + std::sqrt(zeta * zeta - 1);  // the fast root, omega (zeta + sqrt(zeta^2 - 1))
-    const double f_limit = limit / (2 * M_PI * fast * dt);               // 118.8 Hz at zeta = 2
+    const double f_limit = limit / (2 * M_PI * fast * dt);            // 118.8 Hz at zeta = 2
     EXPECT_LE(rk4_growth_per_step({f_limit * 0.999, zeta}, dt), 1.0);
     EXPECT_GT(rk4_growth_per_step({f_limit * 1.001, zeta}, dt), 1.0);
-    EXPECT_LT(rk4_growth_per_step({200, 0.5}, dt), 1.0);  // underdamped at the top of the range: |z| = 1.26, well inside
+    EXPECT_LT(rk4_growth_per_step({200, 0.5}, dt),
+              1.0);  // underdamped at the top of the range: |z| = 1.26, well inside
     EXPECT_EQ(rk4_growth_per_step({}, dt), 0.0);
     // What the growth means: the documented tissue_hz = 150 with tissue_damping = 2 rings without bound.
     std::vector<Vector3d> step(2000, Vector3d(0, 9.81, 0));
@@ -81,9 +82,12 @@ TEST(SoftTissue, RungeKuttaGrowthMatchesItsStabilityLimitAndUnstableSettingsAreR
     EXPECT_TRUE(!last.allFinite() || last.norm() > 1e6) << last.transpose();
     EXPECT_LT(spring_mass_response(step, dt, {118, 2}).acceleration.back().norm(), 1e-6);  // just stable: settles
     // The realism table refuses the unstable pairs, naming both keys; the stable side of the bound is accepted.
-    for (const char* toml : {"tissue_hz = 150\ntissue_damping = 2\n", "tissue_hz = 200\ntissue_damping = 1.5\n", "strap_hz = 150\nstrap_damping = 2\n"}) {
+    for (const char* toml : {"tissue_hz = 150\ntissue_damping = 2\n", "tissue_hz = 200\ntissue_damping = 1.5\n",
+                             "strap_hz = 150\nstrap_damping = 2\n"}) {
         const std::string m = test::error_message([&] { parse_realism_toml(toml, "r.toml"); });
-        EXPECT_TRUE(test::contains(m, "r.toml") && test::contains(m, "_hz with ") && test::contains(m, "_damping") && test::contains(m, "stable")) << m;
+        EXPECT_TRUE(test::contains(m, "r.toml") && test::contains(m, "_hz with ") && test::contains(m, "_damping") &&
+                    test::contains(m, "stable"))
+            << m;
     }
     EXPECT_NO_THROW(parse_realism_toml("tissue_hz = 200\ntissue_damping = 1.3\n", "r.toml"));
     EXPECT_NO_THROW(parse_realism_toml("strap_hz = 118\nstrap_damping = 2\n", "r.toml"));

@@ -34,15 +34,18 @@ std::vector<Prose> comments_and_strings(const std::string& s) {
         if (s.compare(i, 2, "//") == 0) {
             const size_t end = std::min(s.find('\n', i), s.size());
             std::string body = s.substr(i + 2, end - i - 2);
-            if (!out.empty() && last_line_comment_end == line - 1) out.back().text += " " + body;
-            else out.push_back({line, body});
+            if (!out.empty() && last_line_comment_end == line - 1)
+                out.back().text += " " + body;
+            else
+                out.push_back({line, body});
             advance(end);
             last_line_comment_end = line;
         } else if (s.compare(i, 2, "/*") == 0) {
             const size_t end = std::min(s.find("*/", i + 2), s.size());
             out.push_back({line, s.substr(i + 2, end - i - 2)});
             advance(end + 2);
-        } else if (s[i] == 'R' && i + 1 < s.size() && s[i + 1] == '"' && (i == 0 || !std::isalnum(static_cast<unsigned char>(s[i - 1])))) {
+        } else if (s[i] == 'R' && i + 1 < s.size() && s[i + 1] == '"' &&
+                   (i == 0 || !std::isalnum(static_cast<unsigned char>(s[i - 1])))) {
             const size_t open = s.find('(', i);
             const std::string close = ")" + s.substr(i + 2, open - i - 2) + "\"";
             const size_t end = std::min(s.find(close, open), s.size());
@@ -107,12 +110,14 @@ TEST(SourceComments, TheScannerFindsFiguresAndDatesInCommentsAndStringsOnly) {
         "// a second line\n"
         "const char* f = \"%5.1f%%\", *css = \"img{max-width:100%}\";\n"
         "/* made 4 December 2026 */ auto r = R\"x(raw \"50%\" text)x\";\n"
-        "// why, in a line (docs/realism.md#the-trunks-sway-2026-12-03; docs/realism.md, \"Lying turns (2026-12-03)\")\n");
+        "// why, in a line (docs/realism.md#the-trunks-sway-2026-12-03; docs/realism.md, \"Lying turns "
+        "(2026-12-03)\")\n");
     ASSERT_EQ(prose.size(), 6u);
     EXPECT_EQ(prose[0].text, " HAR rose to 72.2 % (2026-12-06)  a second line");
     EXPECT_EQ(prose[3].line, 4);
     const std::vector<std::string> found = lab_notes(prose);
-    ASSERT_EQ(found.size(), 3u);  // the comment, the block comment, the raw string; not the format, CSS, `7 % 2`, pointers
+    ASSERT_EQ(found.size(),
+              3u);  // the comment, the block comment, the raw string; not the format, CSS, `7 % 2`, pointers
     EXPECT_NE(found[0].find("\" 72.2 %\""), std::string::npos) << found[0];
     EXPECT_NE(found[1].find("December 2026"), std::string::npos) << found[1];
     EXPECT_NE(found[2].find("\"50%\""), std::string::npos) << found[2];
@@ -123,7 +128,8 @@ TEST(SourceComments, NoMeasuredPercentageOrDateInSrc) {
     EXPECT_GE(files.size(), 200u);
     for (const SourceFile& f : files)
         for (const std::string& note : lab_notes(f.prose))
-            ADD_FAILURE() << "src/" << f.name << ":" << note << "\n  (figures and dates go to docs/results.md or docs/realism.md)";
+            ADD_FAILURE() << "src/" << f.name << ":" << note
+                          << "\n  (figures and dates go to docs/results.md or docs/realism.md)";
 }
 
 // Each pointer (kPointer) names a file that exists, and its anchor or quoted heading is one of that file's headings.
@@ -134,7 +140,8 @@ TEST(SourceComments, EveryPointerIntoReadmeOrDocsResolves) {
         for (const Prose& p : f.prose) {
             for (std::sregex_iterator it(p.text.begin(), p.text.end(), kPointer), end; it != end; ++it) {
                 const std::string page = (*it)[1].str() == "README" ? "README.md" : (*it)[1].str();
-                const std::string anchor = (*it)[3], heading = std::regex_replace((*it)[7].str(), std::regex(" +"), " ");
+                const std::string anchor = (*it)[3],
+                                  heading = std::regex_replace((*it)[7].str(), std::regex(" +"), " ");
                 const std::string where = "src/" + f.name + ":" + std::to_string(p.line) + ": " + it->str();
                 ++pointers;
                 if (!fs::exists(root / page)) {

@@ -40,7 +40,10 @@ TEST(Splits, EverySourceIsDealtOnItsOwnAndNeighbouringNamesScatter) {
     const auto splits = assign_splits(keys);
     int train = 0, total = 0;
     for (const auto& [k, s] : splits)
-        if (k.rfind("ReActIdle/", 0) == 0) { total += 12; train += s == Split::train ? 12 : 0; }
+        if (k.rfind("ReActIdle/", 0) == 0) {
+            total += 12;
+            train += s == Split::train ? 12 : 0;
+        }
     EXPECT_GE(train, 0.70 * total);
     EXPECT_LE(train, 0.85 * total);
 }

@@ -22,10 +22,10 @@ namespace {
 using Eigen::Vector3d;
 using namespace smpl22;
 
-using test::procedural_walk;
-using test::kWalkPelvisHeight;
 using test::kAnkleHeight;
 using test::kToeHeight;
+using test::kWalkPelvisHeight;
+using test::procedural_walk;
 
 StairOptions stairs(bool ascend, double rise = 0.17) {
     StairOptions o = default_stair_options(ascend);
@@ -35,7 +35,8 @@ StairOptions stairs(bool ascend, double rise = 0.17) {
 
 double lowest_toe(const JointSequence& m, const StairFoothold& h) {
     double low = 1e9;
-    for (int f = h.first_frame; f <= h.last_frame; ++f) low = std::min(low, m.at(f, kLegs[static_cast<size_t>(h.foot)].toe).y());
+    for (int f = h.first_frame; f <= h.last_frame; ++f)
+        low = std::min(low, m.at(f, kLegs[static_cast<size_t>(h.foot)].toe).y());
     return low;
 }
 
@@ -69,7 +70,8 @@ TEST(StairGait, NoJointGoesThroughATread) {
         const StairMotion s = derive_stairs(procedural_walk(6.0), stairs(ascend));
         double deepest = 0;
         for (int f = 0; f < s.motion.num_frames; ++f)
-            for (int j = 0; j < kNumJoints; ++j) deepest = std::max(deepest, s.stairs.height_at(s.motion.at(f, j)) - s.motion.at(f, j).y());
+            for (int j = 0; j < kNumJoints; ++j)
+                deepest = std::max(deepest, s.stairs.height_at(s.motion.at(f, j)) - s.motion.at(f, j).y());
         EXPECT_LE(deepest, 0.0) << (ascend ? "ascent" : "descent");
     }
 }
@@ -79,8 +81,9 @@ TEST(StairGait, TheClimbGainsOneRisePerStep) {
     const StairFoothold &first = s.footholds.front(), &last = s.footholds.back();
     EXPECT_NEAR(lowest_toe(s.motion, last) - lowest_toe(s.motion, first), (last.tread - first.tread) * 0.17, 1e-3);
     const int end = s.motion.num_frames - 1;  // the leading foot ends on the top tread
-    EXPECT_NEAR(std::max(s.stairs.height_at(s.motion.at(end, left_foot)), s.stairs.height_at(s.motion.at(end, right_foot))),
-                s.stairs.steps * 0.17, 1e-12);
+    EXPECT_NEAR(
+        std::max(s.stairs.height_at(s.motion.at(end, left_foot)), s.stairs.height_at(s.motion.at(end, right_foot))),
+        s.stairs.steps * 0.17, 1e-12);
     // The pelvis rises with the feet: over the clip by the rise times the treads climbed, within one step.
     const double pelvis_gain = s.motion.at(s.motion.num_frames - 1, pelvis).y() - s.motion.at(0, pelvis).y();
     EXPECT_NEAR(pelvis_gain, (last.tread - first.tread) * 0.17, 0.17);
@@ -104,7 +107,8 @@ TEST(StairGait, DescentIsTheAscentReversed) {
 
 TEST(StairGait, BonesKeepTheirLengths) {
     const JointSequence walk = procedural_walk(6.0);
-    for (bool ascend : {true, false}) EXPECT_LT(max_bone_length_error(walk_to_stairs(walk, stairs(ascend)), bone_lengths(walk, 0)), 1e-6);
+    for (bool ascend : {true, false})
+        EXPECT_LT(max_bone_length_error(walk_to_stairs(walk, stairs(ascend)), bone_lengths(walk, 0)), 1e-6);
 }
 
 TEST(StairGait, WithoutRiseThePelvisStaysAtTheWalksHeight) {
@@ -129,7 +133,8 @@ TEST(StairGait, ClimbingBendsTheKneesMoreAndLeansTheTrunk) {
     const JointSequence up = walk_to_stairs(walk, stairs(true));
     auto peak_knee = [](const JointSequence& m) {
         double peak = 0;
-        for (int f = 0; f < m.num_frames; ++f) peak = std::max({peak, knee_flexion_rad(m, f, 0), knee_flexion_rad(m, f, 1)});
+        for (int f = 0; f < m.num_frames; ++f)
+            peak = std::max({peak, knee_flexion_rad(m, f, 0), knee_flexion_rad(m, f, 1)});
         return peak;
     };
     EXPECT_GT(peak_knee(up), peak_knee(walk) + 0.3);
@@ -158,7 +163,8 @@ TEST(StairGait, TheEditIsTheSameAtAnyFrameRate) {
         EXPECT_EQ(at_60.stairs.steps, at_20.stairs.steps);
         EXPECT_EQ(at_60.footholds.size(), at_20.footholds.size());
         EXPECT_NEAR(at_60.motion.num_frames / 60.0, at_20.motion.num_frames / 20.0, 0.1);
-        const double rms_20 = pelvis_vertical_acceleration_rms(at_20.motion), rms_60 = pelvis_vertical_acceleration_rms(at_60.motion);
+        const double rms_20 = pelvis_vertical_acceleration_rms(at_20.motion),
+                     rms_60 = pelvis_vertical_acceleration_rms(at_60.motion);
         EXPECT_NEAR(rms_60, rms_20, 0.2 * rms_20) << rms_60 << " against " << rms_20;
     }
 }
@@ -166,9 +172,11 @@ TEST(StairGait, TheEditIsTheSameAtAnyFrameRate) {
 TEST(StairGait, PassesTheQualityCheckAgainstTheTreads) {
     for (bool ascend : {true, false}) {
         const StairMotion s = derive_stairs(procedural_walk(6.0), stairs(ascend));
-        const MotionQuality q = score_motion_on_ground(s.motion, [&](const Vector3d& p, int) { return s.stairs.height_at(p); });
+        const MotionQuality q =
+            score_motion_on_ground(s.motion, [&](const Vector3d& p, int) { return s.stairs.height_at(p); });
         EXPECT_TRUE(quality_failures(q, default_quality_thresholds()).empty())
-            << "skate " << q.foot_skate_m_s << " acc " << q.max_acc_m_s2 << " pelvis acc " << q.pelvis_acc_m_s2 << " hover " << q.hover_m;
+            << "skate " << q.foot_skate_m_s << " acc " << q.max_acc_m_s2 << " pelvis acc " << q.pelvis_acc_m_s2
+            << " hover " << q.hover_m;
         EXPECT_LT(q.pelvis_acc_m_s2, 30.0);
     }
 }
@@ -188,7 +196,8 @@ TEST(StairGait, RefusesBadOptionsNamingTheField) {
 
 TEST(StairGait, RefusesAMotionThatDoesNotWalk) {
     JointSequence still = procedural_walk(6.0);
-    for (int f = 0; f < still.num_frames; ++f) still.positions[static_cast<size_t>(f * kNumJoints)] = still.at(0, pelvis);
+    for (int f = 0; f < still.num_frames; ++f)
+        still.positions[static_cast<size_t>(f * kNumJoints)] = still.at(0, pelvis);
     EXPECT_THROW(walk_to_stairs(still, stairs(true)), Error);
 }
 
@@ -209,13 +218,17 @@ TEST(StairGait, ACapturedWalkClimbsAndDescends) {
     for (bool ascend : {true, false}) {
         const StairMotion s = derive_stairs(walk, stairs(ascend));
         EXPECT_LT(max_bone_length_error(s.motion, bone_lengths(walk, 0)), 1e-6);
-        const MotionQuality q = score_motion_on_ground(s.motion, [&](const Vector3d& p, int) { return s.stairs.height_at(p); });
+        const MotionQuality q =
+            score_motion_on_ground(s.motion, [&](const Vector3d& p, int) { return s.stairs.height_at(p); });
         double peak_knee = 0;
-        for (int f = 0; f < s.motion.num_frames; ++f) peak_knee = std::max({peak_knee, knee_flexion_rad(s.motion, f, 0), knee_flexion_rad(s.motion, f, 1)});
-        std::printf("[captured %s] frames %d, steps %d, footholds %zu, knee peak %.1f deg, skate %.2f m/s, "
-                    "penetration %.3f m, hover %.3f m, max acc %.0f, pelvis acc %.1f m/s^2\n",
-                    ascend ? "ascent" : "descent", s.motion.num_frames, s.stairs.steps, s.footholds.size(), peak_knee * 180 / test::kPi,
-                    q.foot_skate_m_s, q.penetration_m, q.hover_m, q.max_acc_m_s2, q.pelvis_acc_m_s2);
+        for (int f = 0; f < s.motion.num_frames; ++f)
+            peak_knee = std::max({peak_knee, knee_flexion_rad(s.motion, f, 0), knee_flexion_rad(s.motion, f, 1)});
+        std::printf(
+            "[captured %s] frames %d, steps %d, footholds %zu, knee peak %.1f deg, skate %.2f m/s, "
+            "penetration %.3f m, hover %.3f m, max acc %.0f, pelvis acc %.1f m/s^2\n",
+            ascend ? "ascent" : "descent", s.motion.num_frames, s.stairs.steps, s.footholds.size(),
+            peak_knee * 180 / test::kPi, q.foot_skate_m_s, q.penetration_m, q.hover_m, q.max_acc_m_s2,
+            q.pelvis_acc_m_s2);
         EXPECT_GE(s.stairs.steps, 4);
         EXPECT_TRUE(quality_failures(q, default_quality_thresholds()).empty());
     }

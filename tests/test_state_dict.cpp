@@ -25,7 +25,8 @@ struct Small : torch::nn::Module {
 
 NdArray array_of(const torch::Tensor& t) {
     const torch::Tensor c = t.detach().contiguous();
-    return NdArray::from(std::vector<float>(c.data_ptr<float>(), c.data_ptr<float>() + c.numel()), std::vector<int64_t>(c.sizes().begin(), c.sizes().end()));
+    return NdArray::from(std::vector<float>(c.data_ptr<float>(), c.data_ptr<float>() + c.numel()),
+                         std::vector<int64_t>(c.sizes().begin(), c.sizes().end()));
 }
 
 bool same_parameters(torch::nn::Module& a, torch::nn::Module& b) {
@@ -42,7 +43,8 @@ TEST(StateDict, NestedRegistrationGivesDottedReferenceNames) {
     std::vector<std::string> names;
     for (const auto& p : m.named_parameters()) names.push_back(p.key());
     // A module's own parameters come before its children's (libtorch's order, as PyTorch's state_dict).
-    EXPECT_EQ(names, (std::vector<std::string>{"proj", "encoder.layer.0.dense.weight", "encoder.layer.0.dense.bias", "head.weight", "head.bias"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"proj", "encoder.layer.0.dense.weight", "encoder.layer.0.dense.bias",
+                                               "head.weight", "head.bias"}));
 }
 
 TEST(StateDict, SaveThenLoadGivesTheSameParametersBitForBit) {
@@ -94,7 +96,8 @@ TEST(StateDict, PrefixedLayoutReadsOnePartOfALargerFile) {
     SafeTensors st;
     for (const auto& p : a.named_parameters()) st.tensors["model." + p.key()] = array_of(p.value());
     st.tensors["other.thing"] = NdArray::from(std::vector<float>(2, 1.f), {2});
-    EXPECT_NE(test::error_message([&] { load_state_dict(b, st, "f", prefixed_layout("model.")); }).find("other.thing"), std::string::npos);
+    EXPECT_NE(test::error_message([&] { load_state_dict(b, st, "f", prefixed_layout("model.")); }).find("other.thing"),
+              std::string::npos);
     load_state_dict(b, st, "f", prefixed_layout("model.", true));
     EXPECT_TRUE(same_parameters(a, b));
 }

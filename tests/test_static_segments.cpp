@@ -27,8 +27,8 @@ ImuRecording moving_then_still(double offset_x, uint64_t seed) {
         const double t = k / 50.0;
         const double swing = t < 4 ? std::sin(2 * M_PI * 1.5 * t) : 0;
         r.t.push_back(t);
-        r.samples.push_back({2 * swing + acc_noise(rng), 9.80665 + acc_noise(rng), acc_noise(rng), offset_x + gyr_noise(rng), gyr_noise(rng),
-                             swing + gyr_noise(rng)});
+        r.samples.push_back({2 * swing + acc_noise(rng), 9.80665 + acc_noise(rng), acc_noise(rng),
+                             offset_x + gyr_noise(rng), gyr_noise(rng), swing + gyr_noise(rng)});
     }
     return r;
 }
@@ -39,7 +39,8 @@ TEST(StaticSegments, QuietestWindowReadsNoiseAndOffsetBack) {
     const nlohmann::json j = quietest_window_statistics(moving_then_still(0.01, 1), 2.0);
     EXPECT_GE(j["window_start_s"].get<double>(), 4.0);  // in the still part
     for (const char* axis : {"x", "y", "z"}) {
-        EXPECT_NEAR(j[std::string("acc_sd_") + axis].get<double>(), 0.02, 0.004) << axis;   // 100 samples: sd within ~15 %
+        EXPECT_NEAR(j[std::string("acc_sd_") + axis].get<double>(), 0.02, 0.004)
+            << axis;  // 100 samples: sd within ~15 %
         EXPECT_NEAR(j[std::string("gyr_sd_") + axis].get<double>(), 0.003, 0.0006) << axis;
     }
     EXPECT_NEAR(j["gyr_mean_x"].get<double>(), 0.01, 0.001);  // the offset, to 3 standard errors

@@ -40,22 +40,32 @@ TEST(SubjectDraw, SeededSortedAndDifferentPerRepeat) {
 
 TEST(SubjectDraw, RefusesWhatCannotBeDrawn) {
     const std::vector<std::string> all = subjects_of(3);
-    EXPECT_TRUE(test::contains(test::error_message([&] { draw_subjects(all, 3, 0, 0); }), "--train-subjects: 3: expected from 0 to 2"));
+    EXPECT_TRUE(test::contains(test::error_message([&] { draw_subjects(all, 3, 0, 0); }),
+                               "--train-subjects: 3: expected from 0 to 2"));
     EXPECT_TRUE(test::contains(test::error_message([&] { draw_subjects(all, -1, 0, 0); }), "--train-subjects"));
     std::vector<std::string> unnamed = all;
     unnamed.push_back("");
-    EXPECT_TRUE(test::contains(test::error_message([&] { draw_subjects(unnamed, 1, 0, 0); }), "recordings name their subject"));
-    EXPECT_TRUE(test::contains(test::error_message([&] { draw_subjects({"sisfall:SA01", "sisfall:"}, 1, 0, 0); }), "recordings name their subject"));
+    EXPECT_TRUE(
+        test::contains(test::error_message([&] { draw_subjects(unnamed, 1, 0, 0); }), "recordings name their subject"));
+    EXPECT_TRUE(test::contains(test::error_message([&] {
+                                   draw_subjects({"sisfall:SA01", "sisfall:"}, 1, 0, 0);
+                               }),
+                               "recordings name their subject"));
 }
 
 TEST(SubjectDraw, SplitRefusesATestSubjectInATrainingSet) {
     const std::vector<std::string> real = {"SA01", "SA02", "SA03"}, synthetic = {"male_average", "female_tall"};
     EXPECT_NO_THROW(check_subject_split({synthetic, real}, {"syn", "real"}, real, 1, 2));
-    const std::string e = test::error_message([&] { check_subject_split({synthetic, {"SA02"}}, {"syn", "other"}, real, -1, 0); });
+    const std::string e = test::error_message([&] {
+        check_subject_split({synthetic, {"SA02"}}, {"syn", "other"}, real, -1, 0);
+    });
     EXPECT_TRUE(test::contains(e, "--train: other: expected no subject of the --test set (SA02 is in both")) << e;
     // The same folder as training and test set without a draw: every subject is in both.
-    EXPECT_TRUE(test::contains(test::error_message([&] { check_subject_split({real}, {"real"}, real, -1, 0); }), "SA01 is in both"));
-    EXPECT_TRUE(test::contains(test::error_message([&] { check_subject_split({synthetic, real}, {"syn", "real"}, real, 1, 3); }),
+    EXPECT_TRUE(test::contains(test::error_message([&] { check_subject_split({real}, {"real"}, real, -1, 0); }),
+                               "SA01 is in both"));
+    EXPECT_TRUE(test::contains(test::error_message([&] {
+                                   check_subject_split({synthetic, real}, {"syn", "real"}, real, 1, 3);
+                               }),
                                "at least one is left to test on"));
 }
 
@@ -80,17 +90,30 @@ TEST(SubjectDraw, SharesAreHonouredToWithinOneWindow) {
         seen += b[0] + b[1] + b[2];
         for (size_t i = 0; i < 3; ++i) sum[i] += b[i];
         EXPECT_EQ(b[0] + b[1] + b[2], 20u);
-        for (size_t i = 0; i < 3; ++i) EXPECT_LE(std::abs(static_cast<double>(sum[i]) - std::vector<double>{0.5, 0.45, 0.05}[i] * static_cast<double>(seen)), 1.0);
+        for (size_t i = 0; i < 3; ++i)
+            EXPECT_LE(std::abs(static_cast<double>(sum[i]) -
+                               std::vector<double>{0.5, 0.45, 0.05}[i] * static_cast<double>(seen)),
+                      1.0);
     }
-    EXPECT_EQ(seen, 2000u);  // 1000 / 0.5
+    EXPECT_EQ(seen, 2000u);                                        // 1000 / 0.5
     EXPECT_EQ(batch_counts({0.5, 0.5}, {10, 40}, 64).size(), 1u);  // shorter than a batch: one short batch of 20
 }
 
 TEST(SubjectDraw, SharesAreCheckedBeforeTraining) {
     EXPECT_NO_THROW(check_shares({}, 2, 64, "--train-share"));
     EXPECT_NO_THROW(check_shares({0.25, 0.75}, 2, 64, "--train-share"));
-    EXPECT_TRUE(test::contains(test::error_message([] { check_shares({0.5}, 2, 64, "--train-share"); }), "2 shares, one per --train"));
-    EXPECT_TRUE(test::contains(test::error_message([] { check_shares({0.5, 0.6}, 2, 64, "--train-share"); }), "add up to 1"));
-    EXPECT_TRUE(test::contains(test::error_message([] { check_shares({0.995, 0.005}, 2, 64, "--train-share"); }), "at least one window"));
-    EXPECT_TRUE(test::contains(test::error_message([] { check_shares({1.5, -0.5}, 2, 64, "--train-share"); }), "--train-share"));
+    EXPECT_TRUE(test::contains(test::error_message([] { check_shares({0.5}, 2, 64, "--train-share"); }),
+                               "2 shares, one per --train"));
+    EXPECT_TRUE(test::contains(test::error_message([] {
+                                   check_shares({0.5, 0.6}, 2, 64, "--train-share");
+                               }),
+                               "add up to 1"));
+    EXPECT_TRUE(test::contains(test::error_message([] {
+                                   check_shares({0.995, 0.005}, 2, 64, "--train-share");
+                               }),
+                               "at least one window"));
+    EXPECT_TRUE(test::contains(test::error_message([] {
+                                   check_shares({1.5, -0.5}, 2, 64, "--train-share");
+                               }),
+                               "--train-share"));
 }

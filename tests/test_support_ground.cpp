@@ -58,9 +58,11 @@ TEST(SupportGround, StairFootholdsStandOnTheirTreads) {
         // last stances are cut by the clip's ends, maybe shorter than a stance that counts.
         for (size_t k = 1; k + 1 < s.footholds.size(); ++k) {
             const StairFoothold& h = s.footholds[k];
-            const int f = (h.first_frame + h.last_frame) / 2, toe = h.foot == Foot::left ? smpl22::left_foot : smpl22::right_foot;
+            const int f = (h.first_frame + h.last_frame) / 2,
+                      toe = h.foot == Foot::left ? smpl22::left_foot : smpl22::right_foot;
             const Vector3d& p = s.motion.at(f, toe);
-            EXPECT_NEAR(ground.height_at(p, f), s.stairs.height_at(p) < 0.1 ? 0.0 : s.stairs.height_at(p) + test::kToeHeight, 1e-3)
+            EXPECT_NEAR(ground.height_at(p, f),
+                        s.stairs.height_at(p) < 0.1 ? 0.0 : s.stairs.height_at(p) + test::kToeHeight, 1e-3)
                 << (ascend ? "ascent" : "descent") << ", tread " << h.tread;
         }
         // Above the floor alone the flight hovers (what the filter measured before); above its footholds it passes.
@@ -94,7 +96,8 @@ TEST(SupportGround, ABodyThatRisesWithoutLandingOnTreadsHovers) {
     // A sudden sink: standing 0.4 m up, then on the floor after one frame, in the same place, is no step down.
     JointSequence sink = test::procedural_walk(2.0);
     for (int f = 0; f < sink.num_frames; ++f)
-        for (int j = 0; j < sink.num_joints; ++j) sink.at(f, j) = sink.at(0, j) + Vector3d(0, f < sink.num_frames / 2 ? 0.4 : 0.0, 0);
+        for (int j = 0; j < sink.num_joints; ++j)
+            sink.at(f, j) = sink.at(0, j) + Vector3d(0, f < sink.num_frames / 2 ? 0.4 : 0.0, 0);
     EXPECT_TRUE(SupportGround(sink).raised_footholds().empty());
     EXPECT_TRUE(fails(score_motion(sink), "hover"));
 }
@@ -156,8 +159,8 @@ TEST(SupportGround, EveryFlightDerivedFromTheSharedWalksPasses) {
             place_on_floor(at_20);
             const MotionQuality q = score_motion(at_20);
             EXPECT_TRUE(quality_failures(q, default_quality_thresholds()).empty())
-                << file << (ascend ? " up" : " down") << ": hover " << q.hover_m << " penetration " << q.penetration_m << " skate "
-                << q.foot_skate_m_s;
+                << file << (ascend ? " up" : " down") << ": hover " << q.hover_m << " penetration " << q.penetration_m
+                << " skate " << q.foot_skate_m_s;
             ++flights;
         }
     }

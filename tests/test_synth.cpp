@@ -41,7 +41,8 @@ const TinySetup& tiny() {
         t.model = t.dir + "/model";
         train_mdm(read_train_config(test::write_tiny_train_config(t.dir, t.data, t.model)), false, "", 10);
         t.prompts = t.dir + "/prompts.tsv";
-        std::ofstream(t.prompts) << "# two activities\nwalking\ta person walks forward slowly\nrunning\tsomeone walks\n";
+        std::ofstream(t.prompts)
+            << "# two activities\nwalking\ta person walks forward slowly\nrunning\tsomeone walks\n";
         return t;
     }();
     return s;
@@ -76,7 +77,8 @@ double max_difference(const std::string& a, const std::string& b) {
     if (x.rows.size() != y.rows.size() || x.header != y.header) return INFINITY;
     double worst = 0;
     for (size_t r = 0; r < x.rows.size(); ++r)
-        for (size_t c = 0; c < x.header.size(); ++c) worst = std::max(worst, std::fabs(x.number(r, c) - y.number(r, c)));
+        for (size_t c = 0; c < x.header.size(); ++c)
+            worst = std::max(worst, std::fabs(x.number(r, c) - y.number(r, c)));
     return worst;
 }
 
@@ -147,7 +149,8 @@ TEST(Synth, ResumeRedoesOnlyUnfinishedJobs) {
     const auto untouched = fs::last_write_time(csv_of(out, "j00001", "male_average"));
     fs::remove(out + "/jobs/j00002.json");  // as if killed before job 2 finished
     fs::remove(csv_of(out, "j00002", "female_short"));
-    const std::string temporary = fs::path(csv_of(out, "j00002", "male_average")).parent_path().string() + "/.waist.csv.tmp999999999";
+    const std::string temporary =
+        fs::path(csv_of(out, "j00002", "male_average")).parent_path().string() + "/.waist.csv.tmp999999999";
     std::ofstream(temporary) << "t,acc_x\n0,";  // a write the kill cut short
     const nlohmann::json r = synth_report_json(run_synth(tiny_options(out)));
     EXPECT_EQ(r["this_run"]["jobs_run"], 1);
@@ -182,9 +185,10 @@ TEST(Synth, ResumeRedoesJobsWhoseMotionOrMarkerWasDamagedAndNamesABadSettingsFil
     SynthOptions o = tiny_options(out);
     o.bodies = "preset:male_average";
     run_synth(o);
-    fs::remove(out + "/motions/j00000.bvh");                                                     // deleted by hand
-    fs::resize_file(out + "/motions/j00001_joints.npy", fs::file_size(out + "/motions/j00001_joints.npy") - 8);  // cut short
-    std::ofstream(out + "/jobs/j00002.json") << "{\"job\": \"j00002\", \"kept";                   // a marker cut short
+    fs::remove(out + "/motions/j00000.bvh");  // deleted by hand
+    fs::resize_file(out + "/motions/j00001_joints.npy",
+                    fs::file_size(out + "/motions/j00001_joints.npy") - 8);      // cut short
+    std::ofstream(out + "/jobs/j00002.json") << "{\"job\": \"j00002\", \"kept";  // a marker cut short
     const auto untouched = fs::last_write_time(out + "/motions/j00003.bvh");
     EXPECT_EQ(run_synth(o).this_run.jobs_run, 3);
     EXPECT_TRUE(fs::exists(out + "/motions/j00000.bvh"));
@@ -204,7 +208,9 @@ TEST(Synth, ResumeRedoesJobsWhoseMotionOrMarkerWasDamagedAndNamesABadSettingsFil
         run_synth(o);
         FAIL() << "a damaged synth.json was read";
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("synth.json: json: expected a JSON document (got parse error at line 1"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("synth.json: json: expected a JSON document (got parse error at line 1"),
+                  std::string::npos)
+            << e.what();
     }
 }
 
@@ -217,15 +223,18 @@ TEST(Synth, ShardsAddUpToTheWholeRun) {
         o.shards = 2;
         EXPECT_EQ(run_synth(o).this_run.jobs_run, 2);
     }
-    const nlohmann::json merged = synth_report_json(run_synth(tiny_options(sharded)));  // nothing left to do: rebuilds the manifest
+    const nlohmann::json merged =
+        synth_report_json(run_synth(tiny_options(sharded)));  // nothing left to do: rebuilds the manifest
     EXPECT_EQ(merged["this_run"]["jobs_run"], 0);
     EXPECT_EQ(read_file_text(sharded + "/manifest.csv"), read_file_text(whole + "/manifest.csv"));
     for (const char* job : {"j00000", "j00003"})
-        EXPECT_LT(max_difference(csv_of(sharded, job, "male_average"), csv_of(whole, job, "male_average")), 1e-3) << job;
+        EXPECT_LT(max_difference(csv_of(sharded, job, "male_average"), csv_of(whole, job, "male_average")), 1e-3)
+            << job;
     // The same run twice gives the same bytes.
     const std::string again = test::scratch_dir("synth_whole_again");
     run_synth(tiny_options(again));
-    EXPECT_TRUE(read_file_bytes(csv_of(again, "j00003", "female_short")) == read_file_bytes(csv_of(whole, "j00003", "female_short")));
+    EXPECT_TRUE(read_file_bytes(csv_of(again, "j00003", "female_short")) ==
+                read_file_bytes(csv_of(whole, "j00003", "female_short")));
 }
 
 TEST(Synth, RefusesAFolderMadeWithOtherSettings) {
@@ -310,15 +319,16 @@ TEST(Synth, RetrievalGivesCapturedMotionThatPassesTheFilter) {
     EXPECT_EQ(read_npy(out + "/motions/j00000_joints.npy").shape, (std::vector<int64_t>{40, 22, 3}));
 }
 
-// capture_rate (on by default): the sensors see the retrieved clip's capture-rate copy (here 60 fps, the clip's frames joined by
-// Catmull-Rom curves: test::add_capture_copies), recorded in synth.json and each marker; the recordings keep their
-// rate and length, and differ from the 20 fps ones (the same motion, sampled otherwise) by less than the signal.
+// capture_rate (on by default): the sensors see the retrieved clip's capture-rate copy (here 60 fps, the clip's frames
+// joined by Catmull-Rom curves: test::add_capture_copies), recorded in synth.json and each marker; the recordings keep
+// their rate and length, and differ from the 20 fps ones (the same motion, sampled otherwise) by less than the signal.
 TEST(Synth, CaptureRateCopiesReachTheSensors) {
     const std::string data = test::scratch_dir("synth_capture_rate_data");
     fs::remove_all(data);
     fs::copy(tiny().data, data, fs::copy_options::recursive);
     test::add_capture_copies(data, {"c0", "c1", "c2", "c3", "c4", "c5"});
-    const std::string out20 = test::scratch_dir("synth_capture_rate_20"), out60 = test::scratch_dir("synth_capture_rate_60");
+    const std::string out20 = test::scratch_dir("synth_capture_rate_20"),
+                      out60 = test::scratch_dir("synth_capture_rate_60");
     SynthOptions o = tiny_options(out20);
     o.model = "retrieval:" + data;
     o.vocab = data + "/vocab.safetensors";
@@ -336,7 +346,8 @@ TEST(Synth, CaptureRateCopiesReachTheSensors) {
         EXPECT_DOUBLE_EQ(m60["sensor_motion_fps"].get<double>(), 60);
         EXPECT_FALSE(m20.contains("sensor_motion_fps"));
         EXPECT_EQ(m60["source_draw"], m20["source_draw"]);
-        const CsvTable a = read_csv(csv_of(out20, job, "male_average")), b = read_csv(csv_of(out60, job, "male_average"));
+        const CsvTable a = read_csv(csv_of(out20, job, "male_average")),
+                       b = read_csv(csv_of(out60, job, "male_average"));
         ASSERT_EQ(a.rows.size(), b.rows.size());
         double diff = 0, signal = 0;  // vertical acceleration (SisFall's y): rms of the difference and of the signal
         for (size_t r = 0; r < a.rows.size(); ++r) {
@@ -370,11 +381,13 @@ TEST(Synth, FilterRegeneratesThenDropsWhatNeverPasses) {
 
 TEST(Synth, CommandLineRunsAndRefusesABadShard) {
     const std::string out = test::scratch_dir("synth_cli");
-    const auto bad = test::run_cli("synth --prompts " + tiny().prompts + " --model " + tiny().model + " --shard 3/2 --out " + out);
+    const auto bad =
+        test::run_cli("synth --prompts " + tiny().prompts + " --model " + tiny().model + " --shard 3/2 --out " + out);
     EXPECT_NE(bad.exit_code, 0);
     EXPECT_NE(bad.output.find("--shard"), std::string::npos) << bad.output;
-    const auto ok = test::run_cli("--threads 1 synth --prompts " + tiny().prompts + " --model " + tiny().model +
-                                  " --steps 3 --seconds 1 --bodies preset:male_tall --sensors umafall --no-filter --out " + out);
+    const auto ok =
+        test::run_cli("--threads 1 synth --prompts " + tiny().prompts + " --model " + tiny().model +
+                      " --steps 3 --seconds 1 --bodies preset:male_tall --sensors umafall --no-filter --out " + out);
     ASSERT_EQ(ok.exit_code, 0) << ok.output;
     EXPECT_EQ(read_imu_dataset(out, true).size(), 8u);  // 2 jobs x 1 body x 4 UMAFall sensors
 }

@@ -110,7 +110,8 @@ TEST(SynthFolder, ABrokenFieldIsRefusedByItsDottedKey) {
         {R"("shown": "walking")", R"("shown": 2)"},
         {R"("job": "j00007",)", ""},
     };
-    const std::string keys[] = {"recordings.0.n_samples", "kept", "attempts.0.failures", "quality.jerk", "activity_check.shown", "job"};
+    const std::string keys[] = {"recordings.0.n_samples", "kept", "attempts.0.failures", "quality.jerk",
+                                "activity_check.shown",   "job"};
     for (size_t i = 0; i < std::size(cases); ++i) {
         std::string text = kMarker;
         text.replace(text.find(cases[i].first), std::string(cases[i].first).size(), cases[i].second);

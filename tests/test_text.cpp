@@ -7,11 +7,11 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/npy.hpp"
+#include "test_util.hpp"
 #include "text/sentence_similarity.hpp"
 #include "text/utf8.hpp"
 #include "text/word_tokenizer.hpp"
 #include "text/wordpiece.hpp"
-#include "test_util.hpp"
 
 using namespace t2imu;
 
@@ -29,7 +29,8 @@ TEST(WordPiece, ReproducesTheReferenceTokenIds) {
         EXPECT_EQ(tok.wordpieces(text), ref[s]["tokens"].get<std::vector<std::string>>()) << text;
         const std::vector<int64_t> got = tok.encode(text);
         EXPECT_EQ(got, ref[s]["input_ids"].get<std::vector<int64_t>>()) << text;
-        for (size_t k = 0; k < width; ++k) EXPECT_EQ(k < got.size() ? got[k] : 0, ids[s * width + k]) << text;  // right-padded with [PAD] = 0
+        for (size_t k = 0; k < width; ++k)
+            EXPECT_EQ(k < got.size() ? got[k] : 0, ids[s * width + k]) << text;  // right-padded with [PAD] = 0
     }
     EXPECT_EQ(tok.encode("Hello, world!"), (std::vector<int64_t>{101, 7592, 1010, 2088, 999, 102}));
     // A word over 100 characters is one [UNK]: [CLS] [UNK] b [SEP].
@@ -40,10 +41,10 @@ TEST(WordPiece, ReproducesTheReferenceTokenIds) {
 TEST(Utf8, FirstInvalidByteAsNlohmannJsonJudgesIt) {
     EXPECT_EQ(first_invalid_utf8("a man walks \xC3\xA9 \xE2\x82\xAC \xF0\x9F\x98\x80"), std::string::npos);
     EXPECT_EQ(first_invalid_utf8("walks \xff"), 6u);
-    EXPECT_EQ(first_invalid_utf8("ab\xC3"), 2u);              // truncated
-    EXPECT_EQ(first_invalid_utf8("\xC0\xAF"), 0u);            // overlong '/'
-    EXPECT_EQ(first_invalid_utf8("x\xE0\x80\xAF"), 1u);      // overlong, three bytes
-    EXPECT_EQ(first_invalid_utf8("\xED\xA0\x80"), 0u);       // a surrogate
+    EXPECT_EQ(first_invalid_utf8("ab\xC3"), 2u);            // truncated
+    EXPECT_EQ(first_invalid_utf8("\xC0\xAF"), 0u);          // overlong '/'
+    EXPECT_EQ(first_invalid_utf8("x\xE0\x80\xAF"), 1u);     // overlong, three bytes
+    EXPECT_EQ(first_invalid_utf8("\xED\xA0\x80"), 0u);      // a surrogate
     EXPECT_EQ(first_invalid_utf8("\xF4\x90\x80\x80"), 0u);  // above U+10FFFF
     for (const std::string bad : {"walks \xff", "ab\xC3", "\xED\xA0\x80"})
         EXPECT_THROW(nlohmann::json(bad).dump(), nlohmann::json::type_error) << bad;
@@ -55,12 +56,14 @@ TEST(WordTokenizer, SplitsLikeGloVesVocabulary) {
     EXPECT_EQ(split_words("  -jump- 'now'"), (std::vector<std::string>{"-", "jump", "-", "'", "now", "'"}));
     const WordVectors v({"walk", "person", "counter", "clockwise", "jump", "."}, std::vector<float>(6 * 100, 0.5f));
     // walk (walked -> walk), person's -> person, counter-clockwise -> its parts, jumps -> jump, unknown -> -1.
-    EXPECT_EQ(word_indices("Walked person's counter-clockwise jumps zzyzx.", v), (std::vector<int>{0, 1, 2, 3, 4, -1, 5}));
+    EXPECT_EQ(word_indices("Walked person's counter-clockwise jumps zzyzx.", v),
+              (std::vector<int>{0, 1, 2, 3, 4, -1, 5}));
 }
 
 TEST(WordVectors, FileRoundTripAndZipfProbabilities) {
     std::vector<float> values(3 * 100);
-    for (size_t i = 0; i < values.size(); ++i) values[i] = static_cast<float>(std::sin(0.37 * static_cast<double>(i)) * 4);
+    for (size_t i = 0; i < values.size(); ++i)
+        values[i] = static_cast<float>(std::sin(0.37 * static_cast<double>(i)) * 4);
     const WordVectors v({"the", "walks", "é"}, values);
     const std::string path = test::scratch_dir("word_vectors") + "/v.safetensors";
     v.save(path);
@@ -69,7 +72,8 @@ TEST(WordVectors, FileRoundTripAndZipfProbabilities) {
     EXPECT_EQ(back.word(2), "é");
     EXPECT_EQ(back.index_of("walks"), 1);
     for (int i = 0; i < 3; ++i)
-        for (int d = 0; d < 100; ++d) EXPECT_NEAR(back.vector(i)[d], values[static_cast<size_t>(i * 100 + d)], 4.0 / 1024);  // float16
+        for (int d = 0; d < 100; ++d)
+            EXPECT_NEAR(back.vector(i)[d], values[static_cast<size_t>(i * 100 + d)], 4.0 / 1024);  // float16
     EXPECT_NEAR(back.probability(0) + back.probability(1) + back.probability(2), 1.0, 1e-12);
     EXPECT_DOUBLE_EQ(back.probability(0) / back.probability(1), 2.0);
     EXPECT_THROW(WordVectors({"a"}, std::vector<float>(99)), Error);
@@ -78,9 +82,9 @@ TEST(WordVectors, FileRoundTripAndZipfProbabilities) {
 TEST(SifEncoder, WeightsRareWordsAndRemovesTheCommonComponent) {
     // Three words along the axes; "the" is the most frequent, so it weighs least.
     std::vector<float> values(3 * 100, 0.f);
-    values[0] = 1;          // the   -> e0
-    values[100 + 1] = 1;    // walk  -> e1
-    values[200 + 2] = 1;    // run   -> e2
+    values[0] = 1;        // the   -> e0
+    values[100 + 1] = 1;  // walk  -> e1
+    values[200 + 2] = 1;  // run   -> e2
     const WordVectors v({"the", "walk", "run"}, values);
     SifEncoder sif(v);
     const Eigen::VectorXd e = sif.embed("the walk");
@@ -92,16 +96,16 @@ TEST(SifEncoder, WeightsRareWordsAndRemovesTheCommonComponent) {
     EXPECT_DOUBLE_EQ(cosine_similarity(sif.embed("walk"), sif.embed("run")), 0.0);
     EXPECT_EQ(sif.embed("xyz").norm(), 0.0);  // nothing known
     sif.fit_common_component({"walk", "walk run", "walk the", "walk walk"});
-    EXPECT_GT(std::fabs(sif.common_component()[1]), 0.95);  // "walk" is what the corpus shares
+    EXPECT_GT(std::fabs(sif.common_component()[1]), 0.95);                       // "walk" is what the corpus shares
     EXPECT_NEAR(sif.embed("walk run").dot(sif.common_component()), 0.0, 1e-15);  // projected out
 }
 
 TEST(SifEncoder, NearestSentenceIsTheMostSimilarCaption) {
     std::vector<float> values(4 * 100, 0.f);
-    values[0] = 1;              // the  -> e0
-    values[100 + 1] = 1;        // walk -> e1
-    values[200 + 2] = 1;        // run  -> e2
-    values[300 + 1] = 0.6f;     // jog  -> 0.6 e1 + 0.8 e2: nearer run than walk
+    values[0] = 1;           // the  -> e0
+    values[100 + 1] = 1;     // walk -> e1
+    values[200 + 2] = 1;     // run  -> e2
+    values[300 + 1] = 0.6f;  // jog  -> 0.6 e1 + 0.8 e2: nearer run than walk
     values[300 + 2] = 0.8f;
     const WordVectors v({"the", "walk", "run", "jog"}, values);
     const SifEncoder sif(v);
@@ -119,7 +123,8 @@ TEST(SifEncoder, NearestSentenceIsTheMostSimilarCaption) {
 
 TEST(SifEncoder, GloVeSimilaritiesRankActivitiesSensibly) {
     const std::string vocab = test::source_dir() + "/cache/text/glove-100k.safetensors";
-    if (!std::filesystem::exists(vocab)) GTEST_SKIP() << "cache/text/glove-100k.safetensors absent (scripts/setup.sh makes it)";
+    if (!std::filesystem::exists(vocab))
+        GTEST_SKIP() << "cache/text/glove-100k.safetensors absent (scripts/setup.sh makes it)";
     const WordVectors v = WordVectors::load(vocab);
     EXPECT_EQ(v.size(), 100000);
     EXPECT_EQ(v.word(0), "the");

@@ -11,8 +11,7 @@
 
 using namespace t2imu;
 
-namespace {
-}  // namespace
+namespace {}  // namespace
 
 TEST(TomlSection, ReadsTypedValuesAndLeavesAbsentOnesAlone) {
     const toml::table doc = parse_toml_text("name = \"walk\"\nsteps = 50\nrate = 20.5\nfilter = true\n", "cfg.toml");
@@ -35,7 +34,8 @@ TEST(TomlSection, ReadsTypedValuesAndLeavesAbsentOnesAlone) {
 }
 
 TEST(TomlSection, WrongTypesAreRefusedNamingTheField) {
-    const toml::table doc = parse_toml_text("[synth]\nsteps = 4.9e47\nname = 3\nflag = \"yes\"\nrate = \"fast\"\n", "cfg.toml");
+    const toml::table doc =
+        parse_toml_text("[synth]\nsteps = 4.9e47\nname = 3\nflag = \"yes\"\nrate = \"fast\"\n", "cfg.toml");
     TomlSection top(doc, "cfg.toml", "");
     TomlSection synth = top.table("synth");
     int steps = 0;
@@ -44,7 +44,8 @@ TEST(TomlSection, WrongTypesAreRefusedNamingTheField) {
     double rate = 0;
     // An integer field takes only a TOML integer (a float out of range must not be converted).
     std::string m = test::error_message([&] { synth.read("steps", steps); });
-    EXPECT_TRUE(test::contains(m, "cfg.toml") && test::contains(m, "synth.steps") && test::contains(m, "an integer")) << m;
+    EXPECT_TRUE(test::contains(m, "cfg.toml") && test::contains(m, "synth.steps") && test::contains(m, "an integer"))
+        << m;
     m = test::error_message([&] { synth.read("name", name); });
     EXPECT_TRUE(test::contains(m, "synth.name") && test::contains(m, "a string")) << m;
     m = test::error_message([&] { synth.read("flag", flag); });
@@ -55,7 +56,8 @@ TEST(TomlSection, WrongTypesAreRefusedNamingTheField) {
 }
 
 TEST(TomlSection, RequiredKeysAndArraysOfStrings) {
-    const toml::table doc = parse_toml_text("positions = [\"waist\", \"wrist\"]\nmixed = [\"a\", 2]\nnot_array = \"a\"\n", "c.toml");
+    const toml::table doc =
+        parse_toml_text("positions = [\"waist\", \"wrist\"]\nmixed = [\"a\", 2]\nnot_array = \"a\"\n", "c.toml");
     TomlSection s(doc, "c.toml", "");
     std::vector<std::string> positions = {"old"}, other;
     s.read("positions", positions);
@@ -98,7 +100,9 @@ TEST(TomlSection, SubTablesAndArraysOfTablesNameTheirPath) {
     sources[1].read("name", name);
     EXPECT_EQ(name, "retrieval");
     std::string m = test::error_message([&] { sources[1].refuse_unknown_keys(); });
-    EXPECT_TRUE(test::contains(m, "exp.toml") && test::contains(m, "sources[1].typo") && test::contains(m, "a known key")) << m;
+    EXPECT_TRUE(test::contains(m, "exp.toml") && test::contains(m, "sources[1].typo") &&
+                test::contains(m, "a known key"))
+        << m;
     // A scalar where a table is expected, and where an array of tables is.
     m = test::error_message([&] { top.table("scalar"); });
     EXPECT_TRUE(test::contains(m, "scalar") && test::contains(m, "a table")) << m;

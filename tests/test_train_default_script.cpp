@@ -90,8 +90,8 @@ TEST(TrainDefaultScript, StopsAtTheBudgetAndARerunTrainsTheRestInOrder) {
         previous = at;
     }
     EXPECT_EQ(last_logged_step(root + "/models/base"), 10);
-    for (const char* model : {"base", "default", "lacc-sweep_control", "lacc-sweep_lambda-0.01", "lacc-sweep_lambda-0.1",
-                              "lacc-sweep_lambda-1"}) {
+    for (const char* model : {"base", "default", "lacc-sweep_control", "lacc-sweep_lambda-0.01",
+                              "lacc-sweep_lambda-0.1", "lacc-sweep_lambda-1"}) {
         const std::string csv = root + "/cache/lacc/" + model + ".csv";
         ASSERT_TRUE(fs::exists(csv)) << csv;
         EXPECT_EQ(read_csv(csv).rows.size(), 6u) << csv;  // one row per clip of the test split

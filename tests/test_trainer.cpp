@@ -37,14 +37,16 @@ std::vector<float> weights(const std::string& model_dir) {
 
 TEST(Trainer, ConfigIsStrict) {
     const std::string dir = test::scratch_dir("trainer_config");
-    const std::string good = test::write_tiny_train_config(dir, "/data", dir + "/m", "[loss]\nlambda_acc = 1.0\nacc_space = \"joints\"\n");
+    const std::string good =
+        test::write_tiny_train_config(dir, "/data", dir + "/m", "[loss]\nlambda_acc = 1.0\nacc_space = \"joints\"\n");
     const TrainConfig c = read_train_config(good);
     EXPECT_EQ(c.mdm.latent_dim, 32);
     EXPECT_DOUBLE_EQ(c.lambda_acc, 1.0);
     EXPECT_EQ(c.acc_space, "joints");
     EXPECT_EQ(c.batch, 4);
     EXPECT_FALSE(c.augment.enabled());
-    std::ofstream(dir + "/augment.toml") << read_file_text(good) << "[augment]\nswap = 0.2\ndropout = 0.1\nneighbours = 4\n";
+    std::ofstream(dir + "/augment.toml") << read_file_text(good)
+                                         << "[augment]\nswap = 0.2\ndropout = 0.1\nneighbours = 4\n";
     const TrainConfig a = read_train_config(dir + "/augment.toml");
     EXPECT_DOUBLE_EQ(a.augment.swap, 0.2);
     EXPECT_DOUBLE_EQ(a.augment.dropout, 0.1);
@@ -80,7 +82,8 @@ TEST(Trainer, ConfigIsStrict) {
         }
         return std::string("accepted");
     };
-    EXPECT_NE(replaced("learning_rate = 1e-3\n", "learning_rate = 0.0\n").find("train.learning_rate"), std::string::npos);
+    EXPECT_NE(replaced("learning_rate = 1e-3\n", "learning_rate = 0.0\n").find("train.learning_rate"),
+              std::string::npos);
     EXPECT_NE(replaced("[train]\n", "[train]\ncond_dropout = 1.5\n").find("train.cond_dropout"), std::string::npos);
     EXPECT_NE(replaced("seed = 3\n", "seed = -3\n").find("train.seed"), std::string::npos);
     EXPECT_NE(replaced("acc_space = \"joints\"", "acc_space = \"pose\"").find("loss.acc_space"), std::string::npos);
@@ -93,11 +96,14 @@ TEST(Trainer, ConfigIsStrict) {
 TEST(Trainer, EveryShippedTrainingConfigReads) {
     int read = 0;
     for (const auto& e : fs::recursive_directory_iterator(std::string(T2IMU_SOURCE_DIR) + "/experiments")) {
-        if (e.path().extension() != ".toml" || read_file_text(e.path().string()).find("\n[train]") == std::string::npos) continue;
+        if (e.path().extension() != ".toml" || read_file_text(e.path().string()).find("\n[train]") == std::string::npos)
+            continue;
         EXPECT_NO_THROW(read_train_config(e.path().string())) << e.path();
         ++read;
     }
-    EXPECT_GE(read, 13);  // train-default, -augmented, -long, lacc-sweep/ 4, lacc-sweep-gpu/ 3, paraphrase-finetune/ 2, continue/
+    EXPECT_GE(
+        read,
+        13);  // train-default, -augmented, -long, lacc-sweep/ 4, lacc-sweep-gpu/ 3, paraphrase-finetune/ 2, continue/
 }
 
 TEST(Trainer, EmaDecayWarmsUpSoTheInitialisationIsForgotten) {
@@ -121,7 +127,8 @@ TEST(Trainer, LossTermsVanishForAPerfectPredictionAndMatchTheirDefinitions) {
     TrainConfig c;
     c.lambda_pos = c.lambda_vel = c.lambda_foot = c.lambda_acc = 1;
     const LossTerms same = mdm_loss_terms(x, x, lengths, mean, std, c);
-    for (const torch::Tensor* term : {&same.simple, &same.pos, &same.vel, &same.acc}) EXPECT_EQ(term->item<double>(), 0.0);
+    for (const torch::Tensor* term : {&same.simple, &same.pos, &same.vel, &same.acc})
+        EXPECT_EQ(term->item<double>(), 0.0);
     // L_foot is no comparison: it penalises the prediction's own foot velocity during ground contact.
     EXPECT_NEAR(same.total.item<double>(), same.foot.item<double>(), 1e-12);
     // A constant offset on every feature: L_simple = offset^2, no velocity or acceleration error.
@@ -139,20 +146,24 @@ TEST(Trainer, LossFallsResumeContinuesExactlyAndFinetuneStartsFromTheWeights) {
     torch::set_num_threads(1);
     const std::string dir = test::scratch_dir("trainer_run");
     const std::string data = test::make_tiny_motion_dataset(dir + "/data");
-    const std::string straight = test::write_tiny_train_config(dir, data, dir + "/straight", "[loss]\nlambda_vel = 1.0\n");
+    const std::string straight =
+        test::write_tiny_train_config(dir, data, dir + "/straight", "[loss]\nlambda_vel = 1.0\n");
     const TrainProgress full = train_mdm(read_train_config(straight), false);
     EXPECT_EQ(full.step, 40);
     // The loss falls: first logged total vs the mean of the last three.
     std::ifstream metrics(dir + "/straight/metrics.jsonl");
     std::vector<double> losses;
-    for (std::string line; std::getline(metrics, line);) losses.push_back(nlohmann::json::parse(line)["loss"].get<double>());
+    for (std::string line; std::getline(metrics, line);)
+        losses.push_back(nlohmann::json::parse(line)["loss"].get<double>());
     ASSERT_EQ(losses.size(), 8u);
     EXPECT_LT((losses[5] + losses[6] + losses[7]) / 3, 0.7 * losses[0]);
-    for (const char* f : {"model.json", "weights.safetensors", "text_encoder.safetensors", "Mean.npy", "Std.npy", "checkpoint.pt"})
+    for (const char* f :
+         {"model.json", "weights.safetensors", "text_encoder.safetensors", "Mean.npy", "Std.npy", "checkpoint.pt"})
         EXPECT_TRUE(fs::exists(dir + "/straight/" + std::string(f))) << f;
 
     // The same run stopped after 20 steps and resumed: the same weights as the uninterrupted one.
-    const std::string interrupted = test::write_tiny_train_config(dir, data, dir + "/resumed", "[loss]\nlambda_vel = 1.0\n");
+    const std::string interrupted =
+        test::write_tiny_train_config(dir, data, dir + "/resumed", "[loss]\nlambda_vel = 1.0\n");
     // A time budget stops after the step that reaches it (here the first), saved like a finished run.
     TrainConfig budget = read_train_config(interrupted);
     budget.out = dir + "/budget";
@@ -211,11 +222,14 @@ TEST(Trainer, Bf16FollowsFp32AndTheProfileCoversEveryPart) {
         std::ofstream(config) << text;
         const TrainProgress p = train_mdm(read_train_config(config), false);
         EXPECT_EQ(p.profile.steps, 39) << precision;  // all but the first
-        for (const double part : {p.profile.data, p.profile.text, p.profile.forward, p.profile.backward, p.profile.optimiser, p.profile.log})
+        for (const double part : {p.profile.data, p.profile.text, p.profile.forward, p.profile.backward,
+                                  p.profile.optimiser, p.profile.log})
             EXPECT_GT(part, 0.0) << precision;
-        EXPECT_EQ(nlohmann::json::parse(read_file_text(dir + "/" + precision + "/model.json"))["training"]["precision"], precision);
+        EXPECT_EQ(nlohmann::json::parse(read_file_text(dir + "/" + precision + "/model.json"))["training"]["precision"],
+                  precision);
         std::ifstream metrics(dir + "/" + precision + "/metrics.jsonl");
-        for (std::string line; std::getline(metrics, line);) losses[precision].push_back(nlohmann::json::parse(line)["loss"].get<double>());
+        for (std::string line; std::getline(metrics, line);)
+            losses[precision].push_back(nlohmann::json::parse(line)["loss"].get<double>());
     }
     const std::vector<double>&a = losses["fp32"], &b = losses["bf16"];
     ASSERT_EQ(a.size(), 8u);
@@ -231,9 +245,11 @@ TEST(Trainer, SampleFromATrainedModelIsSeededAndBatchIndependent) {
     const std::string dir = test::scratch_dir("trainer_sample");
     const std::string data = test::make_tiny_motion_dataset(dir + "/data");
     train_mdm(read_train_config(test::write_tiny_train_config(dir, data, dir + "/model")), false, "", 10);
-    std::ofstream(dir + "/prompts.txt") << "# activity<TAB>prompt\nwalking\ta person walks forward slowly\nwalking\tsomeone walks\n";
+    std::ofstream(dir + "/prompts.txt")
+        << "# activity<TAB>prompt\nwalking\ta person walks forward slowly\nwalking\tsomeone walks\n";
     const auto run = [&](const std::string& out, const std::string& extra) {
-        const auto r = test::run_cli("--threads 1 sample --model " + dir + "/model --prompts " + dir + "/prompts.txt --frames 40 --seed 7 --out " + dir + "/" + out + " " + extra);
+        const auto r = test::run_cli("--threads 1 sample --model " + dir + "/model --prompts " + dir +
+                                     "/prompts.txt --frames 40 --seed 7 --out " + dir + "/" + out + " " + extra);
         EXPECT_EQ(r.exit_code, 0) << r.output;
     };
     run("a", "--sampler ddim --steps 5 --batch 2");
@@ -245,7 +261,8 @@ TEST(Trainer, SampleFromATrainedModelIsSeededAndBatchIndependent) {
     EXPECT_EQ(read_npy(dir + "/a/0001_joints.npy").shape, (std::vector<int64_t>{40, 22, 3}));
     // Batch size does not change a sample beyond float rounding (batched matrix products round differently).
     for (const char* s : {"0000_features.npy", "0001_features.npy"}) {
-        const std::vector<double> x = read_npy(dir + "/a/" + s).to<double>(), y = read_npy(dir + "/b/" + s).to<double>();
+        const std::vector<double> x = read_npy(dir + "/a/" + s).to<double>(),
+                                  y = read_npy(dir + "/b/" + s).to<double>();
         double worst = 0;
         for (size_t i = 0; i < x.size(); ++i) worst = std::max(worst, std::fabs(x[i] - y[i]) / (1 + std::fabs(x[i])));
         EXPECT_LT(worst, 1e-4) << s;
@@ -264,7 +281,8 @@ TEST(Trainer, SampleFromATrainedModelIsSeededAndBatchIndependent) {
     // Per-sample L_acc: identical draws for the same seed, so two models compare on the same noise; the
     // analysis of a model against itself finds no change.
     for (const char* name : {"l1.csv", "l2.csv"}) {
-        const auto r = test::run_cli("--threads 1 eval-lacc --model " + dir + "/model --dataset " + data + " --split train --seed 4 --out " + dir + "/" + name);
+        const auto r = test::run_cli("--threads 1 eval-lacc --model " + dir + "/model --dataset " + data +
+                                     " --split train --seed 4 --out " + dir + "/" + name);
         ASSERT_EQ(r.exit_code, 0) << r.output;
     }
     EXPECT_EQ(read_file_text(dir + "/l1.csv"), read_file_text(dir + "/l2.csv"));
@@ -274,8 +292,9 @@ TEST(Trainer, SampleFromATrainedModelIsSeededAndBatchIndependent) {
         EXPECT_GE(lacc.number(i, lacc.column("l_acc")), 0.0);
         EXPECT_GT(lacc.number(i, lacc.column("l_simple")), 0.0);
     }
-    const auto analysis = test::run_cli("analysis lacc --before " + dir + "/l1.csv --after " + dir + "/l2.csv --vocab " + data +
-                                        "/vocab.safetensors --tau 0.5 --out " + dir + "/change.csv");
+    const auto analysis =
+        test::run_cli("analysis lacc --before " + dir + "/l1.csv --after " + dir + "/l2.csv --vocab " + data +
+                      "/vocab.safetensors --tau 0.5 --out " + dir + "/change.csv");
     ASSERT_EQ(analysis.exit_code, 0) << analysis.output;
     EXPECT_NE(analysis.output.find("change 0.00 %"), std::string::npos) << analysis.output;
     const auto bad = test::run_cli("sample --model " + dir + "/model --prompt x --frames 500 --out " + dir + "/e");
@@ -293,9 +312,11 @@ TEST(Trainer, DamagedCheckpointsAndNonFiniteLossesNeverReachTheModel) {
     const std::string config = test::write_tiny_train_config(dir, data, dir + "/m", "");
     train_mdm(read_train_config(config), false, "", 5);  // the last step of a call is saved
     const std::string checkpoint = dir + "/m/checkpoint.pt";
-    const std::vector<uint8_t> good = read_file_bytes(checkpoint), model = read_file_bytes(dir + "/m/weights.safetensors");
+    const std::vector<uint8_t> good = read_file_bytes(checkpoint),
+                               model = read_file_bytes(dir + "/m/weights.safetensors");
     ASSERT_GT(good.size(), 20000u);
-    const auto refused = [&](const std::vector<uint8_t>& bytes, const std::string& config_path, const std::string& field) {
+    const auto refused = [&](const std::vector<uint8_t>& bytes, const std::string& config_path,
+                             const std::string& field) {
         write_file_atomic(checkpoint, bytes.data(), bytes.size());
         const std::string m = test::error_message([&] { train_mdm(read_train_config(config_path), true); });
         EXPECT_TRUE(test::contains(m, checkpoint) && test::contains(m, field)) << m;
@@ -305,7 +326,8 @@ TEST(Trainer, DamagedCheckpointsAndNonFiniteLossesNeverReachTheModel) {
     std::vector<uint8_t> flipped = good;
     for (size_t i = flipped.size() / 2; i < flipped.size() / 2 + 4096; ++i) flipped[i] ^= 0x5a;
     refused(flipped, config, "damaged");  // the checksum's, or libtorch's own refusal of the archive
-    refused(std::vector<uint8_t>(good.begin(), good.begin() + static_cast<long>(good.size() / 2)), config, "checkpoint");
+    refused(std::vector<uint8_t>(good.begin(), good.begin() + static_cast<long>(good.size() / 2)), config,
+            "checkpoint");
     refused({}, config, "checkpoint");
     const std::string wider = test::write_tiny_train_config(dir + "/data", data, dir + "/m", "");
     std::string text = read_file_text(wider);
@@ -338,7 +360,9 @@ TEST(Trainer, DamagedCheckpointsAndNonFiniteLossesNeverReachTheModel) {
     TrainConfig poisoned = read_train_config(config);
     poisoned.out = dir + "/nan";
     const std::string n = test::error_message([&] { train_mdm(poisoned, false); });
-    EXPECT_TRUE(test::contains(n, "step 1") && test::contains(n, "a finite loss") && test::contains(n, "before anything was saved")) << n;
+    EXPECT_TRUE(test::contains(n, "step 1") && test::contains(n, "a finite loss") &&
+                test::contains(n, "before anything was saved"))
+        << n;
     EXPECT_FALSE(fs::exists(dir + "/nan/checkpoint.pt"));
     EXPECT_FALSE(fs::exists(dir + "/nan/weights.safetensors"));
 }

@@ -21,12 +21,16 @@ EncoderOptions small_options() {
 }
 
 torch::nn::TransformerEncoder libtorch_encoder(const EncoderOptions& o) {
-    auto layer = torch::nn::TransformerEncoderLayer(
-        torch::nn::TransformerEncoderLayerOptions(o.d_model, o.nhead).dim_feedforward(o.dim_feedforward).dropout(o.dropout).activation(torch::kGELU));
+    auto layer = torch::nn::TransformerEncoderLayer(torch::nn::TransformerEncoderLayerOptions(o.d_model, o.nhead)
+                                                        .dim_feedforward(o.dim_feedforward)
+                                                        .dropout(o.dropout)
+                                                        .activation(torch::kGELU));
     return torch::nn::TransformerEncoder(torch::nn::TransformerEncoderOptions(layer, o.num_layers));
 }
 
-double relative_gap(const torch::Tensor& a, const torch::Tensor& b) { return (a - b).abs().max().item<double>() / b.abs().max().item<double>(); }
+double relative_gap(const torch::Tensor& a, const torch::Tensor& b) {
+    return (a - b).abs().max().item<double>() / b.abs().max().item<double>();
+}
 
 // [B, S] true on the keys past each length.
 torch::Tensor key_padding(const std::vector<int64_t>& lengths, int64_t s) {
@@ -61,7 +65,8 @@ TEST(TransformerEncoder, TrainingForwardAndGradientsMatchLibtorchWithPaddedKeys)
     a.pow(2).sum().backward();
     b.pow(2).sum().backward();
     const auto theirs = reference->named_parameters();
-    for (const auto& p : ours->named_parameters()) EXPECT_LT(relative_gap(p.value().grad(), theirs[p.key()].grad()), 1e-4) << p.key();
+    for (const auto& p : ours->named_parameters())
+        EXPECT_LT(relative_gap(p.value().grad(), theirs[p.key()].grad()), 1e-4) << p.key();
 }
 
 TEST(TransformerEncoder, FusedInferenceEqualsThePlainPathOnValidFrames) {
@@ -71,7 +76,8 @@ TEST(TransformerEncoder, FusedInferenceEqualsThePlainPathOnValidFrames) {
     const torch::Tensor x = torch::randn({11, 3, 32});
     const std::vector<int64_t> lengths = {11, 7, 3};
     const torch::Tensor padding = key_padding(lengths, 11);
-    const torch::Tensor plain = ours->forward(x, padding), plain_unmasked = ours->forward(x);  // gradients on: the plain path
+    const torch::Tensor plain = ours->forward(x, padding),
+                        plain_unmasked = ours->forward(x);  // gradients on: the plain path
     torch::NoGradGuard no_grad;
     const torch::Tensor fused = ours->forward(x, padding);
     EXPECT_LT(relative_gap(ours->forward(x), plain_unmasked), 1e-5);

@@ -23,7 +23,8 @@ Matrix3d heading_at(double t) { return AngleAxisd(0.7 + 0.3 * t, Vector3d::UnitY
 
 // The sway in the pelvis's rest axes (X left: pitch, Y up: yaw, Z front: roll), rad, at t seconds.
 Vector3d sway_at(double t) {
-    return {0.05 * std::sin(2 * M_PI * 2 * t), 0.10 * std::sin(2 * M_PI * 1 * t), 0.08 * std::sin(2 * M_PI * 1 * t + 1)};
+    return {0.05 * std::sin(2 * M_PI * 2 * t), 0.10 * std::sin(2 * M_PI * 1 * t),
+            0.08 * std::sin(2 * M_PI * 1 * t + 1)};
 }
 
 // 10 s of a walker turning at 0.3 rad/s, the pelvis swaying about a heading; limbs rotated arbitrarily.
@@ -61,7 +62,8 @@ TEST(TrunkSway, KeepsHeadingAndRollAndScalesPitchAndYawSwayByTheirGains) {
     // The sway left over: the edited rotation seen from the true heading, as a rotation vector in rest axes.
     std::vector<double> pitch, yaw, roll;
     for (size_t f = 0; f < after.size(); ++f) {
-        const AngleAxisd w(Matrix3d(heading_at(static_cast<double>(f) / kSwayFps).transpose() * after[f].rotation[smpl22::pelvis]));
+        const AngleAxisd w(
+            Matrix3d(heading_at(static_cast<double>(f) / kSwayFps).transpose() * after[f].rotation[smpl22::pelvis]));
         const Vector3d v = w.angle() * w.axis();
         pitch.push_back(v.x()), yaw.push_back(v.y()), roll.push_back(v.z());
     }

@@ -54,7 +54,8 @@ TEST(Trustworthiness, OneForAnIsometryAndLowerForAShuffle) {
     EXPECT_DOUBLE_EQ(trustworthiness(x, turned, 5), 1.0);
     PointMatrix shuffled = x;
     std::mt19937_64 rng(2);
-    for (Eigen::Index i = shuffled.rows() - 1; i > 0; --i) shuffled.row(i).swap(shuffled.row(std::uniform_int_distribution<Eigen::Index>(0, i)(rng)));
+    for (Eigen::Index i = shuffled.rows() - 1; i > 0; --i)
+        shuffled.row(i).swap(shuffled.row(std::uniform_int_distribution<Eigen::Index>(0, i)(rng)));
     EXPECT_LT(trustworthiness(x, shuffled, 5), 0.7);
     EXPECT_THROW(trustworthiness(x, turned.topRows(10), 5), Error);
 }
@@ -127,5 +128,6 @@ TEST(Tsne, OptionsNoDataCouldMakeValidAreRefusedNamingTheOption) {
     EXPECT_NE(refusal([](TsneOptions& o) { o.perplexity = 0; }).find("--perplexity"), std::string::npos);
     EXPECT_NE(refusal([](TsneOptions& o) { o.perplexity = 1e12; }).find("--perplexity"), std::string::npos);
     EXPECT_NE(refusal([](TsneOptions& o) { o.iterations = 0; }).find("--iterations"), std::string::npos);
-    EXPECT_NE(refusal([](TsneOptions& o) { o.iterations = 100; }).find("exaggeration"), std::string::npos);  // 250 > 100
+    EXPECT_NE(refusal([](TsneOptions& o) { o.iterations = 100; }).find("exaggeration"),
+              std::string::npos);  // 250 > 100
 }

@@ -64,7 +64,8 @@ TEST(TwoSample, ADomainGapResultReadsBackAsWrittenToTheByte) {
     EXPECT_EQ(domain_gap_json(back).dump(2), doc.dump(2));
     nlohmann::json broken = doc;
     broken["per_feature"][0]["ks"] = "far";
-    EXPECT_EQ(test::error_message([&] { parse_domain_gap(broken, "g.json"); }), "g.json: per_feature.0.ks: expected a number (got \"far\")");
+    EXPECT_EQ(test::error_message([&] { parse_domain_gap(broken, "g.json"); }),
+              "g.json: per_feature.0.ks: expected a number (got \"far\")");
     broken = doc;
     broken.erase("classifier_two_sample_test");
     EXPECT_THROW(parse_domain_gap(broken, "g.json"), Error);
@@ -80,7 +81,8 @@ TEST(TwoSample, DomainGapOnFeatureTables) {
         t.header = {"subject", "activity", "f1", "f2"};
         for (int i = 0; i < 200; ++i) {
             const bool walking = i % 2 == 0;
-            t.rows.push_back({"s", walking ? "walking" : "running", std::to_string(g(rng) + (walking ? walking_shift : 0.0)), std::to_string(g(rng))});
+            t.rows.push_back({"s", walking ? "walking" : "running",
+                              std::to_string(g(rng) + (walking ? walking_shift : 0.0)), std::to_string(g(rng))});
         }
         return t;
     };
@@ -91,11 +93,14 @@ TEST(TwoSample, DomainGapOnFeatureTables) {
     EXPECT_EQ(gap.per_feature[0].feature, "f1");  // the most different feature first
     EXPECT_GT(gap.per_feature[0].ks, 0.4);
     // Restricted to the class both tables share alike, the pooled test cannot tell them apart either.
-    const CsvTable a = rows_of_activities(table(0), {"running"}, "--classes"), b = rows_of_activities(table(4), {"running"}, "--classes");
+    const CsvTable a = rows_of_activities(table(0), {"running"}, "--classes"),
+                   b = rows_of_activities(table(4), {"running"}, "--classes");
     EXPECT_EQ(a.rows.size(), 100u);
     EXPECT_GT(gap.overall.balanced_accuracy, 0.65);
     EXPECT_NEAR(domain_gap(a, b).overall.balanced_accuracy, 0.5, 0.12);
-    EXPECT_EQ(test::error_message([&] { rows_of_activities(table(0), {"running", "lying"}, "--classes"); }),
+    EXPECT_EQ(test::error_message([&] {
+                  rows_of_activities(table(0), {"running", "lying"}, "--classes");
+              }),
               "--classes: lying: expected a class t holds windows of");
 }
 

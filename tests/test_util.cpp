@@ -151,7 +151,8 @@ std::vector<CliOption> cli_options_of(const std::string& leaf) {
         std::istringstream words(line);
         CliOption o;
         words >> o.name >> o.type;
-        if (o.name.rfind("-h,", 0) == 0 || (o.name.rfind("--", 0) != 0 && o.name[0] == '-')) continue;  // help, short-only flags
+        if (o.name.rfind("-h,", 0) == 0 || (o.name.rfind("--", 0) != 0 && o.name[0] == '-'))
+            continue;  // help, short-only flags
         std::getline(words, o.help);
         o.positional = o.name[0] != '-';
         o.required = line.find("REQUIRED") != std::string::npos;

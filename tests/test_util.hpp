@@ -17,11 +17,12 @@ std::string shared_data_dir();
 
 // The path of `relative` under the shared data; skips the calling test with a clear message when the shared
 // data (or that file) is missing. Use as: `std::string p; SHARED_OR_SKIP(p, "mocap/manifest.csv");`
-#define SHARED_OR_SKIP(var, relative)                                                                   \
-    do {                                                                                                \
-        var = ::t2imu::test::shared_path(relative);                                                     \
-        if (var.empty()) GTEST_SKIP() << "shared data not found: " << (relative)                      \
-                                      << " (expects ../shared/data beside the checkout or $T2IMU_SHARED_DATA)"; \
+#define SHARED_OR_SKIP(var, relative)                                                              \
+    do {                                                                                           \
+        var = ::t2imu::test::shared_path(relative);                                                \
+        if (var.empty())                                                                           \
+            GTEST_SKIP() << "shared data not found: " << (relative)                                \
+                         << " (expects ../shared/data beside the checkout or $T2IMU_SHARED_DATA)"; \
     } while (0)
 std::string shared_path(const std::string& relative);  // "" when missing
 
@@ -37,7 +38,8 @@ struct CliResult {
     std::string output;  // stdout and stderr together
 };
 // The message of the t2imu::Error that `f` throws, or "no error".
-template <class F> std::string error_message(F f) {
+template <class F>
+std::string error_message(F f) {
     try {
         f();
     } catch (const Error& e) {

@@ -17,7 +17,8 @@ using Eigen::Vector3d;
 namespace {
 
 // The rest skeleton of `body`, moved rigidly: frame f gets rotation(t) and translation(t), t = f / fps.
-template <class Motion> JointSequence rigid_motion(const BodyModel& body, double seconds, Motion motion, double fps = 20) {
+template <class Motion>
+JointSequence rigid_motion(const BodyModel& body, double seconds, Motion motion, double fps = 20) {
     const int frames = static_cast<int>(seconds * fps) + 1;
     JointSequence seq(frames, kNumJoints, fps);
     for (int f = 0; f < frames; ++f) {
@@ -35,7 +36,10 @@ const BodySpec& average_man() { return paper_bodies()[2]; }
 
 TEST(VirtualImu, StandingBodyReadsGravityOnEachSensorsUpAxis) {
     const ProceduralBody body(average_man());
-    const JointSequence still = rigid_motion(body, 2.0, [](double, Matrix3d& r, Vector3d& t) { r.setIdentity(); t.setZero(); });
+    const JointSequence still = rigid_motion(body, 2.0, [](double, Matrix3d& r, Vector3d& t) {
+        r.setIdentity();
+        t.setZero();
+    });
     std::vector<SensorPlacement> sensors = parse_sensor_sets("realworld");
     for (SensorPlacement p : parse_sensor_sets("hugadb")) {
         p.position = "hugadb_" + p.position;
@@ -104,7 +108,7 @@ TEST(VirtualImu, BouncingBodyGivesTheAnalyticSpecificForce) {
     }
     // Of 3.55 m/s^2 peak: a cubic spline's second derivative errs by about A w^4 h^2 / 12 = 0.066 m/s^2 here.
     EXPECT_LT(worst_interior, 0.08);
-    EXPECT_LT(worst, 0.3);            // the clip edges: no spike, only the end conditions' larger error
+    EXPECT_LT(worst, 0.3);  // the clip edges: no spike, only the end conditions' larger error
 }
 
 TEST(VirtualImu, ConstantVelocityGivesGravityOnlyAndRetargetingScalesIt) {
@@ -125,12 +129,16 @@ TEST(VirtualImu, ConstantVelocityGivesGravityOnlyAndRetargetingScalesIt) {
 
 TEST(VirtualImu, MountJitterIsSeededAndBounded) {
     const ProceduralBody body(average_man());
-    const JointSequence still = rigid_motion(body, 1.0, [](double, Matrix3d& r, Vector3d& t) { r.setIdentity(); t.setZero(); });
+    const JointSequence still = rigid_motion(body, 1.0, [](double, Matrix3d& r, Vector3d& t) {
+        r.setIdentity();
+        t.setZero();
+    });
     VirtualImuOptions o;
     o.mount_jitter_deg = 15;
     o.seed = 42;
     const std::vector<SensorPlacement> sensors = parse_sensor_sets("realworld");
-    const BodyImu a = synthesize_body_imu(still, average_man(), sensors, o), b = synthesize_body_imu(still, average_man(), sensors, o);
+    const BodyImu a = synthesize_body_imu(still, average_man(), sensors, o),
+                  b = synthesize_body_imu(still, average_man(), sensors, o);
     const BodyImu plain = synthesize_body_imu(still, average_man(), sensors, {});
     for (size_t i = 0; i < sensors.size(); ++i) {
         EXPECT_EQ(a.signals[i].acc[3], b.signals[i].acc[3]);
@@ -149,7 +157,10 @@ TEST(VirtualImu, RefusesUnusableMotions) {
 
 TEST(VirtualImu, NoneBodyKeepsTheInputSkeletonAndSizesItself) {
     const ProceduralBody body(paper_bodies()[4]);  // female tall, 1.80 m
-    const JointSequence still = rigid_motion(body, 1.0, [](double, Matrix3d& r, Vector3d& t) { r.setIdentity(); t.setZero(); });
+    const JointSequence still = rigid_motion(body, 1.0, [](double, Matrix3d& r, Vector3d& t) {
+        r.setIdentity();
+        t.setZero();
+    });
     const BodySpec sized = size_body_to_motion(still);
     EXPECT_NEAR(sized.height_m, 1.80, 1e-9);
     const BodyImu imu = synthesize_body_imu(still, parse_body_specs("none")[0], parse_sensor_sets("sisfall"), {});

@@ -25,7 +25,8 @@ double planted_slide(const JointSequence& m, const JointSequence& source) {
         const std::vector<bool>& other = foot == Foot::left ? right : left;
         const int ankle = foot == Foot::left ? smpl22::left_ankle : smpl22::right_ankle;
         for (int f = 1; f < m.num_frames; ++f)
-            if (planted[static_cast<size_t>(f)] && planted[static_cast<size_t>(f - 1)] && !other[static_cast<size_t>(f)]) {
+            if (planted[static_cast<size_t>(f)] && planted[static_cast<size_t>(f - 1)] &&
+                !other[static_cast<size_t>(f)]) {
                 const Eigen::Vector3d d = m.at(f, ankle) - m.at(f - 1, ankle);
                 worst = std::max(worst, std::hypot(d.x(), d.z()));
             }
@@ -47,7 +48,8 @@ TEST(WalkTurn, NinetyDegreesLeftIsMeasuredAsALeftTurnOfNinety) {
     EXPECT_NEAR(a.ground_speed_m_s, 1.0, 0.05);
     for (int f = 0; f <= 40; ++f)  // before the turn nothing moves
         for (int k = 0; k < 22; ++k) ASSERT_LT((turned.at(f, k) - walk.at(f, k)).norm(), 1e-12);
-    // Every bone keeps its length (each frame moves rigidly), and a foot alone on the ground slides no more than in the walk.
+    // Every bone keeps its length (each frame moves rigidly), and a foot alone on the ground slides no more than in the
+    // walk.
     for (int f = 0; f < walk.num_frames; f += 7)
         for (int k = 1; k < 22; ++k) {
             const int p = smpl22::kParents[static_cast<size_t>(k)];

@@ -25,7 +25,8 @@ std::string make_tiny_motion_dataset(const std::string& dir) {
     for (int k = 0; k < 6; ++k) {
         const FeatureMatrix clip = f.middleRows(k * 4, 60);
         write_npy(dir + "/new_joint_vecs/c" + std::to_string(k) + ".npy", feature_matrix_to_array(clip));
-        std::ofstream(dir + "/texts/c" + std::to_string(k) + ".txt") << "a person walks forward slowly##0.0#0.0\nsomeone walks##0.0#0.0\n";
+        std::ofstream(dir + "/texts/c" + std::to_string(k) + ".txt")
+            << "a person walks forward slowly##0.0#0.0\nsomeone walks##0.0#0.0\n";
         train << "c" << k << "\n";
         mean += clip.colwise().mean().transpose() / 6;
         sq += clip.array().square().colwise().mean().matrix().transpose() / 6;
@@ -64,19 +65,24 @@ void add_capture_copies(const std::string& dir, const std::vector<std::string>& 
                 const int k = std::min(g / 3, clip.num_frames - 2);
                 const double t = g / 3.0 - k;
                 const Eigen::Vector3d p0 = at(k - 1, j), p1 = at(k, j), p2 = at(k + 1, j), p3 = at(k + 2, j);
-                up.at(g, j) = 0.5 * (2 * p1 + (p2 - p0) * t + (2 * p0 - 5 * p1 + 4 * p2 - p3) * t * t + (3 * p1 - p0 - 3 * p2 + p3) * t * t * t);
+                up.at(g, j) = 0.5 * (2 * p1 + (p2 - p0) * t + (2 * p0 - 5 * p1 + 4 * p2 - p3) * t * t +
+                                     (3 * p1 - p0 - 3 * p2 + p3) * t * t * t);
             }
         write_npy(dir + "/capture_joints/" + row[0] + ".npy", joint_sequence_to_array(up));
     }
     write_csv(dir + "/clips.csv", clips);
 }
 
-std::string write_tiny_train_config(const std::string& dir, const std::string& data, const std::string& out, const std::string& extra) {
+std::string write_tiny_train_config(const std::string& dir, const std::string& data, const std::string& out,
+                                    const std::string& extra) {
     const std::string path = dir + "/" + fs::path(out).filename().string() + ".toml";
-    std::ofstream(path) << "out = \"" << out << "\"\n[data]\ndataset = \"" << data << "\"\nvocab = \"" << data << "/vocab.safetensors\"\n"
-                        << "[model]\nlatent_dim = 32\nff_size = 64\nnum_layers = 2\nnum_heads = 2\ndropout = 0.0\n"
-                        << "[text]\nmodel_dim = 16\nlayers = 1\nheads = 2\nff_size = 32\n[diffusion]\nsteps = 50\n"
-                        << "[train]\nbatch = 4\nsteps = 40\nlearning_rate = 1e-3\nseed = 3\nsave_every = 10\nlog_every = 5\n" << extra;
+    std::ofstream(path)
+        << "out = \"" << out << "\"\n[data]\ndataset = \"" << data << "\"\nvocab = \"" << data
+        << "/vocab.safetensors\"\n"
+        << "[model]\nlatent_dim = 32\nff_size = 64\nnum_layers = 2\nnum_heads = 2\ndropout = 0.0\n"
+        << "[text]\nmodel_dim = 16\nlayers = 1\nheads = 2\nff_size = 32\n[diffusion]\nsteps = 50\n"
+        << "[train]\nbatch = 4\nsteps = 40\nlearning_rate = 1e-3\nseed = 3\nsave_every = 10\nlog_every = 5\n"
+        << extra;
     return path;
 }
 

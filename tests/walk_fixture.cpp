@@ -17,7 +17,8 @@ JointSequence procedural_walk(double seconds, double fps) {
         const double t = f / fps;
         m.at(f, pelvis) = Vector3d(0, kWalkPelvisHeight, t);
         for (int j = 1; j < kNumJoints; ++j)
-            if (!is_leg_joint(j)) m.at(f, j) = m.at(f, kParents[static_cast<size_t>(j)]) + kTargetOffsets[static_cast<size_t>(j)];
+            if (!is_leg_joint(j))
+                m.at(f, j) = m.at(f, kParents[static_cast<size_t>(j)]) + kTargetOffsets[static_cast<size_t>(j)];
         for (int side = 0; side < 2; ++side) {
             const LegJoints& leg = kLegs[static_cast<size_t>(side)];
             const double cycle = t + 0.5 * side, phase = cycle - std::floor(cycle);
@@ -31,8 +32,10 @@ JointSequence procedural_walk(double seconds, double fps) {
             m.at(f, leg.ankle) = Vector3d(m.at(f, leg.hip).x(), kAnkleHeight + lift, z);
             const double foot = kTargetOffsets[static_cast<size_t>(leg.toe)].norm(), drop = kAnkleHeight - kToeHeight;
             m.at(f, leg.toe) = m.at(f, leg.ankle) + Vector3d(0, -drop, std::sqrt(foot * foot - drop * drop));
-            m.at(f, leg.knee) = solve_two_bone_ik(m.at(f, leg.hip), m.at(f, leg.ankle), kTargetOffsets[static_cast<size_t>(leg.knee)].norm(),
-                                                  kTargetOffsets[static_cast<size_t>(leg.ankle)].norm(), m.at(f, leg.hip) + Vector3d(0, -0.4, 1))
+            m.at(f, leg.knee) = solve_two_bone_ik(m.at(f, leg.hip), m.at(f, leg.ankle),
+                                                  kTargetOffsets[static_cast<size_t>(leg.knee)].norm(),
+                                                  kTargetOffsets[static_cast<size_t>(leg.ankle)].norm(),
+                                                  m.at(f, leg.hip) + Vector3d(0, -0.4, 1))
                                     .middle;
         }
     }

@@ -6,7 +6,8 @@
 
 namespace t2imu {
 
-const std::vector<std::string> kActivityCategories = {"Dancing", "Jumping", "Lying", "Running", "Sitting", "Stair climbing", "Standing", "Walking"};
+const std::vector<std::string> kActivityCategories = {"Dancing", "Jumping",        "Lying",    "Running",
+                                                      "Sitting", "Stair climbing", "Standing", "Walking"};
 
 namespace {
 
@@ -22,7 +23,8 @@ const char* description(const std::string& category) {
 }
 
 // Best category and its similarity, before the threshold.
-CategoryMatch best_match(const SifEncoder& encoder, const std::vector<Eigen::VectorXd>& names, const std::string& caption) {
+CategoryMatch best_match(const SifEncoder& encoder, const std::vector<Eigen::VectorXd>& names,
+                         const std::string& caption) {
     const Eigen::VectorXd e = encoder.embed(caption);
     CategoryMatch m{"Other", -1};
     for (size_t k = 0; k < names.size(); ++k) {
@@ -42,7 +44,8 @@ std::vector<Eigen::VectorXd> embed_names(const SifEncoder& encoder) {
 
 bool is_high_dynamic(const std::string& c) { return c == "Dancing" || c == "Jumping" || c == "Running"; }
 
-ActivityCategorizer::ActivityCategorizer(const SifEncoder& encoder, double tau) : encoder_(encoder), tau_(tau), names_(embed_names(encoder)) {}
+ActivityCategorizer::ActivityCategorizer(const SifEncoder& encoder, double tau)
+    : encoder_(encoder), tau_(tau), names_(embed_names(encoder)) {}
 
 CategoryMatch ActivityCategorizer::categorize(const std::string& caption) const {
     CategoryMatch m = best_match(encoder_, names_, caption);
@@ -50,8 +53,10 @@ CategoryMatch ActivityCategorizer::categorize(const std::string& caption) const 
     return m;
 }
 
-TauCalibration calibrate_tau(const SifEncoder& encoder, const std::vector<std::string>& captions, const std::vector<std::string>& labels) {
-    if (captions.size() != labels.size() || captions.empty()) throw Error("calibrate_tau", "labels", "one label per caption, at least one");
+TauCalibration calibrate_tau(const SifEncoder& encoder, const std::vector<std::string>& captions,
+                             const std::vector<std::string>& labels) {
+    if (captions.size() != labels.size() || captions.empty())
+        throw Error("calibrate_tau", "labels", "one label per caption, at least one");
     const std::vector<Eigen::VectorXd> names = embed_names(encoder);
     std::vector<CategoryMatch> best;
     for (const std::string& c : captions) best.push_back(best_match(encoder, names, c));
@@ -61,7 +66,8 @@ TauCalibration calibrate_tau(const SifEncoder& encoder, const std::vector<std::s
     for (int step = 0; step < 100; ++step) {
         const double tau = step / 100.0;
         size_t agree = 0;
-        for (size_t i = 0; i < captions.size(); ++i) agree += (best[i].similarity < tau ? "Other" : best[i].category) == labels[i];
+        for (size_t i = 0; i < captions.size(); ++i)
+            agree += (best[i].similarity < tau ? "Other" : best[i].category) == labels[i];
         const double a = static_cast<double>(agree) / static_cast<double>(captions.size());
         if (a > out.agreement) out.agreement = a, out.tau = tau;
     }

@@ -7,7 +7,8 @@
 // are such labels). Category names are embedded as short descriptions ("a person is walking") rather than
 // bare nouns, so that both sides of the cosine are sentences. SIF weight a = 1e-4 without common-component
 // removal agrees best with the shared motion capture's single-tag captions (removing the common component takes
-// the activity words with it), so that is the categoriser's setting (docs/results.md#l_acc-per-activity-category-2026-11-23).
+// the activity words with it), so that is the categoriser's setting
+// (docs/results.md#l_acc-per-activity-category-2026-11-23).
 #pragma once
 #include <string>
 #include <vector>
@@ -17,12 +18,13 @@
 namespace t2imu {
 
 constexpr double kCategorySifWeight = 1e-4;  // SIF's a for categorising captions (see above)
-extern const std::vector<std::string> kActivityCategories;  // Dancing, Jumping, Lying, Running, Sitting, Stair climbing, Standing, Walking
-bool is_high_dynamic(const std::string& category);           // Dancing, Jumping, Running (the paper's grouping)
+extern const std::vector<std::string>
+    kActivityCategories;  // Dancing, Jumping, Lying, Running, Sitting, Stair climbing, Standing, Walking
+bool is_high_dynamic(const std::string& category);  // Dancing, Jumping, Running (the paper's grouping)
 
 struct CategoryMatch {
-    std::string category;  // one of kActivityCategories, or "Other"
-    double similarity = 0; // to the best category
+    std::string category;   // one of kActivityCategories, or "Other"
+    double similarity = 0;  // to the best category
 };
 
 class ActivityCategorizer {
@@ -42,6 +44,7 @@ struct TauCalibration {
     size_t captions = 0;
 };
 // labels[i]: a category name or "Other". Thresholds 0.00, 0.01, ..., 0.99; the best, ties to the lowest.
-TauCalibration calibrate_tau(const SifEncoder& encoder, const std::vector<std::string>& captions, const std::vector<std::string>& labels);
+TauCalibration calibrate_tau(const SifEncoder& encoder, const std::vector<std::string>& captions,
+                             const std::vector<std::string>& labels);
 
 }  // namespace t2imu

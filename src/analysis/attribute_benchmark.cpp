@@ -49,7 +49,8 @@ AttributeDraw measure_draw(const std::string& activity, const std::string& promp
         for (int g = f - h; g <= f + h; ++g) s += motion.at(g, smpl22::pelvis).y();
         smooth[static_cast<size_t>(f)] = s / (2 * h + 1);
     }
-    d.pelvis_peak_above_ends_m = *std::max_element(smooth.begin(), smooth.end()) - std::max(smooth.front(), smooth.back());
+    d.pelvis_peak_above_ends_m =
+        *std::max_element(smooth.begin(), smooth.end()) - std::max(smooth.front(), smooth.back());
     return d;
 }
 
@@ -61,18 +62,21 @@ AttributeBenchmark attribute_benchmark(const std::vector<AttributeDraw>& draws) 
         const MotionAttributes& a = d.attributes;
         const bool slow = asks(asked, "pace_slow") || asks(asked, "jog"), fast = asks(asked, "pace_fast");
         if (slow != fast) (slow ? speeds[d.activity].first : speeds[d.activity].second).push_back(a.ground_speed_m_s);
-        if (asks(asked, "turn_around")) count(b, "turn_around", std::abs(a.heading_change_deg) >= kAroundShown);
+        if (asks(asked, "turn_around"))
+            count(b, "turn_around", std::abs(a.heading_change_deg) >= kAroundShown);
         else if (asks(asked, "turn_left") != asks(asked, "turn_right"))
             count(b, asks(asked, "turn_left") ? "turn_left" : "turn_right",
                   (asks(asked, "turn_left") ? a.heading_change_deg : -a.heading_change_deg) >= kTurnShown);
         if (asks(asked, "backward")) count(b, "backward", a.travel == TravelDirection::backward);
-        if (asks(asked, "sequence") && d.activity.rfind("stairs", 0) == 0) count(b, "stairs_up_down", d.pelvis_peak_above_ends_m >= kStairsTripRise);
+        if (asks(asked, "sequence") && d.activity.rfind("stairs", 0) == 0)
+            count(b, "stairs_up_down", d.pelvis_peak_above_ends_m >= kStairsTripRise);
         if (asks(asked, "sequence") && d.activity == "sitting")
             count(b, "sit_then_stand", in_order(a.transitions, Transition::sit_down, Transition::stand_up));
     }
     for (const auto& [activity, s] : speeds) {
         if (s.first.empty() || s.second.empty()) continue;
-        b.speed[activity] = {median(s.first), median(s.second), static_cast<int>(s.first.size()), static_cast<int>(s.second.size())};
+        b.speed[activity] = {median(s.first), median(s.second), static_cast<int>(s.first.size()),
+                             static_cast<int>(s.second.size())};
     }
     return b;
 }
@@ -92,10 +96,14 @@ std::string attribute_benchmark_json(const AttributeBenchmark& b) {
     nlohmann::json j;
     j["speed"] = nlohmann::json::object();
     for (const auto& [activity, s] : b.speed)
-        j["speed"][activity] = {{"slow_median_m_s", s.slow_median_m_s}, {"fast_median_m_s", s.fast_median_m_s},
-                                {"slow_draws", s.slow_draws}, {"fast_draws", s.fast_draws}, {"ratio", s.ratio()}};
+        j["speed"][activity] = {{"slow_median_m_s", s.slow_median_m_s},
+                                {"fast_median_m_s", s.fast_median_m_s},
+                                {"slow_draws", s.slow_draws},
+                                {"fast_draws", s.fast_draws},
+                                {"ratio", s.ratio()}};
     j["checks"] = nlohmann::json::object();
-    for (const auto& [name, c] : b.checks) j["checks"][name] = {{"passed", c.passed}, {"checked", c.checked}, {"share", c.share()}};
+    for (const auto& [name, c] : b.checks)
+        j["checks"][name] = {{"passed", c.passed}, {"checked", c.checked}, {"share", c.share()}};
     return j.dump(1) + "\n";
 }
 
@@ -103,12 +111,13 @@ std::string attribute_benchmark_table(const AttributeBenchmark& b) {
     std::string out;
     char line[160];
     for (const auto& [activity, s] : b.speed) {
-        std::snprintf(line, sizeof line, "speed %-10.10s fast / slow %.2f (median %.2f / %.2f m/s, %d / %d draws)\n", activity.c_str(),
-                      s.ratio(), s.fast_median_m_s, s.slow_median_m_s, s.fast_draws, s.slow_draws);
+        std::snprintf(line, sizeof line, "speed %-10.10s fast / slow %.2f (median %.2f / %.2f m/s, %d / %d draws)\n",
+                      activity.c_str(), s.ratio(), s.fast_median_m_s, s.slow_median_m_s, s.fast_draws, s.slow_draws);
         out += line;
     }
     for (const auto& [name, c] : b.checks) {
-        std::snprintf(line, sizeof line, "%-16.16s %d of %d draws (%.0f %%)\n", name.c_str(), c.passed, c.checked, 100 * c.share());
+        std::snprintf(line, sizeof line, "%-16.16s %d of %d draws (%.0f %%)\n", name.c_str(), c.passed, c.checked,
+                      100 * c.share());
         out += line;
     }
     return out;

@@ -19,8 +19,8 @@
 
 namespace t2imu {
 
-constexpr double kTurnShown = 30;       // deg of net heading change in the asked direction
-constexpr double kAroundShown = 135;    // deg
+constexpr double kTurnShown = 30;         // deg of net heading change in the asked direction
+constexpr double kAroundShown = 135;      // deg
 constexpr double kStairsTripRise = 0.25;  // m the smoothed pelvis rises above both its start and its end
 
 struct AttributeDraw {

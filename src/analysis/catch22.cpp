@@ -11,32 +11,64 @@
 namespace t2imu {
 
 const std::vector<std::string>& catch24_names() {
-    static const std::vector<std::string> names = {
-        "DN_HistogramMode_5", "DN_HistogramMode_10", "DN_OutlierInclude_p_001_mdrmd",
-        "DN_OutlierInclude_n_001_mdrmd", "CO_f1ecac", "CO_FirstMin_ac", "SP_Summaries_welch_rect_area_5_1",
-        "SP_Summaries_welch_rect_centroid", "FC_LocalSimple_mean3_stderr", "FC_LocalSimple_mean1_tauresrat",
-        "MD_hrv_classic_pnn40", "SB_BinaryStats_mean_longstretch1", "SB_BinaryStats_diff_longstretch0",
-        "SB_MotifThree_quantile_hh", "CO_HistogramAMI_even_2_5", "CO_trev_1_num",
-        "IN_AutoMutualInfoStats_40_gaussian_fmmi", "SB_TransitionMatrix_3ac_sumdiagcov",
-        "PD_PeriodicityWang_th0_01", "CO_Embed2_Dist_tau_d_expfit_meandiff",
-        "SC_FluctAnal_2_rsrangefit_50_1_logi_prop_r1", "SC_FluctAnal_2_dfa_50_1_2_logi_prop_r1", "DN_Mean",
-        "DN_Spread_Std"};
+    static const std::vector<std::string> names = {"DN_HistogramMode_5",
+                                                   "DN_HistogramMode_10",
+                                                   "DN_OutlierInclude_p_001_mdrmd",
+                                                   "DN_OutlierInclude_n_001_mdrmd",
+                                                   "CO_f1ecac",
+                                                   "CO_FirstMin_ac",
+                                                   "SP_Summaries_welch_rect_area_5_1",
+                                                   "SP_Summaries_welch_rect_centroid",
+                                                   "FC_LocalSimple_mean3_stderr",
+                                                   "FC_LocalSimple_mean1_tauresrat",
+                                                   "MD_hrv_classic_pnn40",
+                                                   "SB_BinaryStats_mean_longstretch1",
+                                                   "SB_BinaryStats_diff_longstretch0",
+                                                   "SB_MotifThree_quantile_hh",
+                                                   "CO_HistogramAMI_even_2_5",
+                                                   "CO_trev_1_num",
+                                                   "IN_AutoMutualInfoStats_40_gaussian_fmmi",
+                                                   "SB_TransitionMatrix_3ac_sumdiagcov",
+                                                   "PD_PeriodicityWang_th0_01",
+                                                   "CO_Embed2_Dist_tau_d_expfit_meandiff",
+                                                   "SC_FluctAnal_2_rsrangefit_50_1_logi_prop_r1",
+                                                   "SC_FluctAnal_2_dfa_50_1_2_logi_prop_r1",
+                                                   "DN_Mean",
+                                                   "DN_Spread_Std"};
     return names;
 }
 
 const std::vector<std::string>& catch24_short_names() {
-    static const std::vector<std::string> names = {
-        "mode_5", "mode_10", "outlier_timing_pos", "outlier_timing_neg", "acf_timescale", "acf_first_min",
-        "low_freq_power", "centroid_freq", "forecast_error", "whiten_timescale", "high_fluctuation",
-        "stretch_high", "stretch_decreasing", "entropy_pairs", "ami2", "trev", "ami_timescale",
-        "transition_variance", "periodicity", "embedding_dist", "rs_range", "dfa", "mean", "std"};
+    static const std::vector<std::string> names = {"mode_5",
+                                                   "mode_10",
+                                                   "outlier_timing_pos",
+                                                   "outlier_timing_neg",
+                                                   "acf_timescale",
+                                                   "acf_first_min",
+                                                   "low_freq_power",
+                                                   "centroid_freq",
+                                                   "forecast_error",
+                                                   "whiten_timescale",
+                                                   "high_fluctuation",
+                                                   "stretch_high",
+                                                   "stretch_decreasing",
+                                                   "entropy_pairs",
+                                                   "ami2",
+                                                   "trev",
+                                                   "ami_timescale",
+                                                   "transition_variance",
+                                                   "periodicity",
+                                                   "embedding_dist",
+                                                   "rs_range",
+                                                   "dfa",
+                                                   "mean",
+                                                   "std"};
     return names;
 }
 
 std::vector<std::size_t> catch22_reference_output_order(bool catch24) {
     // The reference CLI prints the features grouped as its source lists them, not in featureList order.
-    std::vector<std::size_t> order = {3, 2, 0, 1, 19, 4, 5, 14, 15, 9, 8, 16,
-                                      10, 12, 11, 13, 20, 21, 6, 7, 17, 18};
+    std::vector<std::size_t> order = {3, 2, 0, 1, 19, 4, 5, 14, 15, 9, 8, 16, 10, 12, 11, 13, 20, 21, 6, 7, 17, 18};
     if (catch24) order.insert(order.end(), {22, 23});
     return order;
 }

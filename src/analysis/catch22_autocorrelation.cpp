@@ -33,9 +33,7 @@ double first_minimum(const Series& acf) {
 double histogram_ami_even(const Series& x, int tau, int num_bins) {
     const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
     const double first_edge = *lo - 0.1, width = (*hi - *lo + 0.2) / num_bins;
-    auto bin_of = [&](double v) {
-        return std::min(static_cast<int>((v - first_edge) / width), num_bins - 1);
-    };
+    auto bin_of = [&](double v) { return std::min(static_cast<int>((v - first_edge) / width), num_bins - 1); };
     const std::size_t pairs = x.size() - static_cast<std::size_t>(tau);
     std::vector<double> joint(num_bins * num_bins, 0.0), rows(num_bins, 0.0), cols(num_bins, 0.0);
     for (std::size_t t = 0; t < pairs; ++t) joint[bin_of(x[t]) * num_bins + bin_of(x[t + tau])] += 1.0;
@@ -99,8 +97,7 @@ double embed2_dist_expfit_meandiff(const Series& x, const Series& acf) {
     std::size_t tau = first_zero_crossing(acf);
     if (static_cast<double>(tau) > static_cast<double>(n) / 10.0) tau = n / 10;
     Series d(n - tau - 1);
-    for (std::size_t t = 0; t + 1 < n - tau; ++t)
-        d[t] = std::hypot(x[t + 1] - x[t], x[t + tau + 1] - x[t + tau]);
+    for (std::size_t t = 0; t + 1 < n - tau; ++t) d[t] = std::hypot(x[t + 1] - x[t], x[t + tau + 1] - x[t + tau]);
     const double lambda = mean(d);
     const auto [lo, hi] = std::minmax_element(d.begin(), d.end());
     // Scott's rule picks the number of bins; the bins then split [min, max] evenly.

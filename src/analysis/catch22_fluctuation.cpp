@@ -41,9 +41,9 @@ double two_line_error(const Series& log_tau, const Series& log_f, std::size_t sp
 }
 
 // hctsa's SC_FluctAnal with q = 2, 50 log-spaced window sizes from 5 to n/2 (rounded, duplicates dropped),
-// non-overlapping windows of the cumulative sum of every lag-th sample. F(tau) is the root-mean-square of the window fluctuations.
-// Two straight lines are fitted to log F against log tau, split where their summed residual norms are least
-// (each with at least 6 points); the output is the share of window sizes in the first (prop_r1).
+// non-overlapping windows of the cumulative sum of every lag-th sample. F(tau) is the root-mean-square of the window
+// fluctuations. Two straight lines are fitted to log F against log tau, split where their summed residual norms are
+// least (each with at least 6 points); the output is the share of window sizes in the first (prop_r1).
 double fluct_anal_prop_r1(const Series& series, Fluctuation kind, std::size_t lag) {
     Series x;
     for (std::size_t t = 0; t < series.size(); t += lag) x.push_back(series[t]);
@@ -88,6 +88,8 @@ double fluct_anal_prop_r1(const Series& series, Fluctuation kind, std::size_t la
 }  // namespace
 
 double fluct_anal_rsrangefit_prop_r1(const Series& x) { return fluct_anal_prop_r1(x, Fluctuation::RescaledRange, 1); }
-double fluct_anal_dfa_prop_r1(const Series& x) { return fluct_anal_prop_r1(x, Fluctuation::Dfa, 2); }  // "_1_2": k = 1, lag 2
+double fluct_anal_dfa_prop_r1(const Series& x) {
+    return fluct_anal_prop_r1(x, Fluctuation::Dfa, 2);
+}  // "_1_2": k = 1, lag 2
 
 }  // namespace t2imu::catch22_detail

@@ -43,8 +43,7 @@ double periodicity_wang(const Series& x, double threshold) {
         if (before < 0.0 && after > 0.0) {
             have_trough = true;
             trough = acf[i];
-        } else if (before > 0.0 && after < 0.0 && have_trough && acf[i] - trough >= threshold &&
-                   acf[i] > 0.0) {
+        } else if (before > 0.0 && after < 0.0 && have_trough && acf[i] - trough >= threshold && acf[i] > 0.0) {
             return static_cast<double>(i);
         }
     }

@@ -11,8 +11,8 @@ namespace {
 // A one-sided power spectral density over angular frequency (rad/sample): Welch's estimate with a single
 // rectangular window as long as the series, zero-padded to the next power of two.
 struct Spectrum {
-    Series power;      // density at each frequency
-    double step = 0;   // frequency spacing (rad/sample)
+    Series power;     // density at each frequency
+    double step = 0;  // frequency spacing (rad/sample)
 };
 
 Spectrum welch_rect(const Series& x) {

@@ -57,8 +57,7 @@ std::vector<int> coarse_grain_quantile(const Series& x, int num_groups) {
     Series sorted = x;
     std::sort(sorted.begin(), sorted.end());
     Series thresholds(num_groups + 1);
-    for (int g = 0; g <= num_groups; ++g)
-        thresholds[g] = quantile_sorted(sorted, static_cast<double>(g) / num_groups);
+    for (int g = 0; g <= num_groups; ++g) thresholds[g] = quantile_sorted(sorted, static_cast<double>(g) / num_groups);
     thresholds[0] -= 1.0;  // the minimum itself belongs to the first group
     std::vector<int> symbols(x.size(), 0);
     for (std::size_t t = 0; t < x.size(); ++t)

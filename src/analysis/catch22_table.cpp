@@ -23,9 +23,11 @@ std::vector<std::string> window_channel_names(const WindowOptions& o) {
     return names;
 }
 
-CsvTable catch22_window_table(const WindowSet& w, const std::vector<std::string>& channel_names, bool catch24, int threads) {
+CsvTable catch22_window_table(const WindowSet& w, const std::vector<std::string>& channel_names, bool catch24,
+                              int threads) {
     if (static_cast<int>(channel_names.size()) != w.channels)
-        throw Error("catch22 table", "channels", std::to_string(w.channels) + " names", std::to_string(channel_names.size()));
+        throw Error("catch22 table", "channels", std::to_string(w.channels) + " names",
+                    std::to_string(channel_names.size()));
     CsvTable t;
     t.header = kWindowLabelColumns;
     const size_t features = catch24 ? 24 : 22;
@@ -37,7 +39,10 @@ CsvTable catch22_window_table(const WindowSet& w, const std::vector<std::string>
         std::vector<std::string> row = {w.subjects[i], w.groups[i], w.labels[i], ""};
         std::vector<double> series(static_cast<size_t>(w.length));
         for (int c = 0; c < w.channels; ++c) {
-            for (int k = 0; k < w.length; ++k) series[static_cast<size_t>(k)] = w.data[(i * static_cast<size_t>(w.length) + static_cast<size_t>(k)) * static_cast<size_t>(w.channels) + static_cast<size_t>(c)];
+            for (int k = 0; k < w.length; ++k)
+                series[static_cast<size_t>(k)] = w.data[(i * static_cast<size_t>(w.length) + static_cast<size_t>(k)) *
+                                                            static_cast<size_t>(w.channels) +
+                                                        static_cast<size_t>(c)];
             std::vector<double> values;
             try {
                 values = catch22(series, catch24);

@@ -16,7 +16,8 @@ inline const std::vector<std::string> kWindowLabelColumns = {"subject", "trial",
 // channel and feature. A channel that is constant within a window (catch22 cannot z-score it) gets "nan".
 // channel_names: one per window channel, e.g. acc_x, acc_y, acc_z. Windows are computed on `threads` workers
 // (core/parallel.hpp); the table is the same for any count.
-CsvTable catch22_window_table(const WindowSet& windows, const std::vector<std::string>& channel_names, bool catch24, int threads = 1);
+CsvTable catch22_window_table(const WindowSet& windows, const std::vector<std::string>& channel_names, bool catch24,
+                              int threads = 1);
 
 // The channel names make_windows produces for these options: <position>_acc_x ... (<position>_gyr_z).
 std::vector<std::string> window_channel_names(const WindowOptions& options);

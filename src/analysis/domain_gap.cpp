@@ -26,7 +26,8 @@ PointMatrix columns_of(const CsvTable& t, const std::vector<std::string>& names,
         for (size_t r = 0; r < rows.size(); ++r) {
             const std::string& v = t.rows[rows[r]][col];
             // catch22 writes "nan" (or nothing) for a feature of a flat channel; anything else must be a number.
-            x(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = v.empty() ? std::nan("") : t.number(rows[r], col);
+            x(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) =
+                v.empty() ? std::nan("") : t.number(rows[r], col);
         }
     }
     return x;
@@ -38,7 +39,8 @@ TwoSampleSummary two_sample(const PointMatrix& a, const PointMatrix& b, uint64_t
 }
 
 nlohmann::json two_sample_json(const TwoSampleSummary& t) {
-    return {{"balanced_accuracy", t.balanced_accuracy}, {"folds", t.folds}, {"real", t.real}, {"synthetic", t.synthetic}};
+    return {
+        {"balanced_accuracy", t.balanced_accuracy}, {"folds", t.folds}, {"real", t.real}, {"synthetic", t.synthetic}};
 }
 
 // A distance JSON wrote as null (NaN: a side held no finite value) reads back as NaN.
@@ -52,7 +54,8 @@ TwoSampleSummary parse_two_sample(const nlohmann::json& doc, const std::string& 
     t.balanced_accuracy = number_or_nan(doc, "balanced_accuracy", path, where);
     const nlohmann::json& folds = json_array(doc, "folds", path, where);
     for (size_t i = 0; i < folds.size(); ++i) {
-        if (!folds[i].is_number() && !folds[i].is_null()) throw Error(path, where + ".folds." + std::to_string(i), "a number", folds[i].dump());
+        if (!folds[i].is_number() && !folds[i].is_null())
+            throw Error(path, where + ".folds." + std::to_string(i), "a number", folds[i].dump());
         t.folds.push_back(folds[i].is_null() ? std::nan("") : folds[i].get<double>());
     }
     t.real = static_cast<int64_t>(json_count(doc, "real", path, where));
@@ -68,11 +71,15 @@ double ks_rank(double ks) { return std::isnan(ks) ? -1 : ks; }
 DomainGap domain_gap(const CsvTable& real, const CsvTable& synthetic, uint64_t seed) {
     std::vector<std::string> features;
     for (const std::string& h : real.header)
-        if (!kLabelColumns.count(h) && std::find(synthetic.header.begin(), synthetic.header.end(), h) != synthetic.header.end()) features.push_back(h);
+        if (!kLabelColumns.count(h) &&
+            std::find(synthetic.header.begin(), synthetic.header.end(), h) != synthetic.header.end())
+            features.push_back(h);
     if (features.empty()) throw Error(real.source, "columns", "feature columns shared with " + synthetic.source);
     const PointMatrix a = columns_of(real, features, ""), b = columns_of(synthetic, features, "");
     for (const auto& [table, x] : {std::pair<const CsvTable*, const PointMatrix*>{&real, &a}, {&synthetic, &b}})
-        if (x->rows() < 5) throw Error(table->source, "windows", "at least 5 (one per fold of the two-sample test)", std::to_string(x->rows()));
+        if (x->rows() < 5)
+            throw Error(table->source, "windows", "at least 5 (one per fold of the two-sample test)",
+                        std::to_string(x->rows()));
     DomainGap gap;
     gap.features = static_cast<int64_t>(features.size());
     gap.overall = two_sample(a, b, seed);
@@ -100,12 +107,15 @@ nlohmann::json domain_gap_json(const DomainGap& gap) {
     nlohmann::json out;
     out["features"] = gap.features;
     out["classifier_two_sample_test"] = two_sample_json(gap.overall);
-    out["note"] = "balanced accuracy of logistic regression telling real (0) from synthetic (1), 5-fold CV: 0.5 = indistinguishable";
+    out["note"] =
+        "balanced accuracy of logistic regression telling real (0) from synthetic (1), 5-fold CV: 0.5 = "
+        "indistinguishable";
     nlohmann::json per_activity = nlohmann::json::object();
     for (const auto& [activity, t] : gap.per_activity) per_activity[activity] = two_sample_json(t);
     out["per_activity"] = per_activity;
     nlohmann::json distances = nlohmann::json::array();
-    for (const FeatureDistance& d : gap.per_feature) distances.push_back({{"feature", d.feature}, {"wasserstein_1", d.wasserstein_1}, {"ks", d.ks}});
+    for (const FeatureDistance& d : gap.per_feature)
+        distances.push_back({{"feature", d.feature}, {"wasserstein_1", d.wasserstein_1}, {"ks", d.ks}});
     out["per_feature"] = distances;
     return out;
 }
@@ -113,13 +123,15 @@ nlohmann::json domain_gap_json(const DomainGap& gap) {
 DomainGap parse_domain_gap(const nlohmann::json& doc, const std::string& path) {
     DomainGap gap;
     gap.features = static_cast<int64_t>(json_count(doc, "features", path));
-    gap.overall = parse_two_sample(json_object(doc, "classifier_two_sample_test", path), path, "classifier_two_sample_test");
+    gap.overall =
+        parse_two_sample(json_object(doc, "classifier_two_sample_test", path), path, "classifier_two_sample_test");
     for (const auto& [activity, t] : json_object(doc, "per_activity", path).items())
         gap.per_activity[activity] = parse_two_sample(t, path, "per_activity." + activity);
     const nlohmann::json& distances = json_array(doc, "per_feature", path);
     for (size_t i = 0; i < distances.size(); ++i) {
         const std::string where = "per_feature." + std::to_string(i);
-        gap.per_feature.push_back({json_string(distances[i], "feature", path, where), number_or_nan(distances[i], "wasserstein_1", path, where),
+        gap.per_feature.push_back({json_string(distances[i], "feature", path, where),
+                                   number_or_nan(distances[i], "wasserstein_1", path, where),
                                    number_or_nan(distances[i], "ks", path, where)});
     }
     return gap;
@@ -127,7 +139,8 @@ DomainGap parse_domain_gap(const nlohmann::json& doc, const std::string& path) {
 
 DomainGap read_domain_gap(const std::string& path) { return parse_domain_gap(read_json_file(path), path); }
 
-CsvTable rows_of_activities(const CsvTable& table, const std::vector<std::string>& activities, const std::string& option) {
+CsvTable rows_of_activities(const CsvTable& table, const std::vector<std::string>& activities,
+                            const std::string& option) {
     const size_t col = table.column("activity");
     CsvTable kept{table.source, table.header, {}};
     std::set<std::string> seen;

@@ -15,7 +15,7 @@ namespace t2imu {
 // The classifier two-sample test on one pair of window sets (two_sample.hpp): 0.5 = indistinguishable.
 struct TwoSampleSummary {
     double balanced_accuracy = 0;
-    std::vector<double> folds;  // each fold's balanced accuracy
+    std::vector<double> folds;        // each fold's balanced accuracy
     int64_t real = 0, synthetic = 0;  // windows
 };
 
@@ -29,7 +29,7 @@ struct DomainGap {
     int64_t features = 0;  // feature columns the tables share
     TwoSampleSummary overall;
     std::map<std::string, TwoSampleSummary> per_activity;  // activities with at least 5 windows on each side
-    std::vector<FeatureDistance> per_feature;               // most different first (by KS)
+    std::vector<FeatureDistance> per_feature;              // most different first (by KS)
 };
 
 DomainGap domain_gap(const CsvTable& real, const CsvTable& synthetic, uint64_t seed = 0);
@@ -40,6 +40,7 @@ DomainGap read_domain_gap(const std::string& path);
 
 // The rows of `table` whose activity is one of `activities`: the pooled test over the classes two data sets
 // share. Throws Error naming `option` for a class the table holds no row of.
-CsvTable rows_of_activities(const CsvTable& table, const std::vector<std::string>& activities, const std::string& option);
+CsvTable rows_of_activities(const CsvTable& table, const std::vector<std::string>& activities,
+                            const std::string& option);
 
 }  // namespace t2imu

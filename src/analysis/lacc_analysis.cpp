@@ -15,7 +15,8 @@ std::vector<LaccSample> read_lacc_csv(const std::string& path) {
     std::vector<LaccSample> out;
     for (size_t r = 0; r < t.rows.size(); ++r) {
         const double v = t.number(r, l);
-        if (!std::isfinite(v) || v < 0) throw Error(path, "l_acc row " + std::to_string(r + 2), "a finite, non-negative number", t.rows[r][l]);
+        if (!std::isfinite(v) || v < 0)
+            throw Error(path, "l_acc row " + std::to_string(r + 2), "a finite, non-negative number", t.rows[r][l]);
         out.push_back({t.rows[r][id], t.rows[r][caption], v});
     }
     return out;
@@ -29,7 +30,8 @@ void add(LaccGroup& g, double before, double after) {
 }
 }  // namespace
 
-LaccAnalysis analyse_lacc(const std::vector<LaccSample>& before, const std::vector<LaccSample>& after, const ActivityCategorizer& categorizer) {
+LaccAnalysis analyse_lacc(const std::vector<LaccSample>& before, const std::vector<LaccSample>& after,
+                          const ActivityCategorizer& categorizer) {
     std::map<std::string, const LaccSample*> by_id;
     for (const LaccSample& s : after) by_id[s.id] = &s;
     std::map<std::string, LaccGroup> groups;
@@ -43,9 +45,12 @@ LaccAnalysis analyse_lacc(const std::vector<LaccSample>& before, const std::vect
         const std::string category = categorizer.categorize(b.caption).category;
         add(groups[category], b.l_acc, it->second->l_acc);
         add(a.all, b.l_acc, it->second->l_acc);
-        if (category != "Other") add(is_high_dynamic(category) ? a.high_dynamic : a.low_dynamic, b.l_acc, it->second->l_acc);
+        if (category != "Other")
+            add(is_high_dynamic(category) ? a.high_dynamic : a.low_dynamic, b.l_acc, it->second->l_acc);
     }
-    if (before.size() != after.size()) throw Error("l_acc", "rows", std::to_string(before.size()) + " samples in both files", std::to_string(after.size()));
+    if (before.size() != after.size())
+        throw Error("l_acc", "rows", std::to_string(before.size()) + " samples in both files",
+                    std::to_string(after.size()));
     std::vector<std::string> order = kActivityCategories;
     order.push_back("Other");
     for (const std::string& c : order)
@@ -63,7 +68,8 @@ std::string lacc_analysis_csv(const LaccAnalysis& a) {
     rows.push_back(a.low_dynamic);
     rows.push_back(a.all);
     for (const LaccGroup& g : rows)
-        out += g.name + "," + std::to_string(g.samples) + "," + general_text(g.before, 6) + "," + general_text(g.after, 6) + "," + fixed_text(g.change_percent(), 2) + "\n";
+        out += g.name + "," + std::to_string(g.samples) + "," + general_text(g.before, 6) + "," +
+               general_text(g.after, 6) + "," + fixed_text(g.change_percent(), 2) + "\n";
     return out;
 }
 

@@ -22,7 +22,7 @@ struct LaccGroup {
 };
 
 struct LaccAnalysis {
-    std::vector<LaccGroup> categories;          // kActivityCategories then Other; empty ones left out
+    std::vector<LaccGroup> categories;  // kActivityCategories then Other; empty ones left out
     LaccGroup high_dynamic, low_dynamic, all;
 };
 

@@ -21,7 +21,8 @@ constexpr double kMinSeconds = 2;
 constexpr double kMinDominantHz = 0.3;
 constexpr double kHighFrequencyHz = 3;
 constexpr double kSwayLowHz = 0.5, kSwayHighHz = 3;  // gyr_sway_sd's band: stride and step, not turns or posture
-constexpr double kSwingSeconds = 0.2;  // mag_rise / mag_dip average |a| over this long: a movement's swing, not a step's spike
+constexpr double kSwingSeconds =
+    0.2;  // mag_rise / mag_dip average |a| over this long: a movement's swing, not a step's spike
 
 // Means of every run of `width` consecutive values (width <= x.size()).
 std::vector<double> moving_mean(const std::vector<double>& x, size_t width) {
@@ -60,15 +61,16 @@ std::vector<double> periodogram(const std::vector<double>& x, size_t* length) {
 std::complex<double> fourier_at(const std::vector<double>& x, double rate_hz, double f) {
     const double m = mean_of(x);
     std::complex<double> sum = 0;
-    for (size_t i = 0; i < x.size(); ++i) sum += (x[i] - m) * std::polar(1.0, -2 * M_PI * f * static_cast<double>(i) / rate_hz);
+    for (size_t i = 0; i < x.size(); ++i)
+        sum += (x[i] - m) * std::polar(1.0, -2 * M_PI * f * static_cast<double>(i) / rate_hz);
     return sum * (2.0 / static_cast<double>(x.size()));
 }
 
 // Axis a's gravity part over the rest, at f Hz: the sensor's turning (gyroscope) moves the up direction u (the
 // mean specific force's direction) as du/dt = u x omega in the sensor frame, so gravity contributes
 // g (u x Omega(f))_a / (i 2 pi f) to the axis's Fourier coefficient X_a(f); the rest is the kinematic part.
-std::complex<double> gravity_ratio(const std::vector<double> acc[3], const std::vector<double> gyr[3], const Eigen::Vector3d& up,
-                                   int a, double rate_hz, double f) {
+std::complex<double> gravity_ratio(const std::vector<double> acc[3], const std::vector<double> gyr[3],
+                                   const Eigen::Vector3d& up, int a, double rate_hz, double f) {
     if (f <= 0 || up.norm() == 0) return 0;
     std::complex<double> omega[3];
     for (int k = 0; k < 3; ++k) omega[k] = fourier_at(gyr[k], rate_hz, f);
@@ -134,10 +136,12 @@ double dominant_frequency_hz(const std::vector<double>& x, double rate_hz, doubl
 }
 
 const std::vector<std::string>& signal_statistic_names() {
-    static const std::vector<std::string> names = {"mean_x", "mean_y", "mean_z", "gravity_tilt_deg", "sd_x", "sd_y", "sd_z", "mag_sd",
-                                                   "mag_p05", "mag_p50", "mag_p95", "mag_rise", "mag_dip", "dom_x_hz", "dom_y_hz", "dom_z_hz", "jerk_rms", "hf_share",
-                                                   "hf_sd_x", "hf_sd_y", "hf_sd_z", "gyr_sway_sd_x", "gyr_sway_sd_y", "gyr_sway_sd_z", "yaw_hz",
-                                                   "grav_x_re", "grav_x_im", "grav_y_re", "grav_y_im", "grav_z_re", "grav_z_im"};
+    static const std::vector<std::string> names = {
+        "mean_x",        "mean_y",        "mean_z",        "gravity_tilt_deg", "sd_x",      "sd_y",      "sd_z",
+        "mag_sd",        "mag_p05",       "mag_p50",       "mag_p95",          "mag_rise",  "mag_dip",   "dom_x_hz",
+        "dom_y_hz",      "dom_z_hz",      "jerk_rms",      "hf_share",         "hf_sd_x",   "hf_sd_y",   "hf_sd_z",
+        "gyr_sway_sd_x", "gyr_sway_sd_y", "gyr_sway_sd_z", "yaw_hz",           "grav_x_re", "grav_x_im", "grav_y_re",
+        "grav_y_im",     "grav_z_re",     "grav_z_im"};
     return names;
 }
 
@@ -154,7 +158,8 @@ std::map<std::string, double> recording_signal_statistics(const ImuRecording& re
     }
     const size_t n = axis[0].size();
     if (static_cast<double>(n) < kMinSeconds * rate_hz)
-        throw Error(recording.path, "samples", "at least 2 s of samples", std::to_string(n) + " at " + std::to_string(rate_hz) + " Hz");
+        throw Error(recording.path, "samples", "at least 2 s of samples",
+                    std::to_string(n) + " at " + std::to_string(rate_hz) + " Hz");
     std::map<std::string, double> s;
     const char* xyz = "xyz";
     Eigen::Vector3d mean;
@@ -171,26 +176,30 @@ std::map<std::string, double> recording_signal_statistics(const ImuRecording& re
             axis_total += p[k];
             if (static_cast<double>(k) * rate_hz / static_cast<double>(length) > kHighFrequencyHz) axis_high += p[k];
         }
-        s[std::string("hf_sd_") + xyz[a]] = axis_total > 0 ? s[std::string("sd_") + xyz[a]] * std::sqrt(axis_high / axis_total) : 0;
+        s[std::string("hf_sd_") + xyz[a]] =
+            axis_total > 0 ? s[std::string("sd_") + xyz[a]] * std::sqrt(axis_high / axis_total) : 0;
         high += axis_high;
         total += axis_total;
     }
     const double largest = mean.cwiseAbs().maxCoeff();
     s["gravity_tilt_deg"] = mean.norm() > 0 ? std::acos(std::min(1.0, largest / mean.norm())) * 180 / M_PI : 0;
     std::vector<double> magnitude(n);
-    for (size_t i = 0; i < n; ++i) magnitude[i] = std::sqrt(axis[0][i] * axis[0][i] + axis[1][i] * axis[1][i] + axis[2][i] * axis[2][i]);
+    for (size_t i = 0; i < n; ++i)
+        magnitude[i] = std::sqrt(axis[0][i] * axis[0][i] + axis[1][i] * axis[1][i] + axis[2][i] * axis[2][i]);
     s["mag_sd"] = standard_deviation(magnitude);
     s["mag_p05"] = percentile(magnitude, 0.05);
     s["mag_p50"] = percentile(magnitude, 0.5);
     s["mag_p95"] = percentile(magnitude, 0.95);
-    const std::vector<double> smooth = moving_mean(magnitude, std::max<size_t>(1, static_cast<size_t>(std::lround(kSwingSeconds * rate_hz))));
+    const std::vector<double> smooth =
+        moving_mean(magnitude, std::max<size_t>(1, static_cast<size_t>(std::lround(kSwingSeconds * rate_hz))));
     s["mag_rise"] = *std::max_element(smooth.begin(), smooth.end()) - s["mag_p50"];
     s["mag_dip"] = s["mag_p50"] - *std::min_element(smooth.begin(), smooth.end());
     double jerk = 0;
     for (size_t i = 1; i < n; ++i) jerk += std::pow((magnitude[i] - magnitude[i - 1]) * rate_hz, 2);
     s["jerk_rms"] = std::sqrt(jerk / static_cast<double>(n - 1));
     s["hf_share"] = total > 0 ? high / total : 0;
-    for (int a = 0; a < 3; ++a) s[std::string("gyr_sway_sd_") + xyz[a]] = band_sd(gyr[a], rate_hz, kSwayLowHz, kSwayHighHz);
+    for (int a = 0; a < 3; ++a)
+        s[std::string("gyr_sway_sd_") + xyz[a]] = band_sd(gyr[a], rate_hz, kSwayLowHz, kSwayHighHz);
     std::vector<double> yaw_rate(n);  // turning about the up direction (rad/s)
     const Eigen::Vector3d up = mean.norm() > 0 ? Eigen::Vector3d(mean.normalized()) : Eigen::Vector3d::Zero();
     for (size_t i = 0; i < n; ++i) yaw_rate[i] = up.x() * gyr[0][i] + up.y() * gyr[1][i] + up.z() * gyr[2][i];
@@ -236,7 +245,9 @@ std::vector<double> column(const std::vector<std::map<std::string, double>>& row
     return v;
 }
 
-double median_statistic(const std::vector<std::map<std::string, double>>& rows, const std::string& name) { return median_of(column(rows, name)); }
+double median_statistic(const std::vector<std::map<std::string, double>>& rows, const std::string& name) {
+    return median_of(column(rows, name));
+}
 
 // The interquartile range over 1.349: a normal distribution's sd, robust to a few odd recordings.
 double robust_spread(const std::vector<std::map<std::string, double>>& rows, const std::string& name) {
@@ -250,11 +261,13 @@ void SignalStatisticsOptions::validate() const {
     if (!(rate_hz >= 8 && rate_hz <= 1000)) throw Error("--rate", "rate", "8 to 1000 Hz", std::to_string(rate_hz));
 }
 
-nlohmann::json activity_signal_statistics(const std::vector<ImuRecording>& recordings, const SignalStatisticsOptions& options) {
+nlohmann::json activity_signal_statistics(const std::vector<ImuRecording>& recordings,
+                                          const SignalStatisticsOptions& options) {
     options.validate();
     nlohmann::json out = nlohmann::json::object();
     if (!options.position.empty()) check_position_held(recordings, options.position, "--position");
-    for (const auto& [activity, rows] : statistics_by_activity(recordings, options.position, options.rate_hz, nullptr, nullptr)) {
+    for (const auto& [activity, rows] :
+         statistics_by_activity(recordings, options.position, options.rate_hz, nullptr, nullptr)) {
         nlohmann::json a = {{"recordings", rows.size()}};
         for (const std::string& name : signal_statistic_names()) a[name] = median_statistic(rows, name);
         out[activity] = a;
@@ -262,7 +275,8 @@ nlohmann::json activity_signal_statistics(const std::vector<ImuRecording>& recor
     return out;
 }
 
-SignalStatisticsComparison compare_signal_statistics(const std::vector<ImuRecording>& real, const std::vector<ImuRecording>& synthetic,
+SignalStatisticsComparison compare_signal_statistics(const std::vector<ImuRecording>& real,
+                                                     const std::vector<ImuRecording>& synthetic,
                                                      const SignalStatisticsOptions& options) {
     options.validate();
     const std::string& position = options.position;
@@ -271,7 +285,8 @@ SignalStatisticsComparison compare_signal_statistics(const std::vector<ImuRecord
         check_position_held(synthetic, position, "--position");
     }
     const double rate_hz = options.rate_hz;
-    const std::set<std::string> real_labels = labels_of(real, position), synthetic_labels = labels_of(synthetic, position);
+    const std::set<std::string> real_labels = labels_of(real, position),
+                                synthetic_labels = labels_of(synthetic, position);
     const auto r = statistics_by_activity(real, position, rate_hz, &real_labels, &synthetic_labels);
     const auto s = statistics_by_activity(synthetic, position, rate_hz, &synthetic_labels, &real_labels);
     SignalStatisticsComparison out;
@@ -279,10 +294,12 @@ SignalStatisticsComparison compare_signal_statistics(const std::vector<ImuRecord
         const auto it = s.find(activity);
         if (it == s.end()) continue;
         ActivityComparison& a = out[activity];
-        a.real_recordings = static_cast<int64_t>(real_rows.size()), a.synthetic_recordings = static_cast<int64_t>(it->second.size());
+        a.real_recordings = static_cast<int64_t>(real_rows.size()),
+        a.synthetic_recordings = static_cast<int64_t>(it->second.size());
         for (const std::string& name : signal_statistic_names()) {
             const double rm = median_statistic(real_rows, name), sm = median_statistic(it->second, name);
-            a.statistics[name] = {rm, sm, rm != 0 ? sm / rm : std::nan(""), robust_spread(real_rows, name), robust_spread(it->second, name)};
+            a.statistics[name] = {rm, sm, rm != 0 ? sm / rm : std::nan(""), robust_spread(real_rows, name),
+                                  robust_spread(it->second, name)};
         }
     }
     return out;
@@ -293,7 +310,11 @@ nlohmann::json signal_statistics_comparison_json(const SignalStatisticsCompariso
     for (const auto& [activity, a] : comparison) {
         nlohmann::json j = {{"recordings", {{"real", a.real_recordings}, {"synthetic", a.synthetic_recordings}}}};
         for (const auto& [name, s] : a.statistics)
-            j[name] = {{"real", s.real}, {"synthetic", s.synthetic}, {"ratio", s.ratio}, {"real_spread", s.real_spread}, {"synthetic_spread", s.synthetic_spread}};
+            j[name] = {{"real", s.real},
+                       {"synthetic", s.synthetic},
+                       {"ratio", s.ratio},
+                       {"real_spread", s.real_spread},
+                       {"synthetic_spread", s.synthetic_spread}};
         out[activity] = j;
     }
     return out;
@@ -316,13 +337,15 @@ SignalStatisticsComparison parse_signal_statistics_comparison(const nlohmann::js
         ActivityComparison& c = out[activity];
         const nlohmann::json& recordings = json_object(a, "recordings", path, activity);
         c.real_recordings = static_cast<int64_t>(json_count(recordings, "real", path, activity + ".recordings"));
-        c.synthetic_recordings = static_cast<int64_t>(json_count(recordings, "synthetic", path, activity + ".recordings"));
+        c.synthetic_recordings =
+            static_cast<int64_t>(json_count(recordings, "synthetic", path, activity + ".recordings"));
         for (const std::string& name : signal_statistic_names()) {
             if (!a.contains(name)) continue;  // a statistic added since the result was written
             const nlohmann::json& s = json_object(a, name, path, activity);
             const std::string where = activity + "." + name;
-            c.statistics[name] = {number_or_nan(s, "real", path, where), number_or_nan(s, "synthetic", path, where), number_or_nan(s, "ratio", path, where),
-                                  number_or_nan(s, "real_spread", path, where), number_or_nan(s, "synthetic_spread", path, where)};
+            c.statistics[name] = {number_or_nan(s, "real", path, where), number_or_nan(s, "synthetic", path, where),
+                                  number_or_nan(s, "ratio", path, where), number_or_nan(s, "real_spread", path, where),
+                                  number_or_nan(s, "synthetic_spread", path, where)};
         }
     }
     return out;

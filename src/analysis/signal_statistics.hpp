@@ -55,13 +55,14 @@ const std::vector<std::string>& signal_statistic_names();
 std::map<std::string, double> recording_signal_statistics(const ImuRecording& recording, double rate_hz);
 
 struct SignalStatisticsOptions {
-    std::string position;  // only recordings at this position; "" = every position
+    std::string position;   // only recordings at this position; "" = every position
     double rate_hz = 20;    // resampled to this rate first (HAR's)
     void validate() const;  // throws Error naming --rate (8 to 1000 Hz)
 };
 
 // {activity: {"recordings": n, stat: median, ...}} over the recordings at the options' position.
-nlohmann::json activity_signal_statistics(const std::vector<ImuRecording>& recordings, const SignalStatisticsOptions& options);
+nlohmann::json activity_signal_statistics(const std::vector<ImuRecording>& recordings,
+                                          const SignalStatisticsOptions& options);
 
 // One statistic's medians over recordings, real beside synthetic, and each set's spread over recordings.
 struct StatisticComparison {
@@ -80,9 +81,11 @@ struct ActivityComparison {
 using SignalStatisticsComparison = std::map<std::string, ActivityComparison>;
 
 // The activities both sets hold (after coarsening stairs as class_map.hpp does).
-SignalStatisticsComparison compare_signal_statistics(const std::vector<ImuRecording>& real, const std::vector<ImuRecording>& synthetic,
+SignalStatisticsComparison compare_signal_statistics(const std::vector<ImuRecording>& real,
+                                                     const std::vector<ImuRecording>& synthetic,
                                                      const SignalStatisticsOptions& options);
-// {activity: {stat: {"real", "synthetic", "ratio", "real_spread", "synthetic_spread"}, "recordings": {"real", "synthetic"}}}
+// {activity: {stat: {"real", "synthetic", "ratio", "real_spread", "synthetic_spread"}, "recordings": {"real",
+// "synthetic"}}}
 nlohmann::json signal_statistics_comparison_json(const SignalStatisticsComparison& comparison);
 // Error naming `path` and the dotted key ("walking.mag_sd.ratio") when a field is missing or mistyped.
 SignalStatisticsComparison parse_signal_statistics_comparison(const nlohmann::json& doc, const std::string& path);

@@ -33,7 +33,9 @@ std::vector<double> magnitude(const ImuRecording& r, size_t from, size_t n) {
 nlohmann::json quietest_window_statistics(const ImuRecording& r, double window_s) {
     const size_t n = static_cast<size_t>(std::llround(window_s * r.rate_hz));
     if (n < 2 || r.samples.size() < n)
-        throw Error(r.path, "samples", "at least one " + std::to_string(window_s) + " s window (" + std::to_string(n) + " samples)", std::to_string(r.samples.size()));
+        throw Error(r.path, "samples",
+                    "at least one " + std::to_string(window_s) + " s window (" + std::to_string(n) + " samples)",
+                    std::to_string(r.samples.size()));
     size_t best = 0;
     double best_sd = INFINITY;
     for (size_t from = 0; from + n <= r.samples.size(); from += n)
@@ -47,14 +49,16 @@ nlohmann::json quietest_window_statistics(const ImuRecording& r, double window_s
         j[std::string("gyr_mean_") + kAxes[a]] = mean_of(gyr);
         mean_acc[a] = mean_of(acc);
     }
-    j["acc_norm_error"] = std::sqrt(mean_acc[0] * mean_acc[0] + mean_acc[1] * mean_acc[1] + mean_acc[2] * mean_acc[2]) - kStandardGravity;
+    j["acc_norm_error"] =
+        std::sqrt(mean_acc[0] * mean_acc[0] + mean_acc[1] * mean_acc[1] + mean_acc[2] * mean_acc[2]) - kStandardGravity;
     j["window_mag_sd"] = best_sd;
     j["window_start_s"] = static_cast<double>(best) / r.rate_hz;
     return j;
 }
 
 void StaticNoiseOptions::validate() const {
-    if (!(window_s >= 0.5 && window_s <= 60)) throw Error("--window", "window", "0.5 to 60 s", std::to_string(window_s));
+    if (!(window_s >= 0.5 && window_s <= 60))
+        throw Error("--window", "window", "0.5 to 60 s", std::to_string(window_s));
 }
 
 nlohmann::json static_segment_noise(const std::vector<ImuRecording>& recordings, const StaticNoiseOptions& options,
@@ -74,7 +78,9 @@ nlohmann::json static_segment_noise(const std::vector<ImuRecording>& recordings,
         per.push_back(j);
         rates.push_back(r.rate_hz);
     }
-    if (per.empty()) throw Error("static segments", "recordings", "at least one recording of a whole window" + (position.empty() ? "" : " at " + position));
+    if (per.empty())
+        throw Error("static segments", "recordings",
+                    "at least one recording of a whole window" + (position.empty() ? "" : " at " + position));
     const auto column = [&](const std::string& key) {
         std::vector<double> v;
         for (const auto& j : per) v.push_back(j[key].get<double>());
@@ -91,7 +97,11 @@ nlohmann::json static_segment_noise(const std::vector<ImuRecording>& recordings,
     measured["acc_norm_error_abs"] = median_of(norm_error);
     measured["window_mag_sd"] = median_of(column("window_mag_sd"));
     const double rate = median_of(rates);
-    nlohmann::json out = {{"recordings", per.size()}, {"rate_hz", rate}, {"window_s", window_s}, {"measured", measured}, {"per_recording", per}};
+    nlohmann::json out = {{"recordings", per.size()},
+                          {"rate_hz", rate},
+                          {"window_s", window_s},
+                          {"measured", measured},
+                          {"per_recording", per}};
     if (device.enabled())
         out["device"] = {{"model", device.name},
                          {"acc_sd", device.acc_noise_density * std::sqrt(rate / 2)},

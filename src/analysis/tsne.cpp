@@ -44,7 +44,9 @@ void conditional_affinities(const std::vector<double>& d2, double perplexity, st
     }
 }
 
-double squared_distance(const PointMatrix& x, Eigen::Index i, Eigen::Index j) { return (x.row(i) - x.row(j)).squaredNorm(); }
+double squared_distance(const PointMatrix& x, Eigen::Index i, Eigen::Index j) {
+    return (x.row(i) - x.row(j)).squaredNorm();
+}
 
 // Joint affinities P (symmetrised, summing to 1) as a sparse list per row: (j, p_ij).
 using SparseRows = std::vector<std::vector<std::pair<int, double>>>;
@@ -64,7 +66,8 @@ SparseRows joint_affinities(const PointMatrix& x, double perplexity, bool exact)
         d2.resize(static_cast<size_t>(k));
         for (int c = 0; c < k; ++c) d2[static_cast<size_t>(c)] = all[static_cast<size_t>(c)].first;
         conditional_affinities(d2, perplexity, &p);
-        for (int c = 0; c < k; ++c) rows[static_cast<size_t>(i)].push_back({all[static_cast<size_t>(c)].second, p[static_cast<size_t>(c)]});
+        for (int c = 0; c < k; ++c)
+            rows[static_cast<size_t>(i)].push_back({all[static_cast<size_t>(c)].second, p[static_cast<size_t>(c)]});
     }
     // P = (P + P^T) / sum.
     std::vector<std::vector<std::pair<int, double>>> sym(static_cast<size_t>(n));
@@ -193,14 +196,17 @@ private:
         }
     }
 
-    static int quadrant(const Node& node, const Vector2d& p) { return (p.x() > node.centre.x() ? 1 : 0) + (p.y() > node.centre.y() ? 2 : 0); }
+    static int quadrant(const Node& node, const Vector2d& p) {
+        return (p.x() > node.centre.x() ? 1 : 0) + (p.y() > node.centre.y() ? 2 : 0);
+    }
 
     const PointMatrix& y_;
     std::vector<Node> nodes_;
 };
 
 // Gradient of KL(P || Q) (times 1, exaggeration applied to P) and the divergence itself.
-double gradient(const SparseRows& p, double exaggeration, const PointMatrix& y, const TsneOptions& o, PointMatrix* grad) {
+double gradient(const SparseRows& p, double exaggeration, const PointMatrix& y, const TsneOptions& o,
+                PointMatrix* grad) {
     const int n = static_cast<int>(y.rows());
     grad->setZero(n, 2);
     std::vector<Vector2d> repulsive(static_cast<size_t>(n), Vector2d::Zero());
@@ -235,11 +241,14 @@ double gradient(const SparseRows& p, double exaggeration, const PointMatrix& y, 
 }  // namespace
 
 void TsneOptions::validate() const {
-    if (!(perplexity > 0 && perplexity <= 1e6)) throw Error("tsne", "--perplexity", "above 0 and below a third of the points", std::to_string(perplexity));
-    if (iterations < 1 || iterations > 1000000) throw Error("tsne", "--iterations", "1 to 10^6", std::to_string(iterations));
+    if (!(perplexity > 0 && perplexity <= 1e6))
+        throw Error("tsne", "--perplexity", "above 0 and below a third of the points", std::to_string(perplexity));
+    if (iterations < 1 || iterations > 1000000)
+        throw Error("tsne", "--iterations", "1 to 10^6", std::to_string(iterations));
     if (exaggeration_iterations < 0 || exaggeration_iterations > iterations)
         throw Error("tsne", "exaggeration iterations", "0 to the iterations", std::to_string(exaggeration_iterations));
-    if (!(early_exaggeration >= 1 && early_exaggeration <= 1000)) throw Error("tsne", "early exaggeration", "1 to 1000", std::to_string(early_exaggeration));
+    if (!(early_exaggeration >= 1 && early_exaggeration <= 1000))
+        throw Error("tsne", "early exaggeration", "1 to 1000", std::to_string(early_exaggeration));
     if (!(theta >= 0 && theta <= 1)) throw Error("tsne", "theta", "0 (exact) to 1", std::to_string(theta));
 }
 
@@ -273,18 +282,24 @@ TsneResult tsne(const PointMatrix& x, const TsneOptions& o) {
 double trustworthiness(const PointMatrix& x, const PointMatrix& e, int k) {
     const Eigen::Index n = x.rows();
     if (e.rows() != n) throw Error("trustworthiness", "rows", std::to_string(n), std::to_string(e.rows()));
-    if (k < 1 || 2 * n - 3 * k - 1 <= 0) throw Error("trustworthiness", "k", "1 <= k < (2n - 1) / 3", std::to_string(k));
+    if (k < 1 || 2 * n - 3 * k - 1 <= 0)
+        throw Error("trustworthiness", "k", "1 <= k < (2n - 1) / 3", std::to_string(k));
     std::vector<int> order(static_cast<size_t>(n)), rank(static_cast<size_t>(n));
     std::vector<double> d(static_cast<size_t>(n));
     double sum = 0;
     for (Eigen::Index i = 0; i < n; ++i) {
-        for (Eigen::Index j = 0; j < n; ++j) d[static_cast<size_t>(j)] = j == i ? std::numeric_limits<double>::infinity() : squared_distance(x, i, j);
+        for (Eigen::Index j = 0; j < n; ++j)
+            d[static_cast<size_t>(j)] = j == i ? std::numeric_limits<double>::infinity() : squared_distance(x, i, j);
         std::iota(order.begin(), order.end(), 0);
-        std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return d[static_cast<size_t>(a)] < d[static_cast<size_t>(b)]; });
-        for (Eigen::Index r = 0; r < n; ++r) rank[static_cast<size_t>(order[static_cast<size_t>(r)])] = static_cast<int>(r) + 1;
-        for (Eigen::Index j = 0; j < n; ++j) d[static_cast<size_t>(j)] = j == i ? std::numeric_limits<double>::infinity() : squared_distance(e, i, j);
+        std::stable_sort(order.begin(), order.end(),
+                         [&](int a, int b) { return d[static_cast<size_t>(a)] < d[static_cast<size_t>(b)]; });
+        for (Eigen::Index r = 0; r < n; ++r)
+            rank[static_cast<size_t>(order[static_cast<size_t>(r)])] = static_cast<int>(r) + 1;
+        for (Eigen::Index j = 0; j < n; ++j)
+            d[static_cast<size_t>(j)] = j == i ? std::numeric_limits<double>::infinity() : squared_distance(e, i, j);
         std::iota(order.begin(), order.end(), 0);
-        std::partial_sort(order.begin(), order.begin() + k, order.end(), [&](int a, int b) { return d[static_cast<size_t>(a)] < d[static_cast<size_t>(b)]; });
+        std::partial_sort(order.begin(), order.begin() + k, order.end(),
+                          [&](int a, int b) { return d[static_cast<size_t>(a)] < d[static_cast<size_t>(b)]; });
         for (int c = 0; c < k; ++c) sum += std::max(rank[static_cast<size_t>(order[static_cast<size_t>(c)])] - k, 0);
     }
     const double nn = static_cast<double>(n);

@@ -18,8 +18,8 @@ struct TsneOptions {
     double perplexity = 30;
     double early_exaggeration = 12;
     int exaggeration_iterations = 250, iterations = 1000;
-    double theta = 0.5;   // 0 = exact gradients (O(N^2)); Barnes-Hut otherwise
-    bool exact = false;   // exact affinities and gradients
+    double theta = 0.5;  // 0 = exact gradients (O(N^2)); Barnes-Hut otherwise
+    bool exact = false;  // exact affinities and gradients
 
     // Throws Error naming --perplexity or --iterations for a value that no data could make valid (not finite,
     // not positive, beyond 10^6); tsne() checks perplexity against the number of points.

@@ -44,7 +44,8 @@ TsneTable tsne_table(const CsvTable& table, const std::set<std::string>& label_c
     for (size_t r = 0; r < table.rows.size(); ++r)
         for (size_t f = 0; f < features.size(); ++f) {
             const std::string& v = table.rows[r][features[f]];
-            out.features(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(f)) = is_missing(v) ? NAN : *parse_number(v);  // numeric: checked above
+            out.features(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(f)) =
+                is_missing(v) ? NAN : *parse_number(v);  // numeric: checked above
         }
     standardise_columns(out.features);
     out.result = tsne(out.features, options);

@@ -15,8 +15,8 @@
 namespace t2imu {
 
 struct TsneTable {
-    CsvTable embedding;          // label columns, tsne_x, tsne_y
-    PointMatrix features;        // [N, D] standardised, as embedded
+    CsvTable embedding;    // label columns, tsne_x, tsne_y
+    PointMatrix features;  // [N, D] standardised, as embedded
     TsneResult result;
     size_t feature_columns = 0;
 };

@@ -19,13 +19,15 @@ std::vector<double> finite(std::vector<double> v) {
 }
 
 // Newton's method on the L2-regularised logistic loss; x has a leading column of ones (not penalised).
-Eigen::VectorXd fit_logistic(const Eigen::MatrixXd& x, const Eigen::VectorXd& y, const Eigen::VectorXd& weight, double l2) {
+Eigen::VectorXd fit_logistic(const Eigen::MatrixXd& x, const Eigen::VectorXd& y, const Eigen::VectorXd& weight,
+                             double l2) {
     Eigen::VectorXd w = Eigen::VectorXd::Zero(x.cols());
     Eigen::VectorXd penalty = Eigen::VectorXd::Constant(x.cols(), l2);
     penalty[0] = 0;
     for (int it = 0; it < 50; ++it) {
         const Eigen::VectorXd p = (1.0 + (-(x * w)).array().exp()).inverse().matrix();
-        const Eigen::VectorXd grad = x.transpose() * (weight.array() * (p - y).array()).matrix() + penalty.cwiseProduct(w);
+        const Eigen::VectorXd grad =
+            x.transpose() * (weight.array() * (p - y).array()).matrix() + penalty.cwiseProduct(w);
         const Eigen::VectorXd s = weight.array() * p.array() * (1 - p.array());
         Eigen::MatrixXd hessian = x.transpose() * s.asDiagonal() * x;
         hessian.diagonal() += penalty + Eigen::VectorXd::Constant(x.cols(), 1e-9);
@@ -38,10 +40,13 @@ Eigen::VectorXd fit_logistic(const Eigen::MatrixXd& x, const Eigen::VectorXd& y,
 
 }  // namespace
 
-TwoSampleResult classifier_two_sample_test(const PointMatrix& real, const PointMatrix& synthetic, int folds, uint64_t seed, double l2) {
-    if (real.cols() != synthetic.cols()) throw Error("two-sample test", "features", std::to_string(real.cols()), std::to_string(synthetic.cols()));
-    if (real.rows() < folds || synthetic.rows() < folds || folds < 2) 
-        throw Error("two-sample test", "samples", "at least " + std::to_string(std::max(folds, 2)) + " per set, one per fold",
+TwoSampleResult classifier_two_sample_test(const PointMatrix& real, const PointMatrix& synthetic, int folds,
+                                           uint64_t seed, double l2) {
+    if (real.cols() != synthetic.cols())
+        throw Error("two-sample test", "features", std::to_string(real.cols()), std::to_string(synthetic.cols()));
+    if (real.rows() < folds || synthetic.rows() < folds || folds < 2)
+        throw Error("two-sample test", "samples",
+                    "at least " + std::to_string(std::max(folds, 2)) + " per set, one per fold",
                     std::to_string(real.rows()) + " real, " + std::to_string(synthetic.rows()) + " synthetic");
     const Eigen::Index n = real.rows() + synthetic.rows(), d = real.cols();
     PointMatrix all(n, d);
@@ -56,7 +61,8 @@ TwoSampleResult classifier_two_sample_test(const PointMatrix& real, const PointM
         for (Eigen::Index i = 0; i < n; ++i)
             if (label[static_cast<size_t>(i)] == cls) idx.push_back(i);
         std::shuffle(idx.begin(), idx.end(), rng);
-        for (size_t k = 0; k < idx.size(); ++k) fold[static_cast<size_t>(idx[k])] = static_cast<int>(k % static_cast<size_t>(folds));
+        for (size_t k = 0; k < idx.size(); ++k)
+            fold[static_cast<size_t>(idx[k])] = static_cast<int>(k % static_cast<size_t>(folds));
     }
     TwoSampleResult result;
     for (int f = 0; f < folds; ++f) {
@@ -74,7 +80,8 @@ TwoSampleResult classifier_two_sample_test(const PointMatrix& real, const PointM
                 s += v;
                 s2 += v * v;
             }
-            const double m = s / static_cast<double>(train.size()), var = s2 / static_cast<double>(train.size()) - m * m;
+            const double m = s / static_cast<double>(train.size()),
+                         var = s2 / static_cast<double>(train.size()) - m * m;
             if (!ok || !(var > 1e-12)) continue;
             cols.push_back(c);
             mean.push_back(m);
@@ -86,7 +93,8 @@ TwoSampleResult classifier_two_sample_test(const PointMatrix& real, const PointM
                 x(static_cast<Eigen::Index>(r), 0) = 1;
                 for (size_t c = 0; c < cols.size(); ++c) {
                     const double v = all(rows[r], cols[c]);
-                    x(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c) + 1) = std::isfinite(v) ? (v - mean[c]) / sd[c] : 0.0;
+                    x(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c) + 1) =
+                        std::isfinite(v) ? (v - mean[c]) / sd[c] : 0.0;
                 }
             }
             return x;
@@ -98,7 +106,8 @@ TwoSampleResult classifier_two_sample_test(const PointMatrix& real, const PointM
         for (size_t r = 0; r < train.size(); ++r) {
             const int l = label[static_cast<size_t>(train[r])];
             y[static_cast<Eigen::Index>(r)] = l;
-            weight[static_cast<Eigen::Index>(r)] = static_cast<double>(train.size()) / (2 * count[l]);  // balanced classes
+            weight[static_cast<Eigen::Index>(r)] =
+                static_cast<double>(train.size()) / (2 * count[l]);  // balanced classes
         }
         const Eigen::VectorXd w = fit_logistic(xt, y, weight, l2);
         const Eigen::VectorXd score = design(test) * w;
@@ -125,8 +134,10 @@ double wasserstein_1d(std::vector<double> a, std::vector<double> b) {
     double total = 0;
     for (size_t k = 0; k + 1 < points.size(); ++k) {
         const double x = points[k];
-        const double fa = static_cast<double>(std::upper_bound(a.begin(), a.end(), x) - a.begin()) / static_cast<double>(a.size());
-        const double fb = static_cast<double>(std::upper_bound(b.begin(), b.end(), x) - b.begin()) / static_cast<double>(b.size());
+        const double fa =
+            static_cast<double>(std::upper_bound(a.begin(), a.end(), x) - a.begin()) / static_cast<double>(a.size());
+        const double fb =
+            static_cast<double>(std::upper_bound(b.begin(), b.end(), x) - b.begin()) / static_cast<double>(b.size());
         total += std::fabs(fa - fb) * (points[k + 1] - x);
     }
     return total;
@@ -139,8 +150,10 @@ double ks_statistic(std::vector<double> a, std::vector<double> b) {
     double best = 0;
     for (const std::vector<double>* side : {&a, &b})
         for (double x : *side) {
-            const double fa = static_cast<double>(std::upper_bound(a.begin(), a.end(), x) - a.begin()) / static_cast<double>(a.size());
-            const double fb = static_cast<double>(std::upper_bound(b.begin(), b.end(), x) - b.begin()) / static_cast<double>(b.size());
+            const double fa = static_cast<double>(std::upper_bound(a.begin(), a.end(), x) - a.begin()) /
+                              static_cast<double>(a.size());
+            const double fb = static_cast<double>(std::upper_bound(b.begin(), b.end(), x) - b.begin()) /
+                              static_cast<double>(b.size());
             best = std::max(best, std::fabs(fa - fb));
         }
     return best;

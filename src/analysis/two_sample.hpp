@@ -16,13 +16,13 @@
 namespace t2imu {
 
 struct TwoSampleResult {
-    double balanced_accuracy = 0;     // mean over folds
+    double balanced_accuracy = 0;  // mean over folds
     std::vector<double> fold_accuracy;
 };
 
 // Rows are samples, columns features (NaN allowed). Folds are stratified and seeded.
-TwoSampleResult classifier_two_sample_test(const PointMatrix& real, const PointMatrix& synthetic, int folds = 5, uint64_t seed = 0,
-                                           double l2 = 1.0);
+TwoSampleResult classifier_two_sample_test(const PointMatrix& real, const PointMatrix& synthetic, int folds = 5,
+                                           uint64_t seed = 0, double l2 = 1.0);
 
 double wasserstein_1d(std::vector<double> a, std::vector<double> b);  // NaNs are dropped
 double ks_statistic(std::vector<double> a, std::vector<double> b);    // sup |F_a - F_b|; NaNs dropped

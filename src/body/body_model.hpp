@@ -20,14 +20,14 @@ struct SurfacePoint {
 };
 
 struct PosedFrame {
-    Joints22 joints;        // world, m
-    Rotations22 rotation;   // per segment, world from rest
+    Joints22 joints;       // world, m
+    Rotations22 rotation;  // per segment, world from rest
 };
 
 // Where a sensor sits: on a segment (rigid with it) or on an SMPL vertex (skinned).
 struct BodyAnchor {
-    int segment = 0;  // proximal joint of the segment
-    int vertex = -1;  // >= 0: an SMPL vertex
+    int segment = 0;                                          // proximal joint of the segment
+    int vertex = -1;                                          // >= 0: an SMPL vertex
     Eigen::Vector3d rest_position = Eigen::Vector3d::Zero();  // rest body coordinates, m
 };
 

@@ -19,12 +19,15 @@ MeanSd parse_mean_sd(const std::string& key, const std::string& value) {
     return {parse_body_number(value.substr(0, colon), key), parse_body_number(value.substr(colon + 1), key)};
 }
 
-// max_cv: the largest standard deviation as a share of the mean (adults' stature varies by about 0.04 of it, BMI by 0.16).
+// max_cv: the largest standard deviation as a share of the mean (adults' stature varies by about 0.04 of it, BMI by
+// 0.16).
 void check_mean_sd(const char* key, const MeanSd& v, double lowest, double highest, double max_cv) {
     if (v.mean < lowest || v.mean > highest)
-        throw Error("--body", key, "a mean from " + std::to_string(lowest) + " to " + std::to_string(highest), std::to_string(v.mean));
+        throw Error("--body", key, "a mean from " + std::to_string(lowest) + " to " + std::to_string(highest),
+                    std::to_string(v.mean));
     if (!(v.sd >= 0) || v.sd > max_cv * v.mean)
-        throw Error("--body", key, "a standard deviation from 0 to " + std::to_string(max_cv) + " of the mean", std::to_string(v.sd));
+        throw Error("--body", key, "a standard deviation from 0 to " + std::to_string(max_cv) + " of the mean",
+                    std::to_string(v.sd));
 }
 
 // A standard normal draw within the truncation.
@@ -48,7 +51,8 @@ bool is_female(int i, double share) { return std::lround((i + 1) * share) > std:
 
 void BodyPopulation::validate() const {
     if (count < 1 || count > 1000) throw Error("--body", "population", "1 to 1000 bodies", std::to_string(count));
-    if (!(female_share >= 0 && female_share <= 1)) throw Error("--body", "female", "a share from 0 to 1", std::to_string(female_share));
+    if (!(female_share >= 0 && female_share <= 1))
+        throw Error("--body", "female", "a share from 0 to 1", std::to_string(female_share));
     check_mean_sd("height_m", height_cm_male, 100, 230, 0.1);
     check_mean_sd("height_f", height_cm_female, 100, 230, 0.1);
     check_mean_sd("bmi_m", bmi_male, 12, 60, 0.3);
@@ -59,7 +63,8 @@ BodyPopulation parse_body_population(const std::string& text) {
     BodyPopulation p;
     const NamedOverrides spelled = parse_named_overrides(text, "--body");
     const double count = parse_body_number(spelled.name, "population");
-    if (count != std::floor(count) || count < 1 || count > 1000) throw Error("--body", "population", "1 to 1000 bodies", spelled.name);
+    if (count != std::floor(count) || count < 1 || count > 1000)
+        throw Error("--body", "population", "1 to 1000 bodies", spelled.name);
     p.count = static_cast<int>(count);
     for (const auto& [key, value] : spelled.overrides) {
         if (key == "seed") {
@@ -77,7 +82,8 @@ BodyPopulation parse_body_population(const std::string& text) {
         } else if (key == "bmi_f") {
             p.bmi_female = parse_mean_sd(key, value);
         } else {
-            throw Error("--body", key + "=" + value, "seed=S, female=F, height_m|height_f=CM:SD or bmi_m|bmi_f=MEAN:SD");
+            throw Error("--body", key + "=" + value,
+                        "seed=S, female=F, height_m|height_f=CM:SD or bmi_m|bmi_f=MEAN:SD");
         }
     }
     p.validate();
@@ -89,17 +95,19 @@ std::vector<BodySpec> sample_bodies(const BodyPopulation& population) {
     const int digits = static_cast<int>(std::to_string(population.count - 1).size());
     std::vector<BodySpec> out;
     for (int i = 0; i < population.count; ++i) {
-        std::seed_seq seq{static_cast<uint32_t>(population.seed), static_cast<uint32_t>(population.seed >> 32), static_cast<uint32_t>(i)};
+        std::seed_seq seq{static_cast<uint32_t>(population.seed), static_cast<uint32_t>(population.seed >> 32),
+                          static_cast<uint32_t>(i)};
         std::mt19937_64 rng(seq);
         BodySpec b;
         b.sex = is_female(i, population.female_share) ? Sex::female : Sex::male;
         const bool female = b.sex == Sex::female;
         const MeanSd& height = female ? population.height_cm_female : population.height_cm_male;
         b.height_m = (height.mean + height.sd * truncated_normal(rng)) / 100.0;
-        b.mass_kg = log_normal(female ? population.bmi_female : population.bmi_male, truncated_normal(rng)) * b.height_m * b.height_m;
+        b.mass_kg = log_normal(female ? population.bmi_female : population.bmi_male, truncated_normal(rng)) *
+                    b.height_m * b.height_m;
         std::ostringstream name;
-        name << "pop" << std::string(digits - std::to_string(i).size(), '0') << i << "_h" << std::lround(b.height_m * 100) << "_m"
-             << std::lround(b.mass_kg) << "_" << (female ? "f" : "m");
+        name << "pop" << std::string(digits - std::to_string(i).size(), '0') << i << "_h"
+             << std::lround(b.height_m * 100) << "_m" << std::lround(b.mass_kg) << "_" << (female ? "f" : "m");
         b.name = name.str();
         out.push_back(b);
     }

@@ -30,7 +30,7 @@ struct MeanSd {
 struct BodyPopulation {
     int count = 8;
     uint64_t seed = 0;
-    double female_share = 0.5;               // exact: body i is female where round((i+1) F) > round(i F)
+    double female_share = 0.5;  // exact: body i is female where round((i+1) F) > round(i F)
     MeanSd height_cm_male{178.9, 7.24}, height_cm_female{165.8, 6.55};
     MeanSd bmi_male{26.81, 3.93}, bmi_female{25.17, 4.58};
 

@@ -11,11 +11,15 @@ namespace t2imu {
 
 const std::vector<BodySpec>& paper_bodies() {
     static const std::vector<BodySpec> bodies = [] {
-        struct Row { const char* name; double cm, kg; Sex sex; };
+        struct Row {
+            const char* name;
+            double cm, kg;
+            Sex sex;
+        };
         const Row rows[] = {
-            {"male_tall", 200, 100, Sex::male},      {"male_short", 160, 60, Sex::male},
-            {"male_average", 178.9, 85.8, Sex::male}, {"male_adipose", 178.9, 111, Sex::male},
-            {"female_tall", 180, 75, Sex::female},   {"female_short", 150, 50, Sex::female},
+            {"male_tall", 200, 100, Sex::male},           {"male_short", 160, 60, Sex::male},
+            {"male_average", 178.9, 85.8, Sex::male},     {"male_adipose", 178.9, 111, Sex::male},
+            {"female_tall", 180, 75, Sex::female},        {"female_short", 150, 50, Sex::female},
             {"female_average", 165.8, 69.2, Sex::female}, {"female_adipose", 165.8, 97, Sex::female},
         };
         std::vector<BodySpec> out;
@@ -71,10 +75,12 @@ BodySpec parse_measurements(const std::string& text) {
         }
     }
     if (!have_height || !have_mass || !have_sex) throw Error("--body", text, "height=CM,mass=KG,sex=m|f (all three)");
-    if (b.height_m < 0.5 || b.height_m > 2.5) throw Error("--body", "height", "50 to 250 cm", std::to_string(b.height_m * 100));
+    if (b.height_m < 0.5 || b.height_m > 2.5)
+        throw Error("--body", "height", "50 to 250 cm", std::to_string(b.height_m * 100));
     if (b.mass_kg < 10 || b.mass_kg > 300) throw Error("--body", "mass", "10 to 300 kg", std::to_string(b.mass_kg));
     std::ostringstream name;
-    name << "h" << std::lround(b.height_m * 100) << "_m" << std::lround(b.mass_kg) << "_" << (b.sex == Sex::male ? "m" : "f");
+    name << "h" << std::lround(b.height_m * 100) << "_m" << std::lround(b.mass_kg) << "_"
+         << (b.sex == Sex::male ? "m" : "f");
     b.name = name.str();
     return b;
 }
@@ -116,7 +122,8 @@ void append_one(const std::string& text, std::vector<BodySpec>& out) {
     } else if (text.find('=') != std::string::npos) {
         out.push_back(parse_measurements(text));
     } else {
-        throw Error("--body", "spec", "preset:NAME, paper8, population:N, height=CM,mass=KG,sex=m|f, smpl:FILE.npz or none", text);
+        throw Error("--body", "spec",
+                    "preset:NAME, paper8, population:N, height=CM,mass=KG,sex=m|f, smpl:FILE.npz or none", text);
     }
 }
 
@@ -128,7 +135,8 @@ std::vector<BodySpec> parse_body_specs(const std::string& text) {
     if (out.empty()) throw Error("--body", "spec", "at least one body", text);
     for (size_t i = 0; i < out.size(); ++i)
         for (size_t k = 0; k < i; ++k)
-            if (out[i].name == out[k].name) throw Error("--body", "spec", "distinct bodies", "two named " + out[i].name);
+            if (out[i].name == out[k].name)
+                throw Error("--body", "spec", "distinct bodies", "two named " + out[i].name);
     return out;
 }
 

@@ -11,12 +11,12 @@ enum class Sex { male, female };
 struct BodySpec {
     enum class Kind { procedural, smpl, none };
     Kind kind = Kind::procedural;
-    std::string name;          // folder name in outputs: "male_tall", "h172_m70_f", "smpl", "none"
-    double height_m = 1.75;    // standing height, sole to vertex
+    std::string name;        // folder name in outputs: "male_tall", "h172_m70_f", "smpl", "none"
+    double height_m = 1.75;  // standing height, sole to vertex
     double mass_kg = 70.0;
     Sex sex = Sex::male;
-    std::string smpl_path;     // Kind::smpl: the model .npz
-    std::vector<double> betas; // Kind::smpl: shape coefficients (missing ones are 0)
+    std::string smpl_path;      // Kind::smpl: the model .npz
+    std::vector<double> betas;  // Kind::smpl: shape coefficients (missing ones are 0)
 };
 
 // The paper's Table 1: male/female tall, short, average, adipose.

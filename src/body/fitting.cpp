@@ -39,7 +39,8 @@ FittedMotion fit_body(const JointSequence& motion, const BodyModel& body, const 
     if (input.empty()) throw Error("joints", "frames", "at least one frame", "0");
     FittedMotion out;
     out.fps = motion.fps;
-    const std::vector<Rotations22> rotations = segment_rotations(input, rest_axes(body.rest_joints()), options.twist_smoothing_frames);
+    const std::vector<Rotations22> rotations =
+        segment_rotations(input, rest_axes(body.rest_joints()), options.twist_smoothing_frames);
     double input_leg = 0;
     for (const Joints22& x : input) input_leg += leg_length(x);
     input_leg /= static_cast<double>(input.size());
@@ -49,8 +50,9 @@ FittedMotion fit_body(const JointSequence& motion, const BodyModel& body, const 
     for (size_t f = 0; f < input.size(); ++f) {
         PosedFrame& frame = out.frames[f];
         frame.rotation = rotations[f];
-        frame.joints = options.keep_input_joints ? input[f]
-                                                 : pose_skeleton(body.rest_joints(), rotations[f], out.leg_scale * input[f][0]);
+        frame.joints = options.keep_input_joints
+                           ? input[f]
+                           : pose_skeleton(body.rest_joints(), rotations[f], out.leg_scale * input[f][0]);
         for (size_t j = 0; j < static_cast<size_t>(kNumJoints); ++j) {
             const double e = (frame.joints[j] - out.leg_scale * input[f][j]).norm() * 1000.0;
             out.mean_error_mm[j] += e / static_cast<double>(input.size());

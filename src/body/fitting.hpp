@@ -25,13 +25,13 @@ struct FitOptions {
 
 struct FittedMotion {
     double fps = 20;
-    double leg_scale = 1;                  // body leg length / input leg length
+    double leg_scale = 1;  // body leg length / input leg length
     std::vector<PosedFrame> frames;
     std::array<double, smpl22::kNumJoints> mean_error_mm{}, max_error_mm{};
 };
 
 std::vector<Joints22> joints22_frames(const JointSequence& motion);  // refuses a joint count other than 22
-double leg_length(const Joints22& x);  // mean of the two hip-knee-ankle chains, m
+double leg_length(const Joints22& x);                                // mean of the two hip-knee-ankle chains, m
 
 FittedMotion fit_body(const JointSequence& motion, const BodyModel& body, const FitOptions& options = {});
 

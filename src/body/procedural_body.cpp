@@ -29,24 +29,35 @@ constexpr SexFractions kMale = {0.97, 1.03, 6.94, 15.96, 16.33, 11.17, 2.71, 1.6
 constexpr SexFractions kFemale = {1.05, 0.95, 6.68, 15.45, 14.65, 12.47, 2.55, 1.38, 0.56, 14.78, 4.81, 1.29};
 
 // Depth/width ratio and distal/proximal taper of each limb's frustum.
-struct Form { double depth_over_width, taper; };
+struct Form {
+    double depth_over_width, taper;
+};
 Form limb_form(int s) {
     switch (s) {
-        case left_hip: case right_hip: return {1.0, 0.65};        // thigh
-        case left_knee: case right_knee: return {1.0, 0.55};      // shank
-        case left_ankle: case right_ankle: return {0.55, 0.85};   // foot: flat
-        case left_shoulder: case right_shoulder: return {1.0, 0.80};
-        default: return {0.75, 0.70};                             // forearm: flatter at the wrist
+        case left_hip:
+        case right_hip: return {1.0, 0.65};  // thigh
+        case left_knee:
+        case right_knee: return {1.0, 0.55};  // shank
+        case left_ankle:
+        case right_ankle: return {0.55, 0.85};  // foot: flat
+        case left_shoulder:
+        case right_shoulder: return {1.0, 0.80};
+        default: return {0.75, 0.70};  // forearm: flatter at the wrist
     }
 }
 
 double limb_mass_percent(int s, const SexFractions& m) {
     switch (s) {
-        case left_hip: case right_hip: return m.thigh;
-        case left_knee: case right_knee: return m.shank;
-        case left_ankle: case right_ankle: return m.foot;
-        case left_shoulder: case right_shoulder: return m.upper_arm;
-        case left_elbow: case right_elbow: return m.forearm + m.hand;
+        case left_hip:
+        case right_hip: return m.thigh;
+        case left_knee:
+        case right_knee: return m.shank;
+        case left_ankle:
+        case right_ankle: return m.foot;
+        case left_shoulder:
+        case right_shoulder: return m.upper_arm;
+        case left_elbow:
+        case right_elbow: return m.forearm + m.hand;
         default: return 0;
     }
 }
@@ -55,7 +66,9 @@ double limb_mass_percent(int s, const SexFractions& m) {
 // holds organs of irregular density, so its size is set from typical adult breadths and depths (rounded
 // survey-scale magnitudes: hip breadth ~0.19 H, waist depth ~0.12 H, chest depth ~0.14 H) rather than from
 // its mass; section areas then grow in proportion to BMI / 22.
-struct Section { double half_width, half_depth, taper; };
+struct Section {
+    double half_width, half_depth, taper;
+};
 Section trunk_section(int s, Sex sex) {
     const bool f = sex == Sex::female;
     switch (s) {
@@ -64,7 +77,7 @@ Section trunk_section(int s, Sex sex) {
         case spine2: return {f ? 0.085 : 0.0875, 0.0675, 1.05};
         case spine3: return {f ? 0.0875 : 0.095, 0.070, 0.85};
         case neck: return {0.045, 0.055, 1.0};  // head and neck; the head's size does not follow BMI
-        default: return {0.026, 0.026, 1.0};   // collars: a shoulder's thickness
+        default: return {0.026, 0.026, 1.0};    // collars: a shoulder's thickness
     }
 }
 
@@ -97,7 +110,8 @@ Joints22 rest_skeleton(double H, const SexFractions& m) {
         x[f] = x[a] + Vector3d(0, -drop, std::sqrt(std::max(foot * foot - drop * drop, 0.0)));
         // The collar bone rises towards the shoulder; the shoulder joint lies out to the side and a little lower.
         x[c] = x[spine3] + mean_bone(left_collar, right_collar) * s * Vector3d(sx * 0.45, 0.89, 0).normalized();
-        x[sh] = x[c] + mean_bone(left_shoulder, right_shoulder) * s * m.shoulder_width * Vector3d(sx, -0.15, 0).normalized();
+        x[sh] = x[c] +
+                mean_bone(left_shoulder, right_shoulder) * s * m.shoulder_width * Vector3d(sx, -0.15, 0).normalized();
         x[e] = x[sh] - mean_bone(left_elbow, right_elbow) * s * up;
         x[w] = x[e] - mean_bone(left_wrist, right_wrist) * s * up;
     }
@@ -107,8 +121,10 @@ Joints22 rest_skeleton(double H, const SexFractions& m) {
 }  // namespace
 
 ProceduralBody::ProceduralBody(const BodySpec& spec) : spec_(spec) {
-    if (!(spec.height_m > 0.5 && spec.height_m < 2.5)) throw Error("body " + spec.name, "height", "0.5 to 2.5 m", std::to_string(spec.height_m));
-    if (!(spec.mass_kg > 10 && spec.mass_kg < 300)) throw Error("body " + spec.name, "mass", "10 to 300 kg", std::to_string(spec.mass_kg));
+    if (!(spec.height_m > 0.5 && spec.height_m < 2.5))
+        throw Error("body " + spec.name, "height", "0.5 to 2.5 m", std::to_string(spec.height_m));
+    if (!(spec.mass_kg > 10 && spec.mass_kg < 300))
+        throw Error("body " + spec.name, "mass", "10 to 300 kg", std::to_string(spec.mass_kg));
     const double H = spec.height_m;
     const SexFractions& m = spec.sex == Sex::male ? kMale : kFemale;
     rest_ = rest_skeleton(H, m);
@@ -122,7 +138,8 @@ ProceduralBody::ProceduralBody(const BodySpec& spec) : spec_(spec) {
         SegmentShape& shape = shapes_[static_cast<size_t>(s)];
         const SegmentDef& d = kSegments[static_cast<size_t>(s)];
         if (d.rule == TwistRule::leaf) continue;
-        shape.length = s == neck ? H - rest_[neck].y() : (rest_[static_cast<size_t>(d.distal)] - rest_[static_cast<size_t>(s)]).norm();
+        shape.length = s == neck ? H - rest_[neck].y()
+                                 : (rest_[static_cast<size_t>(d.distal)] - rest_[static_cast<size_t>(s)]).norm();
         const double percent = limb_mass_percent(s, m);
         if (percent > 0) {
             // Frustum volume pi a b L (1 + k + k^2) / 3 with a = r b holds the limb's mass at kDensity.
@@ -130,7 +147,8 @@ ProceduralBody::ProceduralBody(const BodySpec& spec) : spec_(spec) {
             const double k = form.taper, frustum = (1 + k + k * k) / 3.0;
             shape.mass_kg = spec.mass_kg * percent / percent_sum;
             shape.taper = k;
-            shape.half_width = std::sqrt(shape.mass_kg / kDensity / (M_PI * form.depth_over_width * shape.length * frustum));
+            shape.half_width =
+                std::sqrt(shape.mass_kg / kDensity / (M_PI * form.depth_over_width * shape.length * frustum));
             shape.half_depth = form.depth_over_width * shape.half_width;
         } else {
             const Section sec = trunk_section(s, spec.sex);
@@ -161,9 +179,11 @@ double ProceduralBody::limb_volume_m3() const {
 }
 
 SurfacePoint ProceduralBody::surface_point(int segment, double along, double around) const {
-    if (segment < 0 || segment >= kNumJoints) throw Error("body " + spec_.name, "segment", "0..21", std::to_string(segment));
+    if (segment < 0 || segment >= kNumJoints)
+        throw Error("body " + spec_.name, "segment", "0..21", std::to_string(segment));
     // Leaves carry no surface of their own: a point on a leaf is a point on its parent's frustum.
-    if (kSegments[static_cast<size_t>(segment)].rule == TwistRule::leaf) segment = kSegments[static_cast<size_t>(segment)].parent;
+    if (kSegments[static_cast<size_t>(segment)].rule == TwistRule::leaf)
+        segment = kSegments[static_cast<size_t>(segment)].parent;
     const size_t s = static_cast<size_t>(segment);
     const SegmentShape& sh = shapes_[s];
     const Vector3d l = axes_.long_axis[s];
@@ -180,7 +200,8 @@ SurfacePoint ProceduralBody::surface_point(int segment, double along, double aro
 }
 
 SurfacePoint ProceduralBody::vertex_point(int vertex) const {
-    throw Error("body " + spec_.name, "vertex " + std::to_string(vertex), "an SMPL body (procedural bodies have no vertices)");
+    throw Error("body " + spec_.name, "vertex " + std::to_string(vertex),
+                "an SMPL body (procedural bodies have no vertices)");
 }
 
 BodyAnchor ProceduralBody::anchor(int segment, const SurfacePoint& p) const {
@@ -190,7 +211,8 @@ BodyAnchor ProceduralBody::anchor(int segment, const SurfacePoint& p) const {
     return a;
 }
 
-void ProceduralBody::pose_anchor(const BodyAnchor& a, const PosedFrame& frame, Vector3d* position, Matrix3d* rotation) const {
+void ProceduralBody::pose_anchor(const BodyAnchor& a, const PosedFrame& frame, Vector3d* position,
+                                 Matrix3d* rotation) const {
     const size_t s = static_cast<size_t>(a.segment);
     const Matrix3d& r = frame.rotation[s];
     *position = frame.joints[s] + r * (a.rest_position - rest_[s]);

@@ -24,11 +24,11 @@
 namespace t2imu {
 
 struct SegmentShape {
-    double length = 0;       // m, proximal joint to distal joint (to the vertex for the head and neck)
-    double half_depth = 0;   // a at the proximal end, m
-    double half_width = 0;   // b at the proximal end, m
-    double taper = 1;        // distal radii / proximal radii
-    double mass_kg = 0;      // a limb's share of body mass (0 for trunk, head and collars)
+    double length = 0;      // m, proximal joint to distal joint (to the vertex for the head and neck)
+    double half_depth = 0;  // a at the proximal end, m
+    double half_width = 0;  // b at the proximal end, m
+    double taper = 1;       // distal radii / proximal radii
+    double mass_kg = 0;     // a limb's share of body mass (0 for trunk, head and collars)
 };
 
 class ProceduralBody : public BodyModel {
@@ -47,7 +47,7 @@ public:
     double vertex_height() const;  // top of the head in the rest pose, m (= the spec's height)
     // The stature whose skeleton has this hip-knee-ankle length (m): sizes a body to a motion.
     static double stature_for_leg_length(double leg_m);
-    double limb_volume_m3() const; // the limb frusta together (they hold their de Leva mass shares)
+    double limb_volume_m3() const;              // the limb frusta together (they hold their de Leva mass shares)
     static constexpr double kDensity = 1050.0;  // kg/m^3
 
 private:

@@ -13,28 +13,28 @@ using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
 const std::array<SegmentDef, kNumJoints> kSegments = {{
-    {spine1, -1, TwistRule::across_hips},                        // pelvis
-    {left_knee, pelvis, TwistRule::bend, left_ankle, -1},        // left thigh: the shin folds backwards
-    {right_knee, pelvis, TwistRule::bend, right_ankle, -1},      // right thigh
-    {spine2, pelvis, TwistRule::across_hips},                    // spine1 (lower trunk)
-    {left_ankle, left_hip, TwistRule::bend, left_foot, 1},       // left shin: the foot points forwards
-    {right_ankle, right_hip, TwistRule::bend, right_foot, 1},    // right shin
-    {spine3, spine1, TwistRule::across_trunk},                   // spine2 (middle trunk)
-    {left_foot, left_knee, TwistRule::parent_swing},             // left foot
-    {right_foot, right_knee, TwistRule::parent_swing},           // right foot
-    {neck, spine2, TwistRule::across_shoulders},                 // spine3 (upper trunk)
-    {-1, left_ankle, TwistRule::leaf},                           // left toes
-    {-1, right_ankle, TwistRule::leaf},                          // right toes
-    {head, spine3, TwistRule::parent_swing},                     // neck and head
-    {left_shoulder, spine3, TwistRule::parent_swing},            // left collar
-    {right_shoulder, spine3, TwistRule::parent_swing},           // right collar
-    {-1, neck, TwistRule::leaf},                                 // head (rides on the neck)
-    {left_elbow, left_collar, TwistRule::bend, left_wrist, 1},   // left upper arm: the forearm folds forwards
-    {right_elbow, right_collar, TwistRule::bend, right_wrist, 1},// right upper arm
-    {left_wrist, left_shoulder, TwistRule::parent_swing},        // left forearm (elbow hinge)
-    {right_wrist, right_shoulder, TwistRule::parent_swing},      // right forearm
-    {-1, left_elbow, TwistRule::leaf},                           // left hand
-    {-1, right_elbow, TwistRule::leaf},                          // right hand
+    {spine1, -1, TwistRule::across_hips},                          // pelvis
+    {left_knee, pelvis, TwistRule::bend, left_ankle, -1},          // left thigh: the shin folds backwards
+    {right_knee, pelvis, TwistRule::bend, right_ankle, -1},        // right thigh
+    {spine2, pelvis, TwistRule::across_hips},                      // spine1 (lower trunk)
+    {left_ankle, left_hip, TwistRule::bend, left_foot, 1},         // left shin: the foot points forwards
+    {right_ankle, right_hip, TwistRule::bend, right_foot, 1},      // right shin
+    {spine3, spine1, TwistRule::across_trunk},                     // spine2 (middle trunk)
+    {left_foot, left_knee, TwistRule::parent_swing},               // left foot
+    {right_foot, right_knee, TwistRule::parent_swing},             // right foot
+    {neck, spine2, TwistRule::across_shoulders},                   // spine3 (upper trunk)
+    {-1, left_ankle, TwistRule::leaf},                             // left toes
+    {-1, right_ankle, TwistRule::leaf},                            // right toes
+    {head, spine3, TwistRule::parent_swing},                       // neck and head
+    {left_shoulder, spine3, TwistRule::parent_swing},              // left collar
+    {right_shoulder, spine3, TwistRule::parent_swing},             // right collar
+    {-1, neck, TwistRule::leaf},                                   // head (rides on the neck)
+    {left_elbow, left_collar, TwistRule::bend, left_wrist, 1},     // left upper arm: the forearm folds forwards
+    {right_elbow, right_collar, TwistRule::bend, right_wrist, 1},  // right upper arm
+    {left_wrist, left_shoulder, TwistRule::parent_swing},          // left forearm (elbow hinge)
+    {right_wrist, right_shoulder, TwistRule::parent_swing},        // right forearm
+    {-1, left_elbow, TwistRule::leaf},                             // left hand
+    {-1, right_elbow, TwistRule::leaf},                            // right hand
 }};
 
 namespace {
@@ -51,7 +51,8 @@ Vector3d across(const Joints22& x, TwistRule rule) {
 
 // The twist reference a parent's orientation implies: its rest reference carried by R_parent, then swung
 // by the shortest rotation from where R_parent puts the rest long axis to the actual long axis.
-Vector3d swung_reference(const Matrix3d& parent, const Vector3d& rest_long, const Vector3d& rest_ref, const Vector3d& l) {
+Vector3d swung_reference(const Matrix3d& parent, const Vector3d& rest_long, const Vector3d& rest_ref,
+                         const Vector3d& l) {
     const Vector3d from = parent * rest_long;
     const Vector3d carried = parent * rest_ref;
     if (from.dot(l) < -0.9999) return carried;  // antiparallel: no unique swing; keep the carried reference
@@ -68,7 +69,8 @@ Vector3d twist_reference(int s, const Joints22& x, const Vector3d& l, const Matr
     const SegmentDef& d = kSegments[static_cast<size_t>(s)];
     if (d.rule == TwistRule::across_hips || d.rule == TwistRule::across_shoulders || d.rule == TwistRule::across_trunk)
         return across(x, d.rule);
-    const Vector3d swing = swung_reference(*parent, rest.long_axis[static_cast<size_t>(s)], rest.twist_ref[static_cast<size_t>(s)], l);
+    const Vector3d swing =
+        swung_reference(*parent, rest.long_axis[static_cast<size_t>(s)], rest.twist_ref[static_cast<size_t>(s)], l);
     if (d.rule == TwistRule::parent_swing) return swing;
     const Vector3d beyond = x[static_cast<size_t>(d.bend_to)] - x[static_cast<size_t>(d.distal)];
     const Vector3d bend = perpendicular(beyond, l);

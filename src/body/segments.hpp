@@ -32,10 +32,10 @@ using Rotations22 = std::array<Eigen::Matrix3d, smpl22::kNumJoints>;
 enum class TwistRule { across_hips, across_trunk, across_shoulders, bend, parent_swing, leaf };
 
 struct SegmentDef {
-    int distal;         // the joint the long axis points to (-1 for a leaf)
-    int parent;         // parent segment (-1 for the pelvis)
+    int distal;  // the joint the long axis points to (-1 for a leaf)
+    int parent;  // parent segment (-1 for the pelvis)
     TwistRule rule;
-    int bend_to = -1;   // TwistRule::bend: the joint past `distal` whose offset shows the bend
+    int bend_to = -1;      // TwistRule::bend: the joint past `distal` whose offset shows the bend
     double bend_sign = 1;  // +1 when the bend points to the segment's front at rest, -1 to its back (knee)
 };
 extern const std::array<SegmentDef, smpl22::kNumJoints> kSegments;  // indexed by proximal joint

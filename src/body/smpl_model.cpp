@@ -27,7 +27,8 @@ SmplBody::Matrix member(const std::map<std::string, NdArray>& npz, const std::st
     for (double x : v)
         if (!std::isfinite(x)) throw Error(path, name, "finite values", "NaN or inf");
     SmplBody::Matrix m(a.shape[0], cols);
-    if (static_cast<int64_t>(v.size()) != a.shape[0] * cols) throw Error(path, name, "a consistent shape", a.shape_str());
+    if (static_cast<int64_t>(v.size()) != a.shape[0] * cols)
+        throw Error(path, name, "a consistent shape", a.shape_str());
     std::copy(v.begin(), v.end(), m.data());
     return m;
 }
@@ -38,13 +39,16 @@ SmplBody::SmplBody(const BodySpec& spec) : spec_(spec) {
     const std::string& path = spec.smpl_path;
     const auto npz = read_npz(path);
     const NdArray& vt = npz_member(npz, "v_template", path);
-    if (vt.shape.size() != 2 || vt.shape[1] != 3 || vt.shape[0] < 1) throw Error(path, "v_template", "[V,3]", vt.shape_str());
+    if (vt.shape.size() != 2 || vt.shape[1] != 3 || vt.shape[0] < 1)
+        throw Error(path, "v_template", "[V,3]", vt.shape_str());
     const int64_t V = vt.shape[0];
     const NdArray& sd = npz_member(npz, "shapedirs", path);
-    if (sd.shape.size() != 3 || sd.shape[0] != V || sd.shape[1] != 3) throw Error(path, "shapedirs", "[V,3,B]", sd.shape_str());
+    if (sd.shape.size() != 3 || sd.shape[0] != V || sd.shape[1] != 3)
+        throw Error(path, "shapedirs", "[V,3,B]", sd.shape_str());
     const int64_t B = sd.shape[2];
     if (static_cast<int64_t>(spec.betas.size()) > B)
-        throw Error(path, "betas", "at most " + std::to_string(B) + " shape coefficients", std::to_string(spec.betas.size()));
+        throw Error(path, "betas", "at most " + std::to_string(B) + " shape coefficients",
+                    std::to_string(spec.betas.size()));
     const Matrix tmpl = member(npz, "v_template", path, V, 3, {3});
     const Matrix shapedirs = member(npz, "shapedirs", path, V, 3 * B, {3, B});
     Matrix posedirs = member(npz, "posedirs", path, V, 3 * 9 * (kJoints - 1), {3, 9 * (kJoints - 1)});
@@ -69,8 +73,10 @@ SmplBody::SmplBody(const BodySpec& spec) : spec_(spec) {
     }
     for (int k = 0; k < smpl22::kNumJoints; ++k)
         if (parents_[static_cast<size_t>(k)] != smpl22::kParents[static_cast<size_t>(k)])
-            throw Error(path, "kintree_table", "SMPL's joint tree (parent of joint " + std::to_string(k) + " = " +
-                        std::to_string(smpl22::kParents[static_cast<size_t>(k)]) + ")", std::to_string(parents_[static_cast<size_t>(k)]));
+            throw Error(path, "kintree_table",
+                        "SMPL's joint tree (parent of joint " + std::to_string(k) + " = " +
+                            std::to_string(smpl22::kParents[static_cast<size_t>(k)]) + ")",
+                        std::to_string(parents_[static_cast<size_t>(k)]));
     joints_.resize(kJoints);
     for (int k = 0; k < kJoints; ++k) joints_[static_cast<size_t>(k)] = (regressor.row(k) * shaped_).transpose();
     for (int k = 0; k < smpl22::kNumJoints; ++k) rest22_[static_cast<size_t>(k)] = joints_[static_cast<size_t>(k)];
@@ -81,7 +87,8 @@ SmplBody::SmplBody(const BodySpec& spec) : spec_(spec) {
         int idx[3];
         for (int c = 0; c < 3; ++c) {
             const double fv = faces(t, c);
-            if (!(fv >= 0 && fv < static_cast<double>(V))) throw Error(path, "f", "vertex indices below " + std::to_string(V), std::to_string(fv));
+            if (!(fv >= 0 && fv < static_cast<double>(V)))
+                throw Error(path, "f", "vertex indices below " + std::to_string(V), std::to_string(fv));
             idx[c] = static_cast<int>(fv);
         }
         const Vector3d a = shaped_.row(idx[0]), b = shaped_.row(idx[1]), c = shaped_.row(idx[2]);
@@ -93,12 +100,14 @@ SmplBody::SmplBody(const BodySpec& spec) : spec_(spec) {
         if (normals_.row(v).norm() > 0) normals_.row(v).normalize();
         Eigen::Index k = 0;
         weights_.row(v).maxCoeff(&k);
-        dominant_[static_cast<size_t>(v)] = k >= smpl22::kNumJoints ? static_cast<int>(k) - 2 : static_cast<int>(k);  // hands -> wrists
+        dominant_[static_cast<size_t>(v)] =
+            k >= smpl22::kNumJoints ? static_cast<int>(k) - 2 : static_cast<int>(k);  // hands -> wrists
     }
 }
 
 SurfacePoint SmplBody::surface_point(int segment, double along, double around) const {
-    if (segment < 0 || segment >= smpl22::kNumJoints) throw Error(spec_.smpl_path, "segment", "0..21", std::to_string(segment));
+    if (segment < 0 || segment >= smpl22::kNumJoints)
+        throw Error(spec_.smpl_path, "segment", "0..21", std::to_string(segment));
     const SegmentDef& d = kSegments[static_cast<size_t>(segment)];
     const int s = d.rule == TwistRule::leaf ? d.parent : segment;
     const Vector3d j0 = rest22_[static_cast<size_t>(s)], l = axes_.long_axis[static_cast<size_t>(s)];
@@ -110,7 +119,9 @@ SurfacePoint SmplBody::surface_point(int segment, double along, double around) c
     double best = 1e300;
     int best_v = -1;
     for (int i = 0; i < num_vertices(); ++i) {
-        if (dominant_[static_cast<size_t>(i)] != s && !(d.rule == TwistRule::leaf && dominant_[static_cast<size_t>(i)] == segment)) continue;
+        if (dominant_[static_cast<size_t>(i)] != s &&
+            !(d.rule == TwistRule::leaf && dominant_[static_cast<size_t>(i)] == segment))
+            continue;
         const Vector3d r = shaped_.row(i).transpose() - j0;
         const double axial = r.dot(l);
         const Vector3d radial = r - axial * l;
@@ -119,12 +130,15 @@ SurfacePoint SmplBody::surface_point(int segment, double along, double around) c
         const double score = std::fabs(axial / length - along) + (1 - radial.dot(dir) / rn);
         if (score < best) best = score, best_v = i;
     }
-    if (best_v < 0) throw Error(spec_.smpl_path, "weights", "skin vertices on segment " + std::string(smpl22::kJointNames[static_cast<size_t>(s)]));
+    if (best_v < 0)
+        throw Error(spec_.smpl_path, "weights",
+                    "skin vertices on segment " + std::string(smpl22::kJointNames[static_cast<size_t>(s)]));
     return {shaped_.row(best_v).transpose(), normals_.row(best_v).transpose()};
 }
 
 SurfacePoint SmplBody::vertex_point(int vertex) const {
-    if (vertex < 0 || vertex >= num_vertices()) throw Error(spec_.smpl_path, "vertex", "0.." + std::to_string(num_vertices() - 1), std::to_string(vertex));
+    if (vertex < 0 || vertex >= num_vertices())
+        throw Error(spec_.smpl_path, "vertex", "0.." + std::to_string(num_vertices() - 1), std::to_string(vertex));
     return {shaped_.row(vertex).transpose(), normals_.row(vertex).transpose()};
 }
 
@@ -157,7 +171,8 @@ void SmplBody::global_transforms(const PosedFrame& frame, std::vector<Matrix3d>*
 Eigen::VectorXd SmplBody::pose_feature(const std::vector<Matrix3d>& r) const {
     Eigen::VectorXd f(9 * (kJoints - 1));
     for (int k = 1; k < kJoints; ++k) {
-        const Matrix3d local = r[static_cast<size_t>(parents_[static_cast<size_t>(k)])].transpose() * r[static_cast<size_t>(k)];
+        const Matrix3d local =
+            r[static_cast<size_t>(parents_[static_cast<size_t>(k)])].transpose() * r[static_cast<size_t>(k)];
         const Matrix3d d = local - Matrix3d::Identity();
         for (int a = 0; a < 3; ++a)
             for (int b = 0; b < 3; ++b) f[9 * (k - 1) + 3 * a + b] = d(a, b);  // row-major, as SMPL flattens
@@ -165,7 +180,8 @@ Eigen::VectorXd SmplBody::pose_feature(const std::vector<Matrix3d>& r) const {
     return f;
 }
 
-Vector3d SmplBody::skin(int v, const std::vector<Matrix3d>& r, const std::vector<Vector3d>& x, const Eigen::VectorXd& feature) const {
+Vector3d SmplBody::skin(int v, const std::vector<Matrix3d>& r, const std::vector<Vector3d>& x,
+                        const Eigen::VectorXd& feature) const {
     Vector3d rest = shaped_.row(v).transpose();
     for (int c = 0; c < 3; ++c) rest[c] += posedirs_.row(3 * v + c).dot(feature);
     Vector3d out = Vector3d::Zero();

@@ -45,7 +45,8 @@ public:
     Matrix posed_vertices(const PosedFrame& frame) const;
 
 private:
-    void global_transforms(const PosedFrame& frame, std::vector<Eigen::Matrix3d>* r, std::vector<Eigen::Vector3d>* x) const;
+    void global_transforms(const PosedFrame& frame, std::vector<Eigen::Matrix3d>* r,
+                           std::vector<Eigen::Vector3d>* x) const;
     Eigen::VectorXd pose_feature(const std::vector<Eigen::Matrix3d>& r) const;  // 9 (K-1) values
     Eigen::Vector3d skin(int v, const std::vector<Eigen::Matrix3d>& r, const std::vector<Eigen::Vector3d>& x,
                          const Eigen::VectorXd& feature) const;

@@ -11,7 +11,8 @@ namespace t2imu {
 using Eigen::Vector3d;
 
 bool is_trunk_segment(int segment) {
-    return segment == smpl22::pelvis || segment == smpl22::spine1 || segment == smpl22::spine2 || segment == smpl22::spine3;
+    return segment == smpl22::pelvis || segment == smpl22::spine1 || segment == smpl22::spine2 ||
+           segment == smpl22::spine3;
 }
 
 namespace {

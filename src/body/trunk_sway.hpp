@@ -12,10 +12,10 @@
 // The edit: the segment's rotation (world from rest) R is split into its slow part S (a Gaussian low-pass of
 // the sign-continuous quaternion, sd `sigma_s`: heading, posture, lying down) and its sway W = S^T R, a
 // rotation in the segment's rest axes (X left, Y up along the trunk, Z front); W's rotation vector is scaled
-// by pitch_gain about X and yaw_gain about Y (Z, the frontal-plane roll, is left as it is: a lever scaling it lowered HAR and raised the two-sample
-// accuracy, docs/realism.md#device-roll-and-drawn-bodies-2026-12-02, and was retired). The sensor
-// then rides on S W': its orientation and its position about the segment's proximal joint both follow, so the
-// lever arm's tangential acceleration shrinks with the turn. Gains 1 leave the segment as it is.
+// by pitch_gain about X and yaw_gain about Y (Z, the frontal-plane roll, is left as it is: a lever scaling it lowered
+// HAR and raised the two-sample accuracy, docs/realism.md#device-roll-and-drawn-bodies-2026-12-02, and was retired).
+// The sensor then rides on S W': its orientation and its position about the segment's proximal joint both follow, so
+// the lever arm's tangential acceleration shrinks with the turn. Gains 1 leave the segment as it is.
 #pragma once
 #include <vector>
 

@@ -12,13 +12,19 @@
 namespace t2imu::cli {
 
 static void add_domain_gap(CLI::App& analysis) {
-    auto* cmd = analysis.add_subcommand("domain-gap", "two catch22 tables (real, synthetic) -> two-sample test and per-feature distances (JSON)");
+    auto* cmd = analysis.add_subcommand(
+        "domain-gap", "two catch22 tables (real, synthetic) -> two-sample test and per-feature distances (JSON)");
     static std::string real, synthetic, out;
     static std::vector<std::string> classes;
     static uint64_t seed = 0;
-    cmd->add_option("--real", real, "features of real windows (t2imu features catch22 --dataset)")->required()->check(CLI::ExistingFile);
-    cmd->add_option("--synthetic", synthetic, "features of synthetic windows (or of a second real data set)")->required()->check(CLI::ExistingFile);
-    cmd->add_option("--classes", classes, "only windows of these activities, in both tables (comma-separated)")->delimiter(',');
+    cmd->add_option("--real", real, "features of real windows (t2imu features catch22 --dataset)")
+        ->required()
+        ->check(CLI::ExistingFile);
+    cmd->add_option("--synthetic", synthetic, "features of synthetic windows (or of a second real data set)")
+        ->required()
+        ->check(CLI::ExistingFile);
+    cmd->add_option("--classes", classes, "only windows of these activities, in both tables (comma-separated)")
+        ->delimiter(',');
     cmd->add_option("--seed", seed, "fold assignment seed");
     cmd->add_option("--out", out, "RESULT.json")->required();
     cmd->callback([] {

@@ -12,9 +12,13 @@ namespace t2imu::cli {
 
 static CommandRegistrar registrar([](CLI::App& root) {
     CLI::App& analysis = command_group(root, "analysis", "evaluation analyses");
-    auto* cmd = analysis.add_subcommand("attributes", "attribute benchmark of a synth folder: speed ratio fast / slow, turns, backward, sequences (JSON)");
+    auto* cmd = analysis.add_subcommand(
+        "attributes",
+        "attribute benchmark of a synth folder: speed ratio fast / slow, turns, backward, sequences (JSON)");
     static std::string synth, out;
-    cmd->add_option("--synth", synth, "t2imu synth folder (e.g. of prompts/attributes.tsv, --no-filter)")->required()->check(CLI::ExistingDirectory);
+    cmd->add_option("--synth", synth, "t2imu synth folder (e.g. of prompts/attributes.tsv, --no-filter)")
+        ->required()
+        ->check(CLI::ExistingDirectory);
     cmd->add_option("--out", out, "RESULT.json (default: print the table only)");
     cmd->callback([] {
         check_usage([] {

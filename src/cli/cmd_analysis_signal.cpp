@@ -15,11 +15,14 @@
 namespace t2imu::cli {
 
 static void add_signal_stats(CLI::App& analysis) {
-    auto* cmd = analysis.add_subcommand("signal-stats", "per-activity accelerometer statistics of IMU data sets (level, spectrum, tilt), real beside synthetic (JSON)");
+    auto* cmd = analysis.add_subcommand(
+        "signal-stats",
+        "per-activity accelerometer statistics of IMU data sets (level, spectrum, tilt), real beside synthetic (JSON)");
     static std::string real, synthetic, out;
     static SignalStatisticsOptions o;
     cmd->add_option("--real", real, "an IMU data set folder (manifest.csv)")->required()->check(CLI::ExistingDirectory);
-    cmd->add_option("--synthetic", synthetic, "a second data set to compare with --real (synthetic)")->check(CLI::ExistingDirectory);
+    cmd->add_option("--synthetic", synthetic, "a second data set to compare with --real (synthetic)")
+        ->check(CLI::ExistingDirectory);
     cmd->add_option("--position", o.position, "only this position (waist); default: every position");
     cmd->add_option("--rate", o.rate_hz, "resample to this rate first, Hz (HAR's)");
     cmd->add_option("--out", out, "RESULT.json")->required();
@@ -29,21 +32,27 @@ static void add_signal_stats(CLI::App& analysis) {
             check_output(out, "--out", OutputKind::file, {real, synthetic});
         });
         const std::vector<ImuRecording> r = read_imu_dataset(real);
-        const nlohmann::json stats = synthetic.empty() ? activity_signal_statistics(r, o)
-                                                       : signal_statistics_comparison_json(compare_signal_statistics(r, read_imu_dataset(synthetic), o));
+        const nlohmann::json stats =
+            synthetic.empty()
+                ? activity_signal_statistics(r, o)
+                : signal_statistics_comparison_json(compare_signal_statistics(r, read_imu_dataset(synthetic), o));
         write_file_atomic(out, stats.dump(2) + "\n");
         std::printf("%s: statistics of %zu activities\n", out.c_str(), stats.size());
     });
 }
 
 static void add_static_noise(CLI::App& analysis) {
-    auto* cmd = analysis.add_subcommand("static-noise", "device errors from the quietest window of each real recording (noise, gyro offset, |g| error), beside a device model's (JSON)");
+    auto* cmd = analysis.add_subcommand("static-noise",
+                                        "device errors from the quietest window of each real recording (noise, gyro "
+                                        "offset, |g| error), beside a device model's (JSON)");
     static std::string real, noise = "none", out;
     static StaticNoiseOptions o;
     cmd->add_option("--real", real, "an IMU data set folder (manifest.csv)")->required()->check(CLI::ExistingDirectory);
     cmd->add_option("--position", o.position, "only this position (waist); default: every position");
     cmd->add_option("--window", o.window_s, "window length, s");
-    cmd->add_option("--noise", noise, "a device model to set beside the measurement (as synth --noise: " + dataset_profile_names() + ", smartphone)");
+    cmd->add_option(
+        "--noise", noise,
+        "a device model to set beside the measurement (as synth --noise: " + dataset_profile_names() + ", smartphone)");
     cmd->add_option("--out", out, "RESULT.json")->required();
     cmd->callback([] {
         SensorNoiseModel device;
@@ -55,14 +64,20 @@ static void add_static_noise(CLI::App& analysis) {
         const nlohmann::json r = static_segment_noise(read_imu_dataset(real), o, device);
         write_file_atomic(out, r.dump(2) + "\n");
         const nlohmann::json& m = r["measured"];
-        std::printf("%s: %d recordings at %g Hz; quietest %g s: acc sd %.4f/%.4f/%.4f m/s^2, gyr sd %.4f/%.4f/%.4f rad/s, gyr offset sd %.4f/%.4f/%.4f rad/s, ||a|-g| %.3f m/s^2\n",
-                    out.c_str(), r["recordings"].get<int>(), r["rate_hz"].get<double>(), o.window_s, m["acc_sd_x"].get<double>(), m["acc_sd_y"].get<double>(),
-                    m["acc_sd_z"].get<double>(), m["gyr_sd_x"].get<double>(), m["gyr_sd_y"].get<double>(), m["gyr_sd_z"].get<double>(),
-                    m["gyr_offset_sd_x"].get<double>(), m["gyr_offset_sd_y"].get<double>(), m["gyr_offset_sd_z"].get<double>(), m["acc_norm_error_abs"].get<double>());
+        std::printf(
+            "%s: %d recordings at %g Hz; quietest %g s: acc sd %.4f/%.4f/%.4f m/s^2, gyr sd %.4f/%.4f/%.4f rad/s, gyr "
+            "offset sd %.4f/%.4f/%.4f rad/s, ||a|-g| %.3f m/s^2\n",
+            out.c_str(), r["recordings"].get<int>(), r["rate_hz"].get<double>(), o.window_s,
+            m["acc_sd_x"].get<double>(), m["acc_sd_y"].get<double>(), m["acc_sd_z"].get<double>(),
+            m["gyr_sd_x"].get<double>(), m["gyr_sd_y"].get<double>(), m["gyr_sd_z"].get<double>(),
+            m["gyr_offset_sd_x"].get<double>(), m["gyr_offset_sd_y"].get<double>(), m["gyr_offset_sd_z"].get<double>(),
+            m["acc_norm_error_abs"].get<double>());
         if (r.contains("device"))
-            std::printf("  %s predicts: acc sd %.4f m/s^2, gyr sd %.4f rad/s, gyr offset sd %.4f rad/s, acc offset sd %.3f m/s^2\n", noise.c_str(),
-                        r["device"]["acc_sd"].get<double>(), r["device"]["gyr_sd"].get<double>(), r["device"]["gyr_offset_sd"].get<double>(),
-                        r["device"]["acc_offset_sd"].get<double>());
+            std::printf(
+                "  %s predicts: acc sd %.4f m/s^2, gyr sd %.4f rad/s, gyr offset sd %.4f rad/s, acc offset sd %.3f "
+                "m/s^2\n",
+                noise.c_str(), r["device"]["acc_sd"].get<double>(), r["device"]["gyr_sd"].get<double>(),
+                r["device"]["gyr_offset_sd"].get<double>(), r["device"]["acc_offset_sd"].get<double>());
     });
 }
 

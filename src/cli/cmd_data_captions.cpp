@@ -14,14 +14,20 @@ namespace t2imu::cli {
 
 static CommandRegistrar registrar([](CLI::App& root) {
     CLI::App& data = command_group(root, "data", "training and IMU datasets");
-    auto* cmd = data.add_subcommand("captions", "a training set's captions under their clips' activities (a model folder's captions.tsv)");
+    auto* cmd = data.add_subcommand(
+        "captions", "a training set's captions under their clips' activities (a model folder's captions.tsv)");
     static std::string dataset, split = "train", out;
-    cmd->add_option("--dataset", dataset, "training set (HumanML3D layout; clips.csv, when present, gives the activities)")->required()->check(CLI::ExistingDirectory);
-    cmd->add_option("--split", split, "the split the model was trained on: train, val, test or all")->capture_default_str();
+    cmd->add_option("--dataset", dataset,
+                    "training set (HumanML3D layout; clips.csv, when present, gives the activities)")
+        ->required()
+        ->check(CLI::ExistingDirectory);
+    cmd->add_option("--split", split, "the split the model was trained on: train, val, test or all")
+        ->capture_default_str();
     cmd->add_option("--out", out, "output file (activity<TAB>caption)")->required();
     cmd->callback([] {
         check_usage([] {
-            if (split != "train" && split != "val" && split != "test" && split != "all") throw Error("--split", "split", "train, val, test or all", split);
+            if (split != "train" && split != "val" && split != "test" && split != "all")
+                throw Error("--split", "split", "train, val, test or all", split);
             check_output(out, "--out", OutputKind::file, {dataset});
         });
         const Hml3dDataset data(dataset, split);

@@ -3,8 +3,8 @@
 
 #include "cli/command.hpp"
 #include "cli/usage.hpp"
-#include "core/output_path.hpp"
 #include "core/error.hpp"
+#include "core/output_path.hpp"
 #include "har/datasets/importers.hpp"
 #include "imu/dataset_profile.hpp"
 #include "imu/imu_dataset.hpp"
@@ -13,7 +13,8 @@ namespace t2imu::cli {
 
 static CommandRegistrar registrar([](CLI::App& root) {
     CLI::App& data = command_group(root, "data", "training and IMU datasets");
-    auto* cmd = data.add_subcommand("import-imu", "real IMU dataset (release format) -> manifest.csv + one CSV per recording");
+    auto* cmd =
+        data.add_subcommand("import-imu", "real IMU dataset (release format) -> manifest.csv + one CSV per recording");
     static std::string format, in, out;
     cmd->add_option("--format", format, "release format: " + dataset_profile_names())->required();
     cmd->add_option("input", in, "folder of the release files")->required()->check(CLI::ExistingDirectory);

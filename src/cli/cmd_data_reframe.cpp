@@ -41,7 +41,8 @@ void run(const ReframeArgs& a) {
         if (!a.from.empty()) from = placement_set_named(a.from, "--from");
         check_output(a.out, "--out", OutputKind::folder, {a.dataset, a.to, a.from});
     });
-    const std::vector<ImuRecording> recordings = reframe_dataset(a.dataset, split_list(a.positions), to, a.from.empty() ? nullptr : &from);
+    const std::vector<ImuRecording> recordings =
+        reframe_dataset(a.dataset, split_list(a.positions), to, a.from.empty() ? nullptr : &from);
     write_dataset(a, recordings);
     std::printf("%s: %zu recordings in the axes of %s\n", a.out.c_str(), recordings.size(), to.name.c_str());
 }
@@ -50,9 +51,12 @@ void run(const ReframeArgs& a) {
 
 static CommandRegistrar registrar([](CLI::App& root) {
     CLI::App& data = command_group(root, "data", "training and IMU datasets");
-    auto* cmd = data.add_subcommand("reframe", "an IMU dataset's sensors in another data set's axes (to compare real data sets)");
+    auto* cmd = data.add_subcommand("reframe",
+                                    "an IMU dataset's sensors in another data set's axes (to compare real data sets)");
     static ReframeArgs a;
-    cmd->add_option("dataset", a.dataset, "IMU dataset folder (manifest.csv layout)")->required()->check(CLI::ExistingDirectory);
+    cmd->add_option("dataset", a.dataset, "IMU dataset folder (manifest.csv layout)")
+        ->required()
+        ->check(CLI::ExistingDirectory);
     cmd->add_option("--to", a.to, "target axes: " + dataset_profile_names() + " or a placement FILE.toml")->required();
     cmd->add_option("--from", a.from, "source axes (default: each recording's frame, else its dataset column)");
     cmd->add_option("--positions", a.positions, "positions to keep, comma-separated (default: all)");

@@ -9,24 +9,29 @@
 namespace t2imu::cli {
 
 static CommandRegistrar registrar([](CLI::App& root) {
-    auto* cmd = root.add_subcommand("experiment",
-                                    "synthetic data per source and real set -> HAR synthetic-to-real (repeats), catch22 domain gap, "
-                                    "t-SNE, real-to-real ceiling, L_acc per category -> summary.md and report; resumable");
+    auto* cmd = root.add_subcommand(
+        "experiment",
+        "synthetic data per source and real set -> HAR synthetic-to-real (repeats), catch22 domain gap, "
+        "t-SNE, real-to-real ceiling, L_acc per category -> summary.md and report; resumable");
     static std::string config, out;
     static int repeats = 0;
-    cmd->add_option("--config", config, "experiment TOML (experiments/paper.toml)")->required()->check(CLI::ExistingFile);
+    cmd->add_option("--config", config, "experiment TOML (experiments/paper.toml)")
+        ->required()
+        ->check(CLI::ExistingFile);
     cmd->add_option("--out", out, "results folder; rerun with the same folder to continue")->required();
     cmd->add_option("--repeats", repeats, "HAR trainings per row (default: the config's har.repeats)");
     cmd->callback([] {
         check_usage([] {
-            if (repeats < 0 || repeats > 1000) throw Error("--repeats", "trainings", "0 (the config's) to 1000", std::to_string(repeats));
+            if (repeats < 0 || repeats > 1000)
+                throw Error("--repeats", "trainings", "0 (the config's) to 1000", std::to_string(repeats));
             check_output(out, "--out", OutputKind::folder, {config});
         });
         ExperimentConfig c = read_experiment_config(config);
         if (repeats > 0) c.har.repeats = repeats;
         c.synth.device = global_options().device;
         c.synth.threads = worker_threads();
-        const ExperimentSummary summary = run_experiment(c, out, [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
+        const ExperimentSummary summary =
+            run_experiment(c, out, [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
         std::printf("%s", experiment_summary_markdown(summary).c_str());
     });
 });

@@ -5,21 +5,23 @@
 
 #include "analysis/catch22.hpp"
 #include "analysis/catch22_table.hpp"
-#include "core/error.hpp"
 #include "cli/command.hpp"
 #include "cli/usage.hpp"
+#include "core/error.hpp"
 #include "core/output_path.hpp"
 #include "core/parse.hpp"
 
 namespace t2imu::cli {
 
 static void add_catch22_command(CLI::App& features) {
-    auto* cmd = features.add_subcommand("catch22", "catch22 of a series (--in), or of every window and channel of a dataset (--dataset)");
+    auto* cmd = features.add_subcommand(
+        "catch22", "catch22 of a series (--in), or of every window and channel of a dataset (--dataset)");
     static std::string in, dataset, out, positions;
     static bool catch24 = false;
     static WindowOptions w;
     cmd->add_option("--in", in, "series file: whitespace-separated numbers")->check(CLI::ExistingFile);
-    cmd->add_option("--dataset", dataset, "IMU dataset (manifest.csv layout): batch mode")->check(CLI::ExistingDirectory);
+    cmd->add_option("--dataset", dataset, "IMU dataset (manifest.csv layout): batch mode")
+        ->check(CLI::ExistingDirectory);
     cmd->add_option("--out", out, "batch mode: output CSV");
     cmd->add_option("--positions", positions, "batch mode: positions, comma-separated (default: the only one)");
     cmd->add_option("--rate", w.rate_hz, "batch mode: window rate, Hz");
@@ -28,7 +30,8 @@ static void add_catch22_command(CLI::App& features) {
     cmd->add_flag("--gyro", w.gyro, "batch mode: gyroscope channels too");
     cmd->add_flag("--catch24", catch24, "add DN_Mean and DN_Spread_Std (catch24)");
     cmd->callback([] {
-        if (in.empty() == dataset.empty()) throw Error("features catch22", "input", "either --in SERIES.txt or --dataset DIR");
+        if (in.empty() == dataset.empty())
+            throw Error("features catch22", "input", "either --in SERIES.txt or --dataset DIR");
         if (!in.empty()) {
             const std::vector<double> values = catch22(read_catch22_series(in), catch24, in);
             for (std::size_t index : catch22_reference_output_order(catch24))

@@ -1,8 +1,8 @@
 // t2imu har run: DeepConvLSTM trained on one IMU dataset or several (synthetic plus a few drawn real subjects),
 // tested on another (or leave-one-subject-out).
 #include <cmath>
-#include <filesystem>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <set>
 
@@ -32,7 +32,9 @@ struct HarArgs {
 };
 
 // Training on several sets, a draw of subjects, shares or a protocol: train_on_sets rather than train_and_test.
-bool several(const HarArgs& a) { return a.train.size() > 1 || a.train_subjects >= 0 || !a.train_share.empty() || !a.protocol.empty(); }
+bool several(const HarArgs& a) {
+    return a.train.size() > 1 || a.train_subjects >= 0 || !a.train_share.empty() || !a.protocol.empty();
+}
 
 std::string join(const std::vector<std::string>& items, const std::string& separator) {
     std::string out;
@@ -48,14 +50,16 @@ bool same_folder(const std::string& x, const std::string& y) {
 // The several-set options from the flags: the protocol, the shares, and which --train is also the --test set.
 void bind_sets(HarArgs& a) {
     if (!a.protocol.empty()) a.sets.protocol = parse_har_protocol(a.protocol, "--protocol");
-    for (const std::string& share : split_list(a.train_share)) a.sets.shares.push_back(finite_number(share, "--train-share", share, "a share of a batch"));
+    for (const std::string& share : split_list(a.train_share))
+        a.sets.shares.push_back(finite_number(share, "--train-share", share, "a share of a batch"));
     if (a.train_subjects >= 0) {
         for (size_t i = 0; i < a.train.size(); ++i)
             if (same_folder(a.train[i], a.test)) {
                 if (a.sets.test_set >= 0) throw Error("--train", a.train[i], "the --test set named once");
                 a.sets.test_set = static_cast<int>(i);
             }
-        if (a.sets.test_set < 0) throw Error("--train-subjects", std::to_string(a.train_subjects), "a --train that is also the --test set");
+        if (a.sets.test_set < 0)
+            throw Error("--train-subjects", std::to_string(a.train_subjects), "a --train that is also the --test set");
         a.sets.train_subjects = a.train_subjects;
     }
     a.sets.validate(a.train.size(), a.options.batch);
@@ -78,20 +82,25 @@ void run(HarArgs a) {
     w.gyro = a.channels == "acc,gyr";
     w.positions = split_list(a.positions);
     WindowOptions wt = w;
-    if (!a.test_positions.empty()) wt.positions = split_list(a.test_positions), wt.positions_option = "--test-positions";
+    if (!a.test_positions.empty())
+        wt.positions = split_list(a.test_positions), wt.positions_option = "--test-positions";
     a.options.verbose = global_options().verbose;
     check_usage([&] {
         if (a.loso == !a.test.empty()) throw Error("har run", "--test", "either --test DATASET or --loso");
-        if (a.loso && (a.train.size() > 1 || several(a))) throw Error("--loso", "several", "one --train and no --train-subjects, --train-share or --protocol");
+        if (a.loso && (a.train.size() > 1 || several(a)))
+            throw Error("--loso", "several", "one --train and no --train-subjects, --train-share or --protocol");
         bind_sets(a);
-        if (a.channels != "acc" && a.channels != "acc,gyr") throw Error("--channels", "channels", "acc or acc,gyr", a.channels);
+        if (a.channels != "acc" && a.channels != "acc,gyr")
+            throw Error("--channels", "channels", "acc or acc,gyr", a.channels);
         if (wt.positions.size() != w.positions.size())
-            throw Error("--test-positions", "positions", std::to_string(w.positions.size()) + " positions, one per training position");
+            throw Error("--test-positions", "positions",
+                        std::to_string(w.positions.size()) + " positions, one per training position");
         if (a.folds < 0) throw Error("har run", "--folds", "0 (one per subject) or more", std::to_string(a.folds));
         w.validate();
         if (std::lround(w.window_s * w.rate_hz) < kDeepConvLstmMinWindow)
-            throw Error("--window", std::to_string(w.window_s) + " s", "at least " + std::to_string(kDeepConvLstmMinWindow) +
-                        " samples at --rate (DeepConvLSTM's four convolutions of kernel 5)");
+            throw Error("--window", std::to_string(w.window_s) + " s",
+                        "at least " + std::to_string(kDeepConvLstmMinWindow) +
+                            " samples at --rate (DeepConvLSTM's four convolutions of kernel 5)");
         a.options.validate();
         a.sets.validate_values();
         std::vector<std::string> inputs = a.train;
@@ -116,7 +125,9 @@ void run(HarArgs a) {
     std::string description;
     if (a.loso) {
         result = leave_one_subject_out(windows_of(a.train[0], w), a.options, a.folds);
-        description = (a.folds > 0 ? std::to_string(a.folds) + "-fold leave-subjects-out on " : "leave-one-subject-out on ") + a.train[0];
+        description =
+            (a.folds > 0 ? std::to_string(a.folds) + "-fold leave-subjects-out on " : "leave-one-subject-out on ") +
+            a.train[0];
     } else if (!several(a)) {
         result = train_and_test(windows_of(a.train[0], w), make_windows(read_imu_dataset(a.test), wt), a.options);
         description = "trained on " + a.train[0] + ", tested on " + a.test;
@@ -130,27 +141,36 @@ void run(HarArgs a) {
             train.push_back({static_cast<int>(i) == a.sets.test_set ? &test : &sets.back(), a.train[i]});
         }
         result = train_on_sets(train, test, a.options, a.sets);
-        description = std::string(har_protocol_name(a.sets.protocol)) + ": trained on " + join(a.train, " + ") + ", tested on " + a.test +
-                      (a.sets.test_set >= 0 ? " less the " + std::to_string(a.sets.train_subjects) + " subjects drawn for each training" : "");
+        description = std::string(har_protocol_name(a.sets.protocol)) + ": trained on " + join(a.train, " + ") +
+                      ", tested on " + a.test +
+                      (a.sets.test_set >= 0
+                           ? " less the " + std::to_string(a.sets.train_subjects) + " subjects drawn for each training"
+                           : "");
     }
     write_file_atomic(a.out, har_result_json(result, description));
     double mean = 0;
     for (const HarRun& r : result.runs) mean += r.balanced_accuracy / static_cast<double>(result.runs.size());
-    std::printf("%s: balanced accuracy %.4f over %zu runs, %zu classes, %zu train / %zu test windows\n", a.out.c_str(), mean,
-                result.runs.size(), result.classes.size(), result.train_windows, result.test_windows);
+    std::printf("%s: balanced accuracy %.4f over %zu runs, %zu classes, %zu train / %zu test windows\n", a.out.c_str(),
+                mean, result.runs.size(), result.classes.size(), result.train_windows, result.test_windows);
 }
 
 }  // namespace
 
 static CommandRegistrar registrar([](CLI::App& root) {
     CLI::App& har = command_group(root, "har", "human activity recognition on IMU datasets");
-    auto* cmd = har.add_subcommand("run", "train DeepConvLSTM on --train, test on --test (or --loso); writes RESULT.json");
+    auto* cmd =
+        har.add_subcommand("run", "train DeepConvLSTM on --train, test on --test (or --loso); writes RESULT.json");
     static HarArgs a;
-    cmd->add_option("--train", a.train, "training dataset (manifest.csv layout); repeat it to train on several together")
-        ->required()->check(CLI::ExistingDirectory)->expected(1)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    cmd->add_option("--train", a.train,
+                    "training dataset (manifest.csv layout); repeat it to train on several together")
+        ->required()
+        ->check(CLI::ExistingDirectory)
+        ->expected(1)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     cmd->add_option("--test", a.test, "test dataset")->check(CLI::ExistingDirectory);
     cmd->add_flag("--loso", a.loso, "leave-one-subject-out on --train instead of a test set");
-    cmd->add_option("--positions", a.positions, "training positions, comma-separated (a name without side matches either side)");
+    cmd->add_option("--positions", a.positions,
+                    "training positions, comma-separated (a name without side matches either side)");
     cmd->add_option("--test-positions", a.test_positions, "test positions, in the order of --positions");
     cmd->add_option("--channels", a.channels, "acc or acc,gyr");
     cmd->add_option("--rate", a.windows.rate_hz, "evaluation rate, Hz");
@@ -158,10 +178,15 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--overlap", a.windows.overlap, "window overlap, 0..1");
     cmd->add_option("--folds", a.folds, "with --loso: subjects dealt into this many folds (default: one per subject)");
     cmd->add_option("--train-subjects", a.train_subjects,
-                    "draw this many subjects of the --train set that is also --test (seeded by --seed and the repeat); the others are tested");
-    cmd->add_option("--train-share", a.train_share, "share of each batch per --train, comma-separated in --train order (default: by windows)");
-    cmd->add_option("--protocol", a.protocol, "several sets: mix (one training on all) or finetune (train on the others, then fine-tune on the drawn subjects)");
-    cmd->add_option("--finetune-epochs", a.sets.finetune_epochs, "finetune: most fine-tuning epochs (early stopping; 0 = the pretrained network)");
+                    "draw this many subjects of the --train set that is also --test (seeded by --seed and the repeat); "
+                    "the others are tested");
+    cmd->add_option("--train-share", a.train_share,
+                    "share of each batch per --train, comma-separated in --train order (default: by windows)");
+    cmd->add_option("--protocol", a.protocol,
+                    "several sets: mix (one training on all) or finetune (train on the others, then fine-tune on the "
+                    "drawn subjects)");
+    cmd->add_option("--finetune-epochs", a.sets.finetune_epochs,
+                    "finetune: most fine-tuning epochs (early stopping; 0 = the pretrained network)");
     cmd->add_option("--finetune-lr", a.sets.finetune_learning_rate, "finetune: the fine-tuning's learning rate");
     cmd->add_option("--classes", a.classes, "keep only these training classes (after the data set's class map)");
     cmd->add_option("--repeats", a.options.repeats, "trainings with consecutive seeds");

@@ -22,10 +22,12 @@ namespace fs = std::filesystem;
 namespace {
 
 struct SynthArgs {
-    std::string joints, body = "preset:male_average", sensors = "realworld", noise = "none", realism = "none", out, format = "csv";
+    std::string joints, body = "preset:male_average", sensors = "realworld", noise = "none", realism = "none", out,
+                        format = "csv";
     std::string activity = "synthetic";
-    double fps = 20;           // HumanML3D's frame rate
-    VirtualImuOptions options;  // rate, mounting jitter, seed, twist smoothing (their defaults); noise and realism parsed
+    double fps = 20;  // HumanML3D's frame rate
+    VirtualImuOptions
+        options;  // rate, mounting jitter, seed, twist smoothing (their defaults); noise and realism parsed
 };
 
 std::string without_side(const std::string& position) {
@@ -43,7 +45,8 @@ void write_outputs(const SynthArgs& a, const std::vector<BodyImu>& bodies, const
         write_body_imu(tmp.string(), b);
         if (a.format != "realworld") continue;
         for (size_t i = 0; i < b.mounts.size(); ++i)
-            write_realworld_csv((tmp / b.body.name).string(), a.activity, without_side(b.mounts[i].placement.position), b.signals[i]);
+            write_realworld_csv((tmp / b.body.name).string(), a.activity, without_side(b.mounts[i].placement.position),
+                                b.signals[i]);
     }
     write_file_atomic((tmp / "meta.json").string(), meta.dump(2) + "\n");
     publish_partial(tmp.string(), a.out);
@@ -73,19 +76,28 @@ void run(const SynthArgs& a) {
 
 static CommandRegistrar registrar([](CLI::App& root) {
     CLI::App& imu = command_group(root, "imu", "virtual IMUs on bodies");
-    auto* cmd = imu.add_subcommand("synth", "joints [F,22,3] -> accelerometer + gyroscope CSVs per body and sensor position");
+    auto* cmd =
+        imu.add_subcommand("synth", "joints [F,22,3] -> accelerometer + gyroscope CSVs per body and sensor position");
     static SynthArgs a;
     cmd->add_option("--joints", a.joints, "joints .npy [F,22,3], metres, Y up")->required()->check(CLI::ExistingFile);
     cmd->add_option("--fps", a.fps, "frame rate of the joints (HumanML3D: 20)");
-    cmd->add_option("--body", a.body, "preset:NAME | paper8 | population:N[,seed=S,female=F,height_m|height_f=CM:SD,bmi_m|bmi_f=MEAN:SD] | height=CM,mass=KG,sex=m|f | smpl:FILE.npz[,betas=..] | none; join with +");
-    cmd->add_option("--sensors", a.sensors, "placement sets: " + dataset_profile_names() + ", FILE.toml (comma-separated)");
+    cmd->add_option("--body", a.body,
+                    "preset:NAME | paper8 | population:N[,seed=S,female=F,height_m|height_f=CM:SD,bmi_m|bmi_f=MEAN:SD] "
+                    "| height=CM,mass=KG,sex=m|f | smpl:FILE.npz[,betas=..] | none; join with +");
+    cmd->add_option("--sensors", a.sensors,
+                    "placement sets: " + dataset_profile_names() + ", FILE.toml (comma-separated)");
     cmd->add_option("--rate", a.options.rate_hz, "output sample rate, Hz");
-    cmd->add_option("--noise", a.noise, "the sensor's errors alone (the realism model's sensor key): none | smartphone | hugadb | sisfall | umafall [,key=value...]");
+    cmd->add_option("--noise", a.noise,
+                    "the sensor's errors alone (the realism model's sensor key): none | smartphone | hugadb | sisfall "
+                    "| umafall [,key=value...]");
     cmd->add_option("--realism", a.realism, realism_help());
-    cmd->add_option("--mount-jitter", a.options.mount_jitter_deg, "random mounting rotation up to DEG degrees (seeded)");
-    cmd->add_option("--twist-smoothing", a.options.twist_smoothing_frames, "Gaussian smoothing of the segment twist over time, sigma in frames");
+    cmd->add_option("--mount-jitter", a.options.mount_jitter_deg,
+                    "random mounting rotation up to DEG degrees (seeded)");
+    cmd->add_option("--twist-smoothing", a.options.twist_smoothing_frames,
+                    "Gaussian smoothing of the segment twist over time, sigma in frames");
     cmd->add_option("--seed", a.options.seed, "seed of mounting errors, realism draws and noise");
-    cmd->add_option("--format", a.format, "csv, or realworld to add RealWorld's release files")->check(CLI::IsMember({"csv", "realworld"}));
+    cmd->add_option("--format", a.format, "csv, or realworld to add RealWorld's release files")
+        ->check(CLI::IsMember({"csv", "realworld"}));
     cmd->add_option("--activity", a.activity, "activity name in RealWorld file names");
     cmd->add_option("--out", a.out, "output folder")->required();
     cmd->callback([] { run(a); });

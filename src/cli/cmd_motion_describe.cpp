@@ -28,7 +28,8 @@ CsvTable describe(const DescribeArgs& a) {
         ImportOptions o;
         o.fps = a.fps;
         std::vector<std::string> row = {path};
-        for (const auto& [name, value] : attribute_fields(measure_attributes(import_motion(path, o), path))) row.push_back(value);
+        for (const auto& [name, value] : attribute_fields(measure_attributes(import_motion(path, o), path)))
+            row.push_back(value);
         t.rows.push_back(std::move(row));
     }
     return t;
@@ -38,10 +39,14 @@ CsvTable describe(const DescribeArgs& a) {
 
 static CommandRegistrar registrar([](CLI::App& root) {
     CLI::App& motion = command_group(root, "motion", "motion files: import, export, HumanML3D features");
-    auto* cmd = motion.add_subcommand("describe", "measure what a caption could say of motions (speed, turns, steps, jumps, posture) -> CSV");
+    auto* cmd = motion.add_subcommand(
+        "describe", "measure what a caption could say of motions (speed, turns, steps, jumps, posture) -> CSV");
     static DescribeArgs a;
-    cmd->add_option("inputs", a.inputs, "motion files: SMPL-22 joints .npy [F,22,3] (metres, Y up), .bvh or .amc")->required()->check(CLI::ExistingFile);
-    cmd->add_option("--fps", a.fps, "frame rate of .npy joints (BVH and AMC are resampled to it)")->capture_default_str();
+    cmd->add_option("inputs", a.inputs, "motion files: SMPL-22 joints .npy [F,22,3] (metres, Y up), .bvh or .amc")
+        ->required()
+        ->check(CLI::ExistingFile);
+    cmd->add_option("--fps", a.fps, "frame rate of .npy joints (BVH and AMC are resampled to it)")
+        ->capture_default_str();
     cmd->add_option("--out", a.out, "write the CSV here (default: print it)");
     cmd->callback([] {
         check_usage([] {
@@ -49,8 +54,10 @@ static CommandRegistrar registrar([](CLI::App& root) {
             if (!a.out.empty()) check_output(a.out, "--out", OutputKind::file, a.inputs);
         });
         const std::string text = format_csv(describe(a));
-        if (a.out.empty()) std::fputs(text.c_str(), stdout);
-        else write_file_atomic(a.out, text);
+        if (a.out.empty())
+            std::fputs(text.c_str(), stdout);
+        else
+            write_file_atomic(a.out, text);
     });
 });
 

@@ -1,29 +1,35 @@
 // t2imu motion import | export: motion capture <-> SMPL-22 joints (.npy).
 #include "cli/command.hpp"
 #include "cli/usage.hpp"
-#include "core/output_path.hpp"
 #include "core/npy.hpp"
+#include "core/output_path.hpp"
 #include "motion/bvh_export.hpp"
 #include "motion/mocap_import.hpp"
 
 namespace t2imu::cli {
 
 static void add_import_command(CLI::App& motion) {
-    auto* cmd = motion.add_subcommand("import", "BVH or ASF/AMC motion capture -> SMPL-22 joints [F,22,3] (metres, Y up)");
+    auto* cmd =
+        motion.add_subcommand("import", "BVH or ASF/AMC motion capture -> SMPL-22 joints [F,22,3] (metres, Y up)");
     static std::string in, out;
     static ImportOptions options;
     cmd->add_option("input", in, "motion file (.bvh, .amc, .npy)")->required()->check(CLI::ExistingFile);
     cmd->add_option("--out", out, "output joints .npy (float32)")->required();
-    cmd->add_option("--fps", options.fps, "output frame rate (0: the capture rate, decimated by a whole number to at most 60)")->capture_default_str();
+    cmd->add_option("--fps", options.fps,
+                    "output frame rate (0: the capture rate, decimated by a whole number to at most 60)")
+        ->capture_default_str();
     cmd->add_option("--format", options.format, "bvh, amc or npy (default: by extension)");
-    cmd->add_option("--asf", options.asf, "ASF skeleton of an AMC clip (default: the .asf beside it named as its prefix)");
+    cmd->add_option("--asf", options.asf,
+                    "ASF skeleton of an AMC clip (default: the .asf beside it named as its prefix)");
     cmd->add_option("--up", options.up, "the source's up axis: y or z (Z-up captures are turned to Y up)")
-        ->capture_default_str()->check(CLI::IsMember({'y', 'z'}));
+        ->capture_default_str()
+        ->check(CLI::IsMember({'y', 'z'}));
     cmd->add_option("--source-fps", options.source_fps, "frame rate of an AMC clip (AMC does not record it)")
         ->capture_default_str();
     cmd->callback([] {
         check_usage([] {
-            if (!(options.fps >= 0 && options.fps <= 1000)) throw Error("--fps", "rate", "0 (the capture rate) to 1000 fps", std::to_string(options.fps));
+            if (!(options.fps >= 0 && options.fps <= 1000))
+                throw Error("--fps", "rate", "0 (the capture rate) to 1000 fps", std::to_string(options.fps));
             if (!(options.source_fps > 0 && options.source_fps <= 1000))
                 throw Error("--source-fps", "rate", "above 0 and at most 1000 fps", std::to_string(options.source_fps));
             check_output(out, "--out", OutputKind::file, {in});

@@ -22,7 +22,10 @@ namespace {
 std::vector<std::string> joint_files(const std::vector<std::string>& inputs) {
     std::vector<std::string> out;
     for (const std::string& in : inputs) {
-        if (!std::filesystem::is_directory(in)) { out.push_back(in); continue; }
+        if (!std::filesystem::is_directory(in)) {
+            out.push_back(in);
+            continue;
+        }
         std::vector<std::string> npy, joints;
         for (const auto& e : std::filesystem::directory_iterator(in)) {
             const std::string path = e.path().string();
@@ -37,7 +40,8 @@ std::vector<std::string> joint_files(const std::vector<std::string>& inputs) {
 
 double percentile(std::vector<double> v, double p) {
     std::sort(v.begin(), v.end());
-    return v[static_cast<size_t>(std::min<double>(static_cast<double>(v.size() - 1), p / 100.0 * static_cast<double>(v.size())))];
+    return v[static_cast<size_t>(
+        std::min<double>(static_cast<double>(v.size() - 1), p / 100.0 * static_cast<double>(v.size())))];
 }
 
 void run(const std::vector<std::string>& inputs, double fps, double p, const std::string& out) {
@@ -68,11 +72,13 @@ void run(const std::vector<std::string>& inputs, double fps, double p, const std
 
 static CommandRegistrar registrar([](CLI::App& root) {
     CLI::App& motion = command_group(root, "motion", "motion files: import, export, HumanML3D features");
-    auto* cmd = motion.add_subcommand("quality", "plausibility scores (foot skating, floor, speed, acceleration) of joints .npy files");
+    auto* cmd = motion.add_subcommand(
+        "quality", "plausibility scores (foot skating, floor, speed, acceleration) of joints .npy files");
     static std::vector<std::string> inputs;
     static double fps = 20, p = 99.5;
     static std::string out;
-    cmd->add_option("inputs", inputs, "joints .npy [F,22,3] files, or folders of them (*_joints.npy where present)")->required();
+    cmd->add_option("inputs", inputs, "joints .npy [F,22,3] files, or folders of them (*_joints.npy where present)")
+        ->required();
     cmd->add_option("--fps", fps, "frame rate of the joints")->capture_default_str();
     cmd->add_option("--percentile", p, "percentile to print over the inputs")->capture_default_str();
     cmd->add_option("--out", out, "per-file scores CSV");

@@ -8,7 +8,8 @@
 namespace t2imu::cli {
 
 static void add_features_command(CLI::App& motion) {
-    auto* cmd = motion.add_subcommand("features", "joints [F,22,3] (metres, Y up, 20 fps) -> HumanML3D features [F-1,263]");
+    auto* cmd =
+        motion.add_subcommand("features", "joints [F,22,3] (metres, Y up, 20 fps) -> HumanML3D features [F-1,263]");
     static std::string in, out;
     cmd->add_option("--joints", in, "input joints .npy")->required()->check(CLI::ExistingFile);
     cmd->add_option("--out", out, "output features .npy (float32)")->required();

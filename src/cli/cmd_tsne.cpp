@@ -7,8 +7,8 @@
 #include "analysis/tsne_table.hpp"
 #include "cli/command.hpp"
 #include "cli/usage.hpp"
-#include "core/output_path.hpp"
 #include "core/csv.hpp"
+#include "core/output_path.hpp"
 
 namespace t2imu::cli {
 
@@ -38,7 +38,8 @@ void run(const TsneArgs& a) {
 }  // namespace
 
 static CommandRegistrar registrar([](CLI::App& root) {
-    auto* cmd = root.add_subcommand("tsne", "feature table (CSV) -> 2-D t-SNE embedding (CSV); non-numeric columns are carried over");
+    auto* cmd = root.add_subcommand(
+        "tsne", "feature table (CSV) -> 2-D t-SNE embedding (CSV); non-numeric columns are carried over");
     static TsneArgs a;
     cmd->add_option("--in", a.in, "input CSV with a header")->required()->check(CLI::ExistingFile);
     cmd->add_option("--out", a.out, "output CSV")->required();

@@ -20,8 +20,8 @@ CLI::App& command_group(CLI::App& parent, const std::string& name, const std::st
 
 // Options every command shares, set before the command's callback runs.
 struct GlobalOptions {
-    int threads = 0;       // 0: all cores
-    bool verbose = false;  // progress and details on stderr even when it is not a terminal
+    int threads = 0;             // 0: all cores
+    bool verbose = false;        // progress and details on stderr even when it is not a terminal
     std::string device = "cpu";  // where libtorch models run: cpu, cuda or cuda:N (needs a CUDA build of libtorch)
 };
 const GlobalOptions& global_options();

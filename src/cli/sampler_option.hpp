@@ -9,7 +9,9 @@
 namespace t2imu::cli {
 
 inline CLI::Option* add_sampler_option(CLI::App& cmd, Sampler& sampler, const std::string& help) {
-    return cmd.add_option_function<std::string>("--sampler", [&sampler](const std::string& name) { sampler = parse_sampler(name); }, help)
+    return cmd
+        .add_option_function<std::string>(
+            "--sampler", [&sampler](const std::string& name) { sampler = parse_sampler(name); }, help)
         ->check(CLI::IsMember(sampler_names()));
 }
 

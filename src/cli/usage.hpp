@@ -12,7 +12,8 @@ public:
 };
 
 // Runs the checks in `check` (options' validate(), check_output...) and turns their Error into UsageError.
-template <class Check> void check_usage(Check check) {
+template <class Check>
+void check_usage(Check check) {
     try {
         check();
     } catch (const UsageError&) {

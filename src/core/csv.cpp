@@ -24,7 +24,9 @@ bool CsvTable::has_column(const std::string& name) const {
 double CsvTable::number(size_t row, size_t col) const {
     const std::string& f = rows.at(row).at(col);
     const std::optional<double> v = parse_number(f);
-    if (!v) throw Error(source, "row " + std::to_string(row + 2) + " column '" + header.at(col) + "'", "a number", "'" + f + "'");
+    if (!v)
+        throw Error(source, "row " + std::to_string(row + 2) + " column '" + header.at(col) + "'", "a number",
+                    "'" + f + "'");
     return *v;
 }
 
@@ -53,16 +55,32 @@ CsvTable parse_csv(const std::string& text, const std::string& source) {
     for (size_t i = 0; i < text.size(); ++i) {
         const char c = text[i];
         if (quoted) {
-            if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') { field += '"'; ++i; }
-            else if (c == '"') quoted = false;
-            else { if (c == '\n') ++line; field += c; }
+            if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') {
+                field += '"';
+                ++i;
+            } else if (c == '"')
+                quoted = false;
+            else {
+                if (c == '\n') ++line;
+                field += c;
+            }
             continue;
         }
-        if (c == '"' && field.empty() && !field_started) { quoted = true; field_started = true; }
-        else if (c == ',') { record.push_back(field); field.clear(); field_started = false; }
-        else if (c == '\r' && i + 1 < text.size() && text[i + 1] == '\n') { /* CRLF: the \n ends the record */ }
-        else if (c == '\n') { ++line; end_record(); }
-        else { field += c; field_started = true; }
+        if (c == '"' && field.empty() && !field_started) {
+            quoted = true;
+            field_started = true;
+        } else if (c == ',') {
+            record.push_back(field);
+            field.clear();
+            field_started = false;
+        } else if (c == '\r' && i + 1 < text.size() && text[i + 1] == '\n') { /* CRLF: the \n ends the record */
+        } else if (c == '\n') {
+            ++line;
+            end_record();
+        } else {
+            field += c;
+            field_started = true;
+        }
     }
     if (quoted) throw Error(source, "line " + std::to_string(record_line), "a closing quote", "end of file");
     if (field_started || !field.empty() || !record.empty()) end_record();

@@ -11,8 +11,7 @@ class Error : public std::runtime_error {
 public:
     // file: the path (or a logical source such as "--joints"); field: the part of it that is wrong
     // (a header key, a column, "shape"); expected: what was expected, in words; got: what was found.
-    Error(const std::string& file, const std::string& field, const std::string& expected,
-          const std::string& got = "");
+    Error(const std::string& file, const std::string& field, const std::string& expected, const std::string& got = "");
     explicit Error(const std::string& message);
 };
 

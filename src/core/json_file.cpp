@@ -10,8 +10,8 @@ namespace {
 std::string dotted(const std::string& where, const std::string& key) { return where.empty() ? key : where + "." + key; }
 
 // The member, or Error naming it when `doc` is no object or lacks it.
-const nlohmann::json& member(const nlohmann::json& doc, const std::string& key, const std::string& path, const std::string& where,
-                             const char* expected) {
+const nlohmann::json& member(const nlohmann::json& doc, const std::string& key, const std::string& path,
+                             const std::string& where, const char* expected) {
     if (!doc.is_object()) throw Error(path, where.empty() ? "json" : where, "an object", doc.type_name());
     const auto it = doc.find(key);
     if (it == doc.end()) throw Error(path, dotted(where, key), std::string(expected) + " (missing)");
@@ -28,7 +28,8 @@ std::string shown(const nlohmann::json& v) {
 nlohmann::json parse_json_text(const std::string& text, const std::string& path) {
     try {
         return nlohmann::json::parse(text);
-    } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number like 1e1111 (fuzz_job_marker)
+    } catch (const nlohmann::json::exception&
+                 e) {  // parse_error, and out_of_range for a number like 1e1111 (fuzz_job_marker)
         // e.what() is "[json.exception.parse_error.101] parse error at line 1, column 5: syntax error ...": keep
         // the part after the library's tag.
         std::string why = e.what();
@@ -40,26 +41,31 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& path)
 
 nlohmann::json read_json_file(const std::string& path) { return parse_json_text(read_file_text(path), path); }
 
-std::string json_string(const nlohmann::json& doc, const std::string& key, const std::string& path, const std::string& where) {
+std::string json_string(const nlohmann::json& doc, const std::string& key, const std::string& path,
+                        const std::string& where) {
     const nlohmann::json& v = member(doc, key, path, where, "a string");
     if (!v.is_string()) throw Error(path, dotted(where, key), "a string", shown(v));
     return v.get<std::string>();
 }
 
-double json_number(const nlohmann::json& doc, const std::string& key, const std::string& path, const std::string& where) {
+double json_number(const nlohmann::json& doc, const std::string& key, const std::string& path,
+                   const std::string& where) {
     const nlohmann::json& v = member(doc, key, path, where, "a number");
     if (!v.is_number()) throw Error(path, dotted(where, key), "a number", shown(v));
     return v.get<double>();
 }
 
-int64_t json_integer(const nlohmann::json& doc, const std::string& key, const std::string& path, const std::string& where) {
+int64_t json_integer(const nlohmann::json& doc, const std::string& key, const std::string& path,
+                     const std::string& where) {
     const nlohmann::json& v = member(doc, key, path, where, "a whole number");
     if (!v.is_number_integer()) throw Error(path, dotted(where, key), "a whole number", shown(v));
-    if (v.is_number_unsigned() && v.get<uint64_t>() > static_cast<uint64_t>(INT64_MAX)) throw Error(path, dotted(where, key), "a whole number below 2^63", shown(v));
+    if (v.is_number_unsigned() && v.get<uint64_t>() > static_cast<uint64_t>(INT64_MAX))
+        throw Error(path, dotted(where, key), "a whole number below 2^63", shown(v));
     return v.get<int64_t>();
 }
 
-uint64_t json_count(const nlohmann::json& doc, const std::string& key, const std::string& path, const std::string& where) {
+uint64_t json_count(const nlohmann::json& doc, const std::string& key, const std::string& path,
+                    const std::string& where) {
     const nlohmann::json& v = member(doc, key, path, where, "a whole number from 0");
     if (!v.is_number_unsigned() && !(v.is_number_integer() && v.get<int64_t>() >= 0))
         throw Error(path, dotted(where, key), "a whole number from 0", shown(v));
@@ -72,13 +78,15 @@ bool json_bool(const nlohmann::json& doc, const std::string& key, const std::str
     return v.get<bool>();
 }
 
-const nlohmann::json& json_array(const nlohmann::json& doc, const std::string& key, const std::string& path, const std::string& where) {
+const nlohmann::json& json_array(const nlohmann::json& doc, const std::string& key, const std::string& path,
+                                 const std::string& where) {
     const nlohmann::json& v = member(doc, key, path, where, "an array");
     if (!v.is_array()) throw Error(path, dotted(where, key), "an array", shown(v));
     return v;
 }
 
-const nlohmann::json& json_object(const nlohmann::json& doc, const std::string& key, const std::string& path, const std::string& where) {
+const nlohmann::json& json_object(const nlohmann::json& doc, const std::string& key, const std::string& path,
+                                  const std::string& where) {
     const nlohmann::json& v = member(doc, key, path, where, "an object");
     if (!v.is_object()) throw Error(path, dotted(where, key), "an object", shown(v));
     return v;

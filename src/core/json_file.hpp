@@ -17,12 +17,19 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& path)
 // The value at `key` of the object `doc` (read from `path`), converted; `where` prefixes the key in messages
 // ("recordings.2"). Error(path, where.key, ...) when `doc` is not an object, the key is missing, or the
 // value has another type.
-std::string json_string(const nlohmann::json& doc, const std::string& key, const std::string& path, const std::string& where = "");
-double json_number(const nlohmann::json& doc, const std::string& key, const std::string& path, const std::string& where = "");
-int64_t json_integer(const nlohmann::json& doc, const std::string& key, const std::string& path, const std::string& where = "");
-uint64_t json_count(const nlohmann::json& doc, const std::string& key, const std::string& path, const std::string& where = "");  // >= 0
-bool json_bool(const nlohmann::json& doc, const std::string& key, const std::string& path, const std::string& where = "");
-const nlohmann::json& json_array(const nlohmann::json& doc, const std::string& key, const std::string& path, const std::string& where = "");
-const nlohmann::json& json_object(const nlohmann::json& doc, const std::string& key, const std::string& path, const std::string& where = "");
+std::string json_string(const nlohmann::json& doc, const std::string& key, const std::string& path,
+                        const std::string& where = "");
+double json_number(const nlohmann::json& doc, const std::string& key, const std::string& path,
+                   const std::string& where = "");
+int64_t json_integer(const nlohmann::json& doc, const std::string& key, const std::string& path,
+                     const std::string& where = "");
+uint64_t json_count(const nlohmann::json& doc, const std::string& key, const std::string& path,
+                    const std::string& where = "");  // >= 0
+bool json_bool(const nlohmann::json& doc, const std::string& key, const std::string& path,
+               const std::string& where = "");
+const nlohmann::json& json_array(const nlohmann::json& doc, const std::string& key, const std::string& path,
+                                 const std::string& where = "");
+const nlohmann::json& json_object(const nlohmann::json& doc, const std::string& key, const std::string& path,
+                                  const std::string& where = "");
 
 }  // namespace t2imu

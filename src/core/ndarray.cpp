@@ -6,10 +6,14 @@ namespace t2imu {
 
 size_t dtype_size(DType t) {
     switch (t) {
-        case DType::f16: case DType::bf16: return 2;
-        case DType::f32: case DType::i32: return 4;
-        case DType::f64: case DType::i64: return 8;
-        case DType::u8: case DType::boolean: return 1;
+        case DType::f16:
+        case DType::bf16: return 2;
+        case DType::f32:
+        case DType::i32: return 4;
+        case DType::f64:
+        case DType::i64: return 8;
+        case DType::u8:
+        case DType::boolean: return 1;
     }
     return 0;
 }
@@ -32,7 +36,8 @@ int64_t NdArray::size() const {
     int64_t n = 1;
     for (int64_t d : shape) {
         if (d < 0) throw Error("", "shape", "non-negative dimensions", shape_str());
-        if (__builtin_mul_overflow(n, d, &n)) throw Error("", "shape", "an element count that fits in 64 bits", shape_str());
+        if (__builtin_mul_overflow(n, d, &n))
+            throw Error("", "shape", "an element count that fits in 64 bits", shape_str());
     }
     return n;
 }
@@ -47,9 +52,12 @@ std::string NdArray::shape_str() const {
 float half_to_float(uint16_t h) {
     const uint32_t sign = (h >> 15) & 1, exp = (h >> 10) & 0x1f, mant = h & 0x3ff;
     float v;
-    if (exp == 0) v = std::ldexp(static_cast<float>(mant), -24);  // subnormal
-    else if (exp == 31) v = mant ? NAN : INFINITY;
-    else v = std::ldexp(static_cast<float>(mant | 0x400), static_cast<int>(exp) - 25);
+    if (exp == 0)
+        v = std::ldexp(static_cast<float>(mant), -24);  // subnormal
+    else if (exp == 31)
+        v = mant ? NAN : INFINITY;
+    else
+        v = std::ldexp(static_cast<float>(mant | 0x400), static_cast<int>(exp) - 25);
     return sign ? -v : v;
 }
 
@@ -74,8 +82,8 @@ uint16_t float_to_half(float f) {
     const uint16_t sign = static_cast<uint16_t>((u >> 16) & 0x8000);
     if (std::isnan(f)) return sign | 0x7e00;
     const float a = std::fabs(f);
-    if (a >= 65520.0f) return sign | 0x7c00;  // rounds to infinity
-    if (a < 6.103515625e-05f) {               // subnormal half: multiples of 2^-24
+    if (a >= 65520.0f) return sign | 0x7c00;              // rounds to infinity
+    if (a < 6.103515625e-05f) {                           // subnormal half: multiples of 2^-24
         const float q = std::nearbyint(a * 16777216.0f);  // round-half-even under the default mode
         return sign | static_cast<uint16_t>(q);
     }
@@ -83,12 +91,16 @@ uint16_t float_to_half(float f) {
     const float m = std::frexp(a, &e);  // a = m * 2^e, m in [0.5, 1)
     float mant = std::nearbyint((m * 2.0f - 1.0f) * 1024.0f);
     int exp = e - 1 + 15;
-    if (mant >= 1024.0f) { mant = 0; ++exp; }
+    if (mant >= 1024.0f) {
+        mant = 0;
+        ++exp;
+    }
     if (exp >= 31) return sign | 0x7c00;
     return sign | static_cast<uint16_t>(exp << 10) | static_cast<uint16_t>(mant);
 }
 
-template <class T> std::vector<T> NdArray::to() const {
+template <class T>
+std::vector<T> NdArray::to() const {
     const int64_t n = size();
     std::vector<T> out(static_cast<size_t>(n));
     const uint8_t* p = bytes.data();

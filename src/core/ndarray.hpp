@@ -20,24 +20,46 @@ struct NdArray {
     std::vector<int64_t> shape;
     std::vector<uint8_t> bytes;  // size() * dtype_size(dtype) bytes, little-endian, C order
 
-    int64_t size() const;  // number of elements (1 for a 0-d array)
+    int64_t size() const;           // number of elements (1 for a 0-d array)
     std::string shape_str() const;  // "(170, 22, 3)"
 
     // Every element converted to T (float16/bfloat16 decoded to float).
-    template <class T> std::vector<T> to() const;
+    template <class T>
+    std::vector<T> to() const;
 
-    template <class T> static NdArray from(const std::vector<T>& values, std::vector<int64_t> shape);
+    template <class T>
+    static NdArray from(const std::vector<T>& values, std::vector<int64_t> shape);
 };
 
-template <class T> DType dtype_of();
-template <> inline DType dtype_of<float>() { return DType::f32; }
-template <> inline DType dtype_of<double>() { return DType::f64; }
-template <> inline DType dtype_of<int32_t>() { return DType::i32; }
-template <> inline DType dtype_of<int64_t>() { return DType::i64; }
-template <> inline DType dtype_of<uint8_t>() { return DType::u8; }
-template <> inline DType dtype_of<bool>() { return DType::boolean; }
+template <class T>
+DType dtype_of();
+template <>
+inline DType dtype_of<float>() {
+    return DType::f32;
+}
+template <>
+inline DType dtype_of<double>() {
+    return DType::f64;
+}
+template <>
+inline DType dtype_of<int32_t>() {
+    return DType::i32;
+}
+template <>
+inline DType dtype_of<int64_t>() {
+    return DType::i64;
+}
+template <>
+inline DType dtype_of<uint8_t>() {
+    return DType::u8;
+}
+template <>
+inline DType dtype_of<bool>() {
+    return DType::boolean;
+}
 
-template <class T> NdArray NdArray::from(const std::vector<T>& values, std::vector<int64_t> shape) {
+template <class T>
+NdArray NdArray::from(const std::vector<T>& values, std::vector<int64_t> shape) {
     NdArray a;
     a.dtype = dtype_of<T>();
     a.shape = std::move(shape);
@@ -55,7 +77,7 @@ template <class T> NdArray NdArray::from(const std::vector<T>& values, std::vect
 
 float half_to_float(uint16_t h);
 float bfloat16_to_float(uint16_t b);
-uint16_t float_to_half(float f);  // round to nearest even
+uint16_t float_to_half(float f);      // round to nearest even
 uint16_t float_to_bfloat16(float f);  // round to nearest even
 
 }  // namespace t2imu

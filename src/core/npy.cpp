@@ -16,11 +16,16 @@ constexpr uint8_t kMagic[6] = {0x93, 'N', 'U', 'M', 'P', 'Y'};
 
 // NumPy's descr strings for the types we hold, exactly as NumPy writes them (one-byte types carry '|').
 bool descr_to_dtype(const std::string& d, DType& out) {
-    static const struct { const char* descr; DType dtype; } table[] = {
-        {"<f2", DType::f16}, {"<f4", DType::f32}, {"<f8", DType::f64}, {"<i4", DType::i32},
-        {"<i8", DType::i64}, {"|u1", DType::u8},  {"|b1", DType::boolean}};
+    static const struct {
+        const char* descr;
+        DType dtype;
+    } table[] = {{"<f2", DType::f16}, {"<f4", DType::f32}, {"<f8", DType::f64},    {"<i4", DType::i32},
+                 {"<i8", DType::i64}, {"|u1", DType::u8},  {"|b1", DType::boolean}};
     for (const auto& e : table)
-        if (d == e.descr) { out = e.dtype; return true; }
+        if (d == e.descr) {
+            out = e.dtype;
+            return true;
+        }
     return false;
 }
 
@@ -45,7 +50,9 @@ struct HeaderParser {
     const std::string& source;
     size_t i = 0;
 
-    void skip_space() { while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i; }
+    void skip_space() {
+        while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+    }
     // The message quotes the header from the offending character on, at most 40 characters (a version-2.0
     // header may be megabytes), so a shape of (-1, 3) shows '-1, 3), }', not the text before it.
     [[noreturn]] void fail(const std::string& expected) const {
@@ -61,7 +68,10 @@ struct HeaderParser {
     }
     bool accept(char c) {
         skip_space();
-        if (i < s.size() && s[i] == c) { ++i; return true; }
+        if (i < s.size() && s[i] == c) {
+            ++i;
+            return true;
+        }
         return false;
     }
     std::string string_literal() {
@@ -75,8 +85,14 @@ struct HeaderParser {
     }
     bool boolean_literal() {
         skip_space();
-        if (s.compare(i, 4, "True") == 0) { i += 4; return true; }
-        if (s.compare(i, 5, "False") == 0) { i += 5; return false; }
+        if (s.compare(i, 4, "True") == 0) {
+            i += 4;
+            return true;
+        }
+        if (s.compare(i, 5, "False") == 0) {
+            i += 5;
+            return false;
+        }
         fail("True or False");
     }
     std::vector<int64_t> shape_tuple() {
@@ -144,7 +160,10 @@ NpyHeader parse_header_dict(const std::string& text, const std::string& source) 
         } else {
             p.fail("only the keys descr, fortran_order, shape");
         }
-        if (!p.accept(',')) { p.expect('}'); break; }
+        if (!p.accept(',')) {
+            p.expect('}');
+            break;
+        }
     }
     p.skip_space();  // NumPy pads with spaces and ends with '\n'; anything else after the dict is not a header
     if (p.i != text.size()) p.fail("only spaces after the closing brace");
@@ -193,7 +212,8 @@ NdArray parse_npy(const uint8_t* data, size_t size, const std::string& source) {
     if (size < static_cast<size_t>(8 + len_bytes)) throw Error(source, "header length", "a complete header");
     const size_t header_len = read_le(data + 8, len_bytes);
     const size_t data_start = 8 + static_cast<size_t>(len_bytes) + header_len;
-    if (data_start > size) throw Error(source, "header", std::to_string(header_len) + " header bytes", "truncated file");
+    if (data_start > size)
+        throw Error(source, "header", std::to_string(header_len) + " header bytes", "truncated file");
     const std::string text(reinterpret_cast<const char*>(data) + 8 + len_bytes, header_len);
     const NpyHeader h = parse_header_dict(text, source);
 
@@ -205,7 +225,10 @@ NdArray parse_npy(const uint8_t* data, size_t size, const std::string& source) {
     size_t nonzero = item;
     bool empty = false;
     for (int64_t d : a.shape) {
-        if (d == 0) { empty = true; continue; }
+        if (d == 0) {
+            empty = true;
+            continue;
+        }
         if (__builtin_mul_overflow(nonzero, static_cast<size_t>(d), &nonzero) || nonzero > (size_t(1) << 62))
             throw Error(source, "shape", "a size that fits in memory", a.shape_str());
     }
@@ -214,8 +237,9 @@ NdArray parse_npy(const uint8_t* data, size_t size, const std::string& source) {
         throw Error(source, "data", std::to_string(nbytes) + " bytes of data for shape " + a.shape_str(),
                     std::to_string(size - data_start) + " bytes (truncated)");
     if (size - data_start > nbytes)  // NumPy's loader would ignore them; a file that long was not written whole
-        throw Error(source, "data", std::to_string(nbytes) + " bytes of data for shape " + a.shape_str(),
-                    std::to_string(size - data_start) + " bytes (" + std::to_string(size - data_start - nbytes) + " trailing)");
+        throw Error(
+            source, "data", std::to_string(nbytes) + " bytes of data for shape " + a.shape_str(),
+            std::to_string(size - data_start) + " bytes (" + std::to_string(size - data_start - nbytes) + " trailing)");
     a.bytes.assign(data + data_start, data + data_start + nbytes);
     if (h.fortran_order) a.bytes = fortran_to_c_order(a.bytes, a.shape, item);
     return a;
@@ -228,15 +252,20 @@ NdArray read_npy(const std::string& path) {
 
 std::vector<uint8_t> serialize_npy(const NdArray& a) {
     if (a.bytes.size() != static_cast<size_t>(a.size()) * dtype_size(a.dtype))
-        throw Error("", "bytes", std::to_string(a.size()) + " elements of " + dtype_name(a.dtype) + " for shape " +
-                    a.shape_str(), std::to_string(a.bytes.size()) + " bytes");
-    std::string dict = std::string("{'descr': '") + dtype_to_descr(a.dtype) + "', 'fortran_order': False, 'shape': " +
-                       a.shape_str() + ", }";
+        throw Error("", "bytes",
+                    std::to_string(a.size()) + " elements of " + dtype_name(a.dtype) + " for shape " + a.shape_str(),
+                    std::to_string(a.bytes.size()) + " bytes");
+    std::string dict = std::string("{'descr': '") + dtype_to_descr(a.dtype) +
+                       "', 'fortran_order': False, 'shape': " + a.shape_str() + ", }";
     // Version 1.0 has a 2-byte header length; NumPy switches to 2.0 when the header needs more.
     int major = 1;
     size_t prefix = 10;
     size_t total = prefix + dict.size() + 1;  // + '\n'
-    if ((total + 63) / 64 * 64 - prefix > 65535) { major = 2; prefix = 12; total = prefix + dict.size() + 1; }
+    if ((total + 63) / 64 * 64 - prefix > 65535) {
+        major = 2;
+        prefix = 12;
+        total = prefix + dict.size() + 1;
+    }
     const size_t padded = (total + 63) / 64 * 64;
     dict.append(padded - total, ' ');
     dict.push_back('\n');

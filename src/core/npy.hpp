@@ -14,7 +14,7 @@ namespace t2imu {
 NdArray parse_npy(const uint8_t* data, size_t size, const std::string& source);
 NdArray read_npy(const std::string& path);
 
-std::vector<uint8_t> serialize_npy(const NdArray& a);  // version 1.0 (2.0 when the header needs it)
+std::vector<uint8_t> serialize_npy(const NdArray& a);       // version 1.0 (2.0 when the header needs it)
 void write_npy(const std::string& path, const NdArray& a);  // atomic (temporary name + rename)
 
 }  // namespace t2imu

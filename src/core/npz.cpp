@@ -22,16 +22,21 @@ std::map<std::string, NdArray> parse_npz(const uint8_t* data, size_t size, const
     return out;
 }
 
-const NdArray& npz_member(const std::map<std::string, NdArray>& npz, const std::string& name, const std::string& source) {
+const NdArray& npz_member(const std::map<std::string, NdArray>& npz, const std::string& name,
+                          const std::string& source) {
     const auto it = npz.find(name);
     if (it != npz.end()) return it->second;
     std::string present;
     size_t listed = 0;
     for (const auto& [member, array] : npz) {
-        if (listed++ == 10) { present += " ..."; break; }  // one line, however large the archive
+        if (listed++ == 10) {
+            present += " ...";
+            break;
+        }  // one line, however large the archive
         present += (present.empty() ? "" : " ") + member;
     }
-    throw Error(source, name, "a member named '" + name + "'", present.empty() ? "an empty archive" : "only " + present);
+    throw Error(source, name, "a member named '" + name + "'",
+                present.empty() ? "an empty archive" : "only " + present);
 }
 
 std::map<std::string, NdArray> read_npz(const std::string& path) {

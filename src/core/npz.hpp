@@ -11,7 +11,8 @@ namespace t2imu {
 std::map<std::string, NdArray> read_npz(const std::string& path);
 std::map<std::string, NdArray> parse_npz(const uint8_t* data, size_t size, const std::string& source);
 // The member `name` (without ".npy") of an archive read from `source`; an Error names both when it is absent.
-const NdArray& npz_member(const std::map<std::string, NdArray>& npz, const std::string& name, const std::string& source);
+const NdArray& npz_member(const std::map<std::string, NdArray>& npz, const std::string& name,
+                          const std::string& source);
 // compress: deflate members (numpy.savez_compressed) or store them (numpy.savez). Atomic.
 void write_npz(const std::string& path, const std::map<std::string, NdArray>& arrays, bool compress = true);
 

@@ -16,7 +16,8 @@ constexpr size_t kBufferSize = 400;
 
 std::string_view to_text(char (&buf)[kBufferSize], double v, std::chars_format format, int precision) {
     const std::to_chars_result r = std::to_chars(buf, buf + kBufferSize, v, format, precision);
-    if (r.ec != std::errc()) throw Error("number_text", "buffer", std::to_string(kBufferSize) + " characters for any double");
+    if (r.ec != std::errc())
+        throw Error("number_text", "buffer", std::to_string(kBufferSize) + " characters for any double");
     return std::string_view(buf, static_cast<size_t>(r.ptr - buf));
 }
 

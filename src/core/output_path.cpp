@@ -44,7 +44,8 @@ bool exists_no_throw(const fs::path& p) {
 void write_marker(const std::string& folder) {
     std::error_code ec;
     if (fs::is_directory(folder, ec) && !fs::exists(fs::path(folder) / kOutputMarker, ec))
-        std::ofstream(folder + "/" + kOutputMarker) << "a folder t2imu made; t2imu may write into it or replace it whole\n";
+        std::ofstream(folder + "/" + kOutputMarker)
+            << "a folder t2imu made; t2imu may write into it or replace it whole\n";
 }
 
 // Empty "" when `folder` may be written into or replaced, else why not.
@@ -54,7 +55,8 @@ std::string why_not_replaceable(const fs::path& folder) {
     if (fs::is_symlink(fs::symlink_status(folder, ec))) return "a symbolic link";
     if (!fs::is_directory(folder, ec)) return "an existing file";
     if (fs::exists(folder / kOutputMarker, ec) || fs::is_empty(folder, ec)) return "";
-    return std::string("a folder t2imu did not make (no ") + kOutputMarker + "): choose another, or add " + kOutputMarker + " if an earlier t2imu made it";
+    return std::string("a folder t2imu did not make (no ") + kOutputMarker + "): choose another, or add " +
+           kOutputMarker + " if an earlier t2imu made it";
 }
 
 // Whether `inner` is `outer` or lies below it (both resolved).
@@ -82,7 +84,8 @@ void check_creatable(const fs::path& target, const std::string& path, const std:
         existing = existing.parent_path();
     }
     std::error_code ec;
-    if (!fs::is_directory(existing, ec)) throw Error(option, path, "a path below folders", existing.string() + " is a file");
+    if (!fs::is_directory(existing, ec))
+        throw Error(option, path, "a path below folders", existing.string() + " is a file");
     if (missing.empty()) {
         std::string why = probe_folder(existing);
         if (why.empty() && kind == OutputKind::folder && fs::is_directory(target, ec)) why = probe_folder(target);
@@ -102,22 +105,27 @@ void check_creatable(const fs::path& target, const std::string& path, const std:
 
 std::string resolved_output_path(const std::string& path) { return resolved(path).string(); }
 
-void check_output(const std::string& path, const std::string& option, OutputKind kind, const std::vector<std::string>& inputs) {
+void check_output(const std::string& path, const std::string& option, OutputKind kind,
+                  const std::vector<std::string>& inputs) {
     if (path.empty()) throw Error(option, "path", "an output path");
     const fs::path target = resolved(path);
     std::error_code ec;
     if (fs::is_symlink(fs::symlink_status(target, ec)))
-        throw Error(option, path, "a path that is not a symbolic link (t2imu writes only where the path names)", "a link to " + fs::read_symlink(target, ec).string());
+        throw Error(option, path, "a path that is not a symbolic link (t2imu writes only where the path names)",
+                    "a link to " + fs::read_symlink(target, ec).string());
     for (const std::string& input : inputs) {
         if (input.empty()) continue;
         const fs::path in = fs::weakly_canonical(fs::absolute(input), ec);
         if (!ec && is_within(in, target))
-            throw Error(option, path, "an output apart from the inputs", in == target ? "it is the input " + input : "it holds the input " + input);
+            throw Error(option, path, "an output apart from the inputs",
+                        in == target ? "it is the input " + input : "it holds the input " + input);
     }
     if (exists_no_throw(target)) {
         if (kind == OutputKind::file && fs::is_directory(target, ec))
-            throw Error(option, path, "a file to write (t2imu never replaces a folder with a file)", "an existing folder");
-        if (kind == OutputKind::file && !fs::is_regular_file(target, ec)) throw Error(option, path, "a file to write", "an existing special file");
+            throw Error(option, path, "a file to write (t2imu never replaces a folder with a file)",
+                        "an existing folder");
+        if (kind == OutputKind::file && !fs::is_regular_file(target, ec))
+            throw Error(option, path, "a file to write", "an existing special file");
         if (kind == OutputKind::folder) {
             const std::string why = why_not_replaceable(target);
             if (!why.empty()) throw Error(option, path, "an output folder t2imu may write into", why);
@@ -142,7 +150,8 @@ std::string confined_path(const std::string& folder, const std::string& relative
     std::error_code ec;
     for (const fs::path& part : inside) {
         walk /= part;
-        if (fs::is_symlink(fs::symlink_status(walk, ec))) throw Error(field, relative, "a path without symbolic links", walk.string() + " is one");
+        if (fs::is_symlink(fs::symlink_status(walk, ec)))
+            throw Error(field, relative, "a path without symbolic links", walk.string() + " is one");
     }
     return (fs::path(folder) / inside).string();
 }
@@ -160,7 +169,8 @@ std::string partial_path_for(const std::string& path) {
 void publish_partial(const std::string& partial, const std::string& path) {
     const fs::path target = resolved(path);  // the folder the guard judged, whatever links and ".." the path holds
     const std::string why = why_not_replaceable(target);
-    if (!why.empty()) throw Error(path, "output folder", "a folder t2imu may replace (the result is in " + partial + ")", why);
+    if (!why.empty())
+        throw Error(path, "output folder", "a folder t2imu may replace (the result is in " + partial + ")", why);
     write_marker(partial);
     const fs::path old = target.string() + ".old-" + std::to_string(::getpid());
     std::error_code ec;

@@ -21,7 +21,8 @@ enum class OutputKind { file, folder };
 //  - the nearest existing folder cannot take a new entry: a probe folder is made there and removed again, which
 //    proves what access() cannot (/proc and /sys say yes to root and refuse anyway). Missing folders above `path`
 //    are made the same way and removed, so a refused or accepted check leaves nothing behind.
-void check_output(const std::string& path, const std::string& option, OutputKind kind, const std::vector<std::string>& inputs = {});
+void check_output(const std::string& path, const std::string& option, OutputKind kind,
+                  const std::vector<std::string>& inputs = {});
 constexpr const char* kOutputMarker = ".t2imu-output";  // in every output folder t2imu made
 
 // `path` absolute, symbolic links and ".." resolved as the system would, the last part kept as named (a link

@@ -32,16 +32,19 @@ std::optional<long long> parse_integer(const std::string& text) {
     return v;
 }
 
-double finite_number(const std::string& text, const std::string& source, const std::string& field, const std::string& expected) {
+double finite_number(const std::string& text, const std::string& source, const std::string& field,
+                     const std::string& expected) {
     const std::optional<double> v = parse_finite(text);
     if (!v) throw Error(source, field, expected, "'" + text.substr(0, 40) + "'");
     return *v;
 }
 
-long long integer_in(const std::string& text, long long low, long long high, const std::string& source, const std::string& field) {
+long long integer_in(const std::string& text, long long low, long long high, const std::string& source,
+                     const std::string& field) {
     const std::optional<long long> v = parse_integer(text);
     if (!v || *v < low || *v > high)
-        throw Error(source, field, "a whole number from " + std::to_string(low) + " to " + std::to_string(high), "'" + text.substr(0, 40) + "'");
+        throw Error(source, field, "a whole number from " + std::to_string(low) + " to " + std::to_string(high),
+                    "'" + text.substr(0, 40) + "'");
     return *v;
 }
 
@@ -64,8 +67,10 @@ NamedOverrides parse_named_overrides(const std::string& text, const std::string&
 std::pair<int, int> parse_shard(const std::string& text, const std::string& source, const std::string& field) {
     const size_t slash = text.find('/');
     const std::optional<long long> i = slash == std::string::npos ? std::nullopt : parse_integer(text.substr(0, slash));
-    const std::optional<long long> n = slash == std::string::npos ? std::nullopt : parse_integer(text.substr(slash + 1));
-    if (!i || !n || *n < 1 || *n > 1000000 || *i < 1 || *i > *n) throw Error(source, field, "I/N with 1 <= I <= N", text);
+    const std::optional<long long> n =
+        slash == std::string::npos ? std::nullopt : parse_integer(text.substr(slash + 1));
+    if (!i || !n || *n < 1 || *n > 1000000 || *i < 1 || *i > *n)
+        throw Error(source, field, "I/N with 1 <= I <= N", text);
     return {static_cast<int>(*i), static_cast<int>(*n)};
 }
 

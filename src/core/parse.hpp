@@ -11,15 +11,16 @@
 
 namespace t2imu {
 
-std::optional<double> parse_number(const std::string& text);   // nan and inf included
-std::optional<double> parse_finite(const std::string& text);   // nan and inf refused
+std::optional<double> parse_number(const std::string& text);  // nan and inf included
+std::optional<double> parse_finite(const std::string& text);  // nan and inf refused
 std::optional<long long> parse_integer(const std::string& text);
 
 // A finite number; Error(source, field, expected, text) otherwise.
 double finite_number(const std::string& text, const std::string& source, const std::string& field,
                      const std::string& expected = "a number");
 // An integer from `low` to `high`; Error(source, field, "a whole number from low to high", text) otherwise.
-long long integer_in(const std::string& text, long long low, long long high, const std::string& source, const std::string& field);
+long long integer_in(const std::string& text, long long low, long long high, const std::string& source,
+                     const std::string& field);
 
 // Whether `path` ends with `suffix` (".toml", "_joints.npy"): how options tell a file from a preset name.
 bool ends_with(const std::string& path, const std::string& suffix);

@@ -26,7 +26,8 @@ public:
     size_t done() const { return done_; }
 
     // "label: 3/10 jobs, 1.5/s, 2 s, ETA 5 s" for the given state; what is drawn.
-    static std::string line(const std::string& label, size_t done, size_t total, const std::string& unit, double seconds);
+    static std::string line(const std::string& label, size_t done, size_t total, const std::string& unit,
+                            double seconds);
 
 private:
     void draw(bool final);

@@ -13,9 +13,11 @@ namespace {
 
 constexpr uint64_t kMaxHeader = 100000000;  // bytes: the reference (Rust) implementation's MAX_HEADER_SIZE
 
-const struct { const char* name; DType dtype; } kDtypes[] = {
-    {"F16", DType::f16}, {"BF16", DType::bf16}, {"F32", DType::f32}, {"F64", DType::f64},
-    {"I64", DType::i64}, {"I32", DType::i32},   {"U8", DType::u8},   {"BOOL", DType::boolean}};
+const struct {
+    const char* name;
+    DType dtype;
+} kDtypes[] = {{"F16", DType::f16}, {"BF16", DType::bf16}, {"F32", DType::f32}, {"F64", DType::f64},
+               {"I64", DType::i64}, {"I32", DType::i32},   {"U8", DType::u8},   {"BOOL", DType::boolean}};
 
 DType parse_dtype(const std::string& s, const std::string& source, const std::string& key) {
     for (const auto& d : kDtypes)
@@ -67,7 +69,8 @@ SafeTensors parse_safetensors(const uint8_t* data, size_t size, const std::strin
             continue;
         }
         if (!v.is_object() || !v.contains("dtype") || !v.contains("shape") || !v.contains("data_offsets") ||
-            !v["dtype"].is_string() || !v["shape"].is_array() || !v["data_offsets"].is_array() || v["data_offsets"].size() != 2)
+            !v["dtype"].is_string() || !v["shape"].is_array() || !v["data_offsets"].is_array() ||
+            v["data_offsets"].size() != 2)
             throw Error(source, key, "{dtype, shape, data_offsets: [begin, end]}");
         NdArray a;
         a.dtype = parse_dtype(v["dtype"].get<std::string>(), source, key);
@@ -77,7 +80,8 @@ SafeTensors parse_safetensors(const uint8_t* data, size_t size, const std::strin
         for (const auto& d : v["shape"]) {
             if (!d.is_number_unsigned()) throw Error(source, key + ".shape", "non-negative integers");
             const uint64_t dim = d.get<uint64_t>();
-            if (dim == 0) empty = true;
+            if (dim == 0)
+                empty = true;
             else if (__builtin_mul_overflow(nonzero, dim, &nonzero) || nonzero > (uint64_t(1) << 58))
                 throw Error(source, key + ".shape", "a size that fits in memory");
             a.shape.push_back(static_cast<int64_t>(dim));
@@ -91,22 +95,26 @@ SafeTensors parse_safetensors(const uint8_t* data, size_t size, const std::strin
             throw Error(source, key + ".data_offsets", "0 <= begin <= end <= " + std::to_string(body_size),
                         "[" + std::to_string(begin) + ", " + std::to_string(end) + "]");
         if (end - begin != count * dtype_size(a.dtype))
-            throw Error(source, key + ".data_offsets", std::to_string(count * dtype_size(a.dtype)) + " bytes for " +
-                        a.shape_str() + " " + dtype_tag(a.dtype), std::to_string(end - begin));
+            throw Error(
+                source, key + ".data_offsets",
+                std::to_string(count * dtype_size(a.dtype)) + " bytes for " + a.shape_str() + " " + dtype_tag(a.dtype),
+                std::to_string(end - begin));
         a.bytes.assign(body + begin, body + end);
         spans.push_back({begin, end, key});
         st.tensors[key] = std::move(a);
     }
     // The tensors must tile the data exactly: no overlaps, no gaps, nothing after the last one.
-    std::sort(spans.begin(), spans.end(), [](const Span& a, const Span& b) { return a.begin < b.begin || (a.begin == b.begin && a.end < b.end); });
+    std::sort(spans.begin(), spans.end(),
+              [](const Span& a, const Span& b) { return a.begin < b.begin || (a.begin == b.begin && a.end < b.end); });
     uint64_t at = 0;
     for (const Span& s : spans) {
         if (s.begin != at)
-            throw Error(source, s.name + ".data_offsets", "to start at byte " + std::to_string(at) + " (no gaps or overlaps)",
-                        std::to_string(s.begin));
+            throw Error(source, s.name + ".data_offsets",
+                        "to start at byte " + std::to_string(at) + " (no gaps or overlaps)", std::to_string(s.begin));
         at = s.end;
     }
-    if (at != body_size) throw Error(source, "data", std::to_string(at) + " bytes covered by tensors", std::to_string(body_size));
+    if (at != body_size)
+        throw Error(source, "data", std::to_string(at) + " bytes covered by tensors", std::to_string(body_size));
     return st;
 }
 
@@ -122,7 +130,8 @@ std::vector<uint8_t> serialize_safetensors(const SafeTensors& st) {
     for (const auto& [name, a] : st.tensors) {  // std::map: name order
         if (name == "__metadata__") throw Error(name, "tensor name", "a name other than __metadata__");
         if (static_cast<size_t>(a.size()) * dtype_size(a.dtype) != a.bytes.size())
-            throw Error(name, "bytes", std::to_string(a.size() * static_cast<int64_t>(dtype_size(a.dtype))), std::to_string(a.bytes.size()));
+            throw Error(name, "bytes", std::to_string(a.size() * static_cast<int64_t>(dtype_size(a.dtype))),
+                        std::to_string(a.bytes.size()));
         h[name] = {{"dtype", dtype_tag(a.dtype)}, {"shape", a.shape}, {"data_offsets", {at, at + a.bytes.size()}}};
         at += a.bytes.size();
     }
@@ -134,7 +143,8 @@ std::vector<uint8_t> serialize_safetensors(const SafeTensors& st) {
     }
     header.append((8 - header.size() % 8) % 8, ' ');  // 8-byte alignment of the data, as the reference writes
     std::vector<uint8_t> out(8 + header.size() + at);
-    for (size_t k = 0; k < 8; ++k) out[k] = static_cast<uint8_t>((static_cast<uint64_t>(header.size()) >> (8 * k)) & 0xff);
+    for (size_t k = 0; k < 8; ++k)
+        out[k] = static_cast<uint8_t>((static_cast<uint64_t>(header.size()) >> (8 * k)) & 0xff);
     std::memcpy(out.data() + 8, header.data(), header.size());
     size_t pos = 8 + header.size();
     for (const auto& [name, a] : st.tensors) {

@@ -19,7 +19,7 @@ struct SafeTensors {
 
 SafeTensors parse_safetensors(const uint8_t* data, size_t size, const std::string& source);
 SafeTensors read_safetensors(const std::string& path);
-std::vector<uint8_t> serialize_safetensors(const SafeTensors& st);  // tensors in name order, 8-byte aligned header
+std::vector<uint8_t> serialize_safetensors(const SafeTensors& st);       // tensors in name order, 8-byte aligned header
 void write_safetensors(const std::string& path, const SafeTensors& st);  // atomic
 
 }  // namespace t2imu

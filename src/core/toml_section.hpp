@@ -1,11 +1,11 @@
 // Strict reading of TOML configuration files (toml++): a key nobody reads is an error, so a typo in a config
 // is refused with its name instead of silently leaving a default in place.
 #pragma once
+#include <toml++/toml.h>
 #include <optional>
 #include <set>
-#include <type_traits>
 #include <string>
-#include <toml++/toml.h>
+#include <type_traits>
 #include <vector>
 
 #include "core/error.hpp"
@@ -25,18 +25,24 @@ public:
     // Leaves `value` unchanged when the key is absent; throws when it holds another type. An integer field takes
     // only a TOML integer: toml++ would convert a float such as 4.9e47 to an integer out of range (undefined
     // behaviour, found by fuzz/fuzz_sensor_toml).
-    template <class T> void read(const char* key, T& value) {
+    template <class T>
+    void read(const char* key, T& value) {
         read_keys_.insert(key);
         const toml::node* n = table_.get(key);
         if (!n) return;
         constexpr bool integer = std::is_integral_v<T> && !std::is_same_v<T, bool>;
         const auto v = integer && !n->is_integer() ? std::optional<T>() : n->value<T>();
-        if (!v) throw Error(path_, field(key), integer ? "an integer" : std::is_same_v<T, bool> ? "true or false"
-                                              : std::is_floating_point_v<T> ? "a number" : "a string");
+        if (!v)
+            throw Error(path_, field(key),
+                        integer                       ? "an integer"
+                        : std::is_same_v<T, bool>     ? "true or false"
+                        : std::is_floating_point_v<T> ? "a number"
+                                                      : "a string");
         value = *v;
     }
     void read(const char* key, std::vector<std::string>& values);  // an array of strings
-    template <class T> void require(const char* key, T& value) {
+    template <class T>
+    void require(const char* key, T& value) {
         if (!table_.get(key)) throw Error(path_, field(key), "a value (required)");
         read(key, value);
     }

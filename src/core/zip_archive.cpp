@@ -43,7 +43,8 @@ ZipMembers parse_zip(const uint8_t* data, size_t size, const std::string& source
         // archive's bytes: refuse larger claims before allocating, so a forged header cannot ask for gigabytes.
         if (st.size > 1100 * static_cast<zip_uint64_t>(size) + 4096)
             throw Error(source, name, "a size the archive can hold", std::to_string(st.size) + " bytes claimed");
-        std::unique_ptr<zip_file_t, decltype(&zip_fclose)> f(zip_fopen_index(z.get(), static_cast<zip_uint64_t>(i), 0), &zip_fclose);
+        std::unique_ptr<zip_file_t, decltype(&zip_fclose)> f(zip_fopen_index(z.get(), static_cast<zip_uint64_t>(i), 0),
+                                                             &zip_fclose);
         if (!f) throw Error(source, name, "a member that can be opened", zip_strerror(z.get()));
         std::vector<uint8_t> bytes(static_cast<size_t>(st.size));
         const zip_int64_t got = bytes.empty() ? 0 : zip_fread(f.get(), bytes.data(), st.size);

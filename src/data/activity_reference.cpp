@@ -25,7 +25,8 @@ std::vector<ActivityExample> activity_examples(const std::string& dir) {
         // Subject names repeat across sources ("1" in two of them): qualify them by source, a derived clip's by
         // its source clip's, so that leaving a person out leaves out what was derived from them too.
         const bool derived = provenance < row.size() && !row[provenance].empty();
-        const std::string dataset = derived ? nlohmann::json::parse(row[provenance]).value("source_dataset", row[source]) : row[source];
+        const std::string dataset =
+            derived ? nlohmann::json::parse(row[provenance]).value("source_dataset", row[source]) : row[source];
         out.push_back({tag, dataset + ":" + row[subject], describe_motion(joints)});
     }
     if (out.empty()) throw Error(dir + "/clips.csv", "activity_tags", "clips with one activity tag");

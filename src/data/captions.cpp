@@ -58,7 +58,8 @@ static std::string with_case_of(const std::string& word, const std::string& mode
     const bool all_upper = model.size() > 1 && std::isupper(static_cast<unsigned char>(model[1]));
     for (size_t i = 0; i < out.size(); ++i) {
         const bool upper = i == 0 ? std::isupper(static_cast<unsigned char>(model[0])) : all_upper;
-        out[i] = static_cast<char>(upper ? std::toupper(static_cast<unsigned char>(out[i])) : std::tolower(static_cast<unsigned char>(out[i])));
+        out[i] = static_cast<char>(upper ? std::toupper(static_cast<unsigned char>(out[i]))
+                                         : std::tolower(static_cast<unsigned char>(out[i])));
     }
     return out;
 }
@@ -67,15 +68,21 @@ std::string swap_left_right(const std::string& caption) {
     std::string out;
     size_t i = 0;
     while (i < caption.size()) {
-        if (!std::isalpha(static_cast<unsigned char>(caption[i]))) { out += caption[i++]; continue; }
+        if (!std::isalpha(static_cast<unsigned char>(caption[i]))) {
+            out += caption[i++];
+            continue;
+        }
         size_t j = i;
         while (j < caption.size() && std::isalpha(static_cast<unsigned char>(caption[j]))) ++j;
         const std::string word = caption.substr(i, j - i);
         std::string lower = word;
         for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        if (lower == "left") out += with_case_of("right", word);
-        else if (lower == "right") out += with_case_of("left", word);
-        else out += word;
+        if (lower == "left")
+            out += with_case_of("right", word);
+        else if (lower == "right")
+            out += with_case_of("left", word);
+        else
+            out += word;
         i = j;
     }
     return out;

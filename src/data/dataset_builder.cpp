@@ -52,7 +52,10 @@ std::string split_key(const ClipSource& c) {
         const std::string stem = fs::path(c.file).stem().string();
         std::vector<std::string> parts;
         size_t a = 0, b;
-        while ((b = stem.find('_', a)) != std::string::npos) { parts.push_back(stem.substr(a, b - a)); a = b + 1; }
+        while ((b = stem.find('_', a)) != std::string::npos) {
+            parts.push_back(stem.substr(a, b - a));
+            a = b + 1;
+        }
         if (parts.size() >= 3) key += "/" + parts[2];
     }
     return key;
@@ -80,7 +83,8 @@ std::map<std::string, ClipSource> read_sources(const BuildOptions& o) {
         c.file = field(captions, r, "file");
         if (c.subject.empty()) c.subject = field(captions, r, "subject");
         if (c.licence.empty()) c.licence = field(captions, r, "licence");
-        if (c.source_dataset.empty()) c.source_dataset = field(captions, r, "source").empty() ? "user" : field(captions, r, "source");
+        if (c.source_dataset.empty())
+            c.source_dataset = field(captions, r, "source").empty() ? "user" : field(captions, r, "source");
         const std::string caption_licence = field(captions, r, "licence");
         if (!o.licences.empty() && caption_licence.rfind("KIT-ML", 0) == 0 && !o.licences.count("KIT-ML")) continue;
         CaptionLine line;
@@ -143,11 +147,17 @@ std::vector<CaptionLine> captions_for_chunk(const ClipSource& c, int begin, int 
     constexpr int kMinOverlap = static_cast<int>(2 * kFps);
     for (const auto& [range, line] : c.captions) {
         const int s = std::max(range.first, 0), e = std::min(range.second, frames);
-        if (s <= 0 && e >= frames) { out.push_back(line); continue; }  // the whole clip
+        if (s <= 0 && e >= frames) {
+            out.push_back(line);
+            continue;
+        }  // the whole clip
         const int os = std::max(s, begin), oe = std::min(e, end);
         if (oe - os < kMinOverlap) continue;
         CaptionLine l = line;
-        if (!(os == begin && oe == end)) { l.start_s = (os - begin) / kFps; l.end_s = (oe - begin) / kFps; }
+        if (!(os == begin && oe == end)) {
+            l.start_s = (os - begin) / kFps;
+            l.end_s = (oe - begin) / kFps;
+        }
         out.push_back(l);
     }
     return out;
@@ -178,7 +188,8 @@ void BuildOptions::validate() const {
     if (!(std::floor(max_seconds * kFps + 1e-9) >= 40 && max_seconds <= 3600))
         throw Error("data build", "--max-seconds", "2 s (40 frames) to 3600 s", std::to_string(max_seconds));
     if (!(max_seconds_per_file >= 0 && max_seconds_per_file <= 86400))
-        throw Error("data build", "--max-seconds-per-file", "0 (no cap) to 86400 s", std::to_string(max_seconds_per_file));
+        throw Error("data build", "--max-seconds-per-file", "0 (no cap) to 86400 s",
+                    std::to_string(max_seconds_per_file));
     if (derived_kinds.lying_turns && !derive)
         throw Error("data build", "--lying-turns", "the derived clips it is one of (not with --no-derived)");
     if (derived_kinds.lie_down_rests && !derive)
@@ -186,7 +197,8 @@ void BuildOptions::validate() const {
     if (derived_kinds.turning_walks && !derive)
         throw Error("data build", "--turning-walks", "the derived clips it is one of (not with --no-derived)");
     if (measured_captions < 0 || measured_captions > 20)
-        throw Error("data build", "--measured-captions", "0 (none) to 20 captions per clip", std::to_string(measured_captions));
+        throw Error("data build", "--measured-captions", "0 (none) to 20 captions per clip",
+                    std::to_string(measured_captions));
     if (derived_kinds.stairs_round_trips && !derive)
         throw Error("data build", "--stairs-round-trips", "the derived clips it is one of (not with --no-derived)");
 }
@@ -220,11 +232,24 @@ struct Tally {
     std::map<std::string, TagTally> per_tag;  // by single tag ("jumping;standing" counts for both)
     int next_id = 0;
     double capture_minutes = 0;  // of the capture-rate copies
-    CsvTable captions_csv{"captions.csv", {"id", "caption", "source"}, {}};  // every caption line written, and its source
+    CsvTable captions_csv{
+        "captions.csv", {"id", "caption", "source"}, {}};  // every caption line written, and its source
     int measured_captions = 0;
     Tally() {
-        clips_csv.header = {"id", "file", "source_dataset", "subject", "licence", "activity_tags", "start_frame", "end_frame",
-                            "frames", "mirrored", "provenance", "capture_fps", "capture_start_s", "split"};  // "split" holds the split key until the deal
+        clips_csv.header = {"id",
+                            "file",
+                            "source_dataset",
+                            "subject",
+                            "licence",
+                            "activity_tags",
+                            "start_frame",
+                            "end_frame",
+                            "frames",
+                            "mirrored",
+                            "provenance",
+                            "capture_fps",
+                            "capture_start_s",
+                            "split"};  // "split" holds the split key until the deal
     }
 };
 
@@ -242,8 +267,12 @@ ClipSource derived_source(const ClipSource& captured, const DerivedClip& d, int 
         line.caption = caption;
         c.captions.push_back({{0, frames}, line});
     }
-    c.provenance = {{"derived_from", captured.file}, {"source_dataset", captured.source_dataset}, {"method", d.method},
-                    {"parameters", d.parameters}, {"seed", d.seed}, {"made_at_fps", d.joints.fps}};
+    c.provenance = {{"derived_from", captured.file},
+                    {"source_dataset", captured.source_dataset},
+                    {"method", d.method},
+                    {"parameters", d.parameters},
+                    {"seed", d.seed},
+                    {"made_at_fps", d.joints.fps}};
     return c;
 }
 
@@ -251,7 +280,8 @@ ClipSource derived_source(const ClipSource& captured, const DerivedClip& d, int 
 // end - 2: features hold one frame fewer than the joints), from the captured frame at or before `begin`, mirrored
 // when the chunk is, placed as process_file places the chunk (`clip`, its 20 fps frames as written); and that first
 // frame's time after the chunk's, s.
-std::pair<JointSequence, double> capture_span(const JointSequence& capture, const JointSequence& clip, int begin, int end, bool mirror) {
+std::pair<JointSequence, double> capture_span(const JointSequence& capture, const JointSequence& clip, int begin,
+                                              int end, bool mirror) {
     const double r = capture.fps;
     const int first = static_cast<int>(std::floor(begin / kFps * r + 1e-6));
     const int last = std::min(capture.num_frames - 1, static_cast<int>(std::ceil((end - 2) / kFps * r - 1e-6)));
@@ -260,7 +290,8 @@ std::pair<JointSequence, double> capture_span(const JointSequence& capture, cons
 }
 
 // Captions measured from a clip's motion (measured_captions.hpp), seeded by its id so a rebuild writes the same.
-std::vector<std::string> measured_for(const BuildOptions& o, const JointSequence& clip, const std::string& tags, const std::string& id) {
+std::vector<std::string> measured_for(const BuildOptions& o, const JointSequence& clip, const std::string& tags,
+                                      const std::string& id) {
     if (o.measured_captions == 0 || clip.num_frames < 3) return {};
     return measured_captions(measure_attributes(clip, id), tags, o.measured_captions, fnv1a64(id));
 }
@@ -268,8 +299,8 @@ std::vector<std::string> measured_for(const BuildOptions& o, const JointSequence
 // Cuts one recording into chunks (at most chunks_per_file of them, 0 = all) and writes each, and its mirror;
 // with `capture` (the recording at its capture rate), each chunk's capture-rate copy too.
 void write_recording(const BuildOptions& o, const std::string& tmp, const ClipSource& c, const std::string& key,
-                     const JointSequence& joints, const JointSequence* capture, int max_frames, size_t chunks_per_file, Tally& tally,
-                     BuildSummary& summary) {
+                     const JointSequence& joints, const JointSequence* capture, int max_frames, size_t chunks_per_file,
+                     Tally& tally, BuildSummary& summary) {
     for (const auto& [begin, end] : spread(chunks(joints.num_frames, max_frames), chunks_per_file)) {
         const std::vector<CaptionLine> captions = captions_for_chunk(c, begin, end, joints.num_frames);
         if (captions.empty() || end - begin < 2) continue;
@@ -284,7 +315,8 @@ void write_recording(const BuildOptions& o, const std::string& tmp, const ClipSo
                 for (CaptionLine& l : lines) l.caption = swap_left_right(l.caption);
             Written w{clip_id, key, {}};
             const JointSequence clip = mirror ? mirrored(part) : part;
-            for (const CaptionLine& l : lines) tally.captions_csv.rows.push_back({clip_id, l.caption, c.provenance.is_null() ? "human" : "edited"});
+            for (const CaptionLine& l : lines)
+                tally.captions_csv.rows.push_back({clip_id, l.caption, c.provenance.is_null() ? "human" : "edited"});
             for (const std::string& caption : measured_for(o, clip, c.tags, clip_id)) {
                 lines.push_back(CaptionLine{caption, "", 0, 0});
                 tally.captions_csv.rows.push_back({clip_id, caption, "measured"});
@@ -309,9 +341,10 @@ void write_recording(const BuildOptions& o, const std::string& tmp, const ClipSo
                 t.minutes += minutes;
                 if (c.provenance.is_null()) t.captured_minutes += minutes;
             }
-            tally.clips_csv.rows.push_back({clip_id, c.file, c.source_dataset, c.subject, c.licence, c.tags, std::to_string(begin),
-                                            std::to_string(end), std::to_string(w.features.rows()), mirror ? "1" : "0",
-                                            c.provenance.is_null() ? "" : c.provenance.dump(), capture_fps, capture_start, key});
+            tally.clips_csv.rows.push_back(
+                {clip_id, c.file, c.source_dataset, c.subject, c.licence, c.tags, std::to_string(begin),
+                 std::to_string(end), std::to_string(w.features.rows()), mirror ? "1" : "0",
+                 c.provenance.is_null() ? "" : c.provenance.dump(), capture_fps, capture_start, key});
             tally.written.push_back(std::move(w));
         }
     }
@@ -324,7 +357,8 @@ nlohmann::json train_draw_share(const CsvTable& clips) {
     std::map<std::string, double> count;
     double total = 0;
     for (const auto& row : clips.rows)
-        if (row[split] == "train" && Hml3dDataset::usable_length(static_cast<long>(integer_in(row[frames], 0, 1000000000, clips.source, "frames")))) {
+        if (row[split] == "train" && Hml3dDataset::usable_length(static_cast<long>(
+                                         integer_in(row[frames], 0, 1000000000, clips.source, "frames")))) {
             count[row[tags].empty() ? "untagged" : row[tags]] += 1;
             total += 1;
         }
@@ -338,9 +372,13 @@ namespace {
 BuildSummary build_into(const BuildOptions& o, const std::string& tmp) {
     const std::map<std::string, ClipSource> sources = read_sources(o);
     fs::remove_all(tmp);
-    for (const char* sub : {"new_joints", "new_joint_vecs", "texts", "capture_joints"}) fs::create_directories(tmp + "/" + sub);
+    for (const char* sub : {"new_joints", "new_joint_vecs", "texts", "capture_joints"})
+        fs::create_directories(tmp + "/" + sub);
     const int max_frames = static_cast<int>(std::floor(o.max_seconds * kFps + 1e-9));
-    const size_t chunks_per_file = o.max_seconds_per_file > 0 ? static_cast<size_t>(std::max(1.0, std::floor(o.max_seconds_per_file / o.max_seconds))) : 0;
+    const size_t chunks_per_file =
+        o.max_seconds_per_file > 0
+            ? static_cast<size_t>(std::max(1.0, std::floor(o.max_seconds_per_file / o.max_seconds)))
+            : 0;
 
     Tally tally;
     nlohmann::json skipped = nlohmann::json::array();
@@ -363,7 +401,8 @@ BuildSummary build_into(const BuildOptions& o, const std::string& tmp) {
             continue;
         }
         const std::string key = split_key(c);
-        write_recording(o, tmp, c, key, joints, capture ? &*capture : nullptr, max_frames, chunks_per_file, tally, summary);
+        write_recording(o, tmp, c, key, joints, capture ? &*capture : nullptr, max_frames, chunks_per_file, tally,
+                        summary);
         if (!o.derive) continue;
         // Derived at the capture rate where there is one; the dataset holds them at 20 fps, with the
         // capture-rate clip as their copy for the sensors.
@@ -389,10 +428,12 @@ BuildSummary build_into(const BuildOptions& o, const std::string& tmp) {
     }
     for (auto& row : clips_csv.rows) row.back() = split_name(splits.at(row.back()));
     const FeatureStats stats = compute_mean_std(all);
-    std::vector<float> mean(stats.mean.data(), stats.mean.data() + stats.mean.size()), std(stats.std.data(), stats.std.data() + stats.std.size());
+    std::vector<float> mean(stats.mean.data(), stats.mean.data() + stats.mean.size()),
+        std(stats.std.data(), stats.std.data() + stats.std.size());
     write_npy(tmp + "/Mean.npy", NdArray::from(mean, {static_cast<int64_t>(mean.size())}));
     write_npy(tmp + "/Std.npy", NdArray::from(std, {static_cast<int64_t>(std.size())}));
-    for (Split s : {Split::train, Split::val, Split::test}) write_file_atomic(tmp + "/" + split_name(s) + ".txt", lists[s]);
+    for (Split s : {Split::train, Split::val, Split::test})
+        write_file_atomic(tmp + "/" + split_name(s) + ".txt", lists[s]);
     write_file_atomic(tmp + "/all.txt", all_ids);
     write_csv(tmp + "/clips.csv", clips_csv);
     write_csv(tmp + "/captions.csv", tally.captions_csv);
@@ -405,12 +446,16 @@ BuildSummary build_into(const BuildOptions& o, const std::string& tmp) {
     j["mirrored"] = o.mirror;
     j["skipped_files"] = skipped;
     for (const auto& [tag, v] : tally.per_tag)
-        j["per_activity_tag"][tag] = {{"clips", v.clips}, {"minutes", v.minutes}, {"captured_minutes", v.captured_minutes},
+        j["per_activity_tag"][tag] = {{"clips", v.clips},
+                                      {"minutes", v.minutes},
+                                      {"captured_minutes", v.captured_minutes},
                                       {"derived_minutes", v.minutes - v.captured_minutes}};
-    j["derived"] = {{"included", o.derive}, {"lying_turns", o.derive && o.derived_kinds.lying_turns},
+    j["derived"] = {{"included", o.derive},
+                    {"lying_turns", o.derive && o.derived_kinds.lying_turns},
                     {"stairs_round_trips", o.derive && o.derived_kinds.stairs_round_trips},
                     {"lie_down_rests", o.derive && o.derived_kinds.lie_down_rests},
-                    {"turning_walks", o.derive && o.derived_kinds.turning_walks}, {"edits_refused", derive_report.refused},
+                    {"turning_walks", o.derive && o.derived_kinds.turning_walks},
+                    {"edits_refused", derive_report.refused},
                     {"failed_quality", derive_report.failed_quality}};
     j["train_draw_share"] = train_draw_share(clips_csv);
     j["capture_rate"] = {{"included", o.capture_rate}, {"minutes", tally.capture_minutes}};

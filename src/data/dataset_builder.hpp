@@ -9,11 +9,13 @@
 //                          placed as new_joints (place_like_process_file), from the captured frame at or before the
 //                          clip's first: what the virtual sensors see of a retrieved clip (motion_source.hpp). A clip
 //                          derived from such a recording is made at its rate and has its copy too.
-//   clips.csv              id, file, source_dataset, subject, licence, activity_tags, start/end frame, frames, mirrored,
-//                          provenance (JSON of a derived clip: source file, method, parameters, seed; empty if captured),
-//                          capture_fps and capture_start_s (the copy's rate and its first frame's time after the clip's
-//                          first, s, in (-1/capture_fps, 0]; empty without a copy), split
-//   captions.csv           id, caption, source: every caption line of texts/, from the captured clip's captions ("human"), a
+//   clips.csv              id, file, source_dataset, subject, licence, activity_tags, start/end frame, frames,
+//   mirrored,
+//                          provenance (JSON of a derived clip: source file, method, parameters, seed; empty if
+//                          captured), capture_fps and capture_start_s (the copy's rate and its first frame's time after
+//                          the clip's first, s, in (-1/capture_fps, 0]; empty without a copy), split
+//   captions.csv           id, caption, source: every caption line of texts/, from the captured clip's captions
+//   ("human"), a
 //                          derived clip's edit ("edited") or its measured motion ("measured", measured_captions.hpp)
 //   summary.json           clips, minutes, captions, per activity tag (captured and derived minutes), each tag's share
 //                          of the training draws, derived clips refused or failing quality, skipped files and why
@@ -22,9 +24,9 @@
 // file,start_frame,end_frame,caption; optional tokens, licence, subject, source; frames at 20 fps, end exclusive),
 // and optionally a manifest.csv (file, subject, source_dataset, licence, activity_tags) as the shared set has.
 // Clips longer than max_seconds are cut into equal consecutive chunks no longer than that (HumanML3D's clips
-// are at most 10 s), of which at most max_seconds_per_file worth are kept; a whole-clip caption goes with every chunk, a segment caption with the chunks it overlaps
-// by at least 2 s, its times made relative to the chunk. The set is built in a temporary folder and renamed into
-// place when complete.
+// are at most 10 s), of which at most max_seconds_per_file worth are kept; a whole-clip caption goes with every chunk,
+// a segment caption with the chunks it overlaps by at least 2 s, its times made relative to the chunk. The set is built
+// in a temporary folder and renamed into place when complete.
 #pragma once
 #include <nlohmann/json.hpp>
 #include <set>

@@ -52,41 +52,56 @@ std::vector<std::string> pick_captions(const std::vector<std::string>& pool, std
 
 const std::vector<std::string>& captions_for(const std::string& method) {
     static const std::vector<std::string> up = {
-        "a person walks up a flight of stairs", "someone climbs the stairs step by step", "a person goes upstairs at a steady pace",
-        "the person ascends a staircase", "a man walks up the steps one at a time", "someone walks upstairs"};
+        "a person walks up a flight of stairs",    "someone climbs the stairs step by step",
+        "a person goes upstairs at a steady pace", "the person ascends a staircase",
+        "a man walks up the steps one at a time",  "someone walks upstairs"};
     static const std::vector<std::string> down = {
-        "a person walks down a flight of stairs", "someone descends the stairs step by step", "a person goes downstairs at a steady pace",
-        "the person descends a staircase", "a man walks down the steps one at a time", "someone walks downstairs"};
+        "a person walks down a flight of stairs",    "someone descends the stairs step by step",
+        "a person goes downstairs at a steady pace", "the person descends a staircase",
+        "a man walks down the steps one at a time",  "someone walks downstairs"};
     static const std::vector<std::string> round_trip = {
-        "a person climbs a flight of stairs and then descends a flight", "someone walks upstairs and then downstairs",
+        "a person climbs a flight of stairs and then descends a flight",
+        "someone walks upstairs and then downstairs",
         "the person goes up some steps, over the landing and down the steps on the other side",
-        "a person ascends a staircase, then walks down again", "a man walks up the steps and then down another set of steps",
+        "a person ascends a staircase, then walks down again",
+        "a man walks up the steps and then down another set of steps",
         "someone climbs up a few stairs and then goes down them"};
     static const std::vector<std::string> sit = {
-        "a person sits down on a chair, stays seated for a moment and stands up again", "someone takes a seat on a chair and then gets up",
-        "a person stands, sits down on a chair and rises again", "the person sits on a chair for a few seconds, then stands up",
-        "someone lowers themselves onto a chair, rests, and stands back up", "a person is sitting on a chair and then stands up"};
-    static const std::vector<std::string> lie = {
-        "a person lies still on the floor, breathing quietly", "someone is lying on the ground and resting",
-        "a person lies on the floor without moving", "the person rests lying down", "someone lies motionless on the floor",
-        "a person is lying down, breathing calmly"};
+        "a person sits down on a chair, stays seated for a moment and stands up again",
+        "someone takes a seat on a chair and then gets up",
+        "a person stands, sits down on a chair and rises again",
+        "the person sits on a chair for a few seconds, then stands up",
+        "someone lowers themselves onto a chair, rests, and stands back up",
+        "a person is sitting on a chair and then stands up"};
+    static const std::vector<std::string> lie = {"a person lies still on the floor, breathing quietly",
+                                                 "someone is lying on the ground and resting",
+                                                 "a person lies on the floor without moving",
+                                                 "the person rests lying down",
+                                                 "someone lies motionless on the floor",
+                                                 "a person is lying down, breathing calmly"};
     // Rewritten without "down", "ground" and "lowers" (experiments/lie-down-recap.toml), the fine-tuning drew stairs
     // down and jumping no better and lay down less (docs/results.md): these words are not what costs those classes.
-    static const std::vector<std::string> lie_down = {
-        "a person lies down on the floor and rests there", "someone lies down on their back and stays lying",
-        "the person gets down onto the floor and lies on their back", "a person lowers themselves to the ground and lies still",
-        "someone lies down and rests for a while", "a man lies down on the ground and stays there"};
-    static const std::vector<std::string> turn = {
-        "a person lying on the floor rolls onto their side and back again", "someone lying on their back turns onto their side, then back",
-        "the person lies on the floor and turns over to one side", "a person lying down rolls to the side and then onto their back",
-        "someone turns from their back onto their side while lying down", "a person lying on the ground turns over onto one side and back"};
+    static const std::vector<std::string> lie_down = {"a person lies down on the floor and rests there",
+                                                      "someone lies down on their back and stays lying",
+                                                      "the person gets down onto the floor and lies on their back",
+                                                      "a person lowers themselves to the ground and lies still",
+                                                      "someone lies down and rests for a while",
+                                                      "a man lies down on the ground and stays there"};
+    static const std::vector<std::string> turn = {"a person lying on the floor rolls onto their side and back again",
+                                                  "someone lying on their back turns onto their side, then back",
+                                                  "the person lies on the floor and turns over to one side",
+                                                  "a person lying down rolls to the side and then onto their back",
+                                                  "someone turns from their back onto their side while lying down",
+                                                  "a person lying on the ground turns over onto one side and back"};
     static const std::vector<std::string> jump = {
-        "a person jumps", "someone jumps up and lands again", "a person jumps off the ground with both feet",
+        "a person jumps",          "someone jumps up and lands again",  "a person jumps off the ground with both feet",
         "the person makes a jump", "a man jumps and lands on his feet", "someone is jumping"};
-    static const std::vector<std::string> series = {
-        "a person jumps several times in a row", "someone keeps jumping, landing and taking off again",
-        "a person makes one jump after another", "the person jumps again and again", "a man does repeated jumps",
-        "someone jumps over and over with both feet"};
+    static const std::vector<std::string> series = {"a person jumps several times in a row",
+                                                    "someone keeps jumping, landing and taking off again",
+                                                    "a person makes one jump after another",
+                                                    "the person jumps again and again",
+                                                    "a man does repeated jumps",
+                                                    "someone jumps over and over with both feet"};
     if (method == "jump_rescaled") return jump;
     if (method == "jump_series") return series;
     if (method == "lying_turn") return turn;
@@ -95,7 +110,9 @@ const std::vector<std::string>& captions_for(const std::string& method) {
     return method == "stairs_up" ? up : method == "stairs_down" ? down : method == "lying_still" ? lie : sit;
 }
 
-double uniform(std::mt19937_64& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+double uniform(std::mt19937_64& rng, double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(rng);
+}
 
 // Scored as the dataset will hold it and as synth scores a draw: on the floor (HumanML3D's processing puts the
 // floor at the lowest joint; place_on_floor does the same).
@@ -105,9 +122,12 @@ bool passes(JointSequence m) {
 }
 
 // What the quality thresholds were set on and the dataset holds: the motion at 20 fps.
-JointSequence at_dataset_rate(const JointSequence& m) { return m.fps == smpl22::kFps ? m : resample_joints(m, smpl22::kFps); }
+JointSequence at_dataset_rate(const JointSequence& m) {
+    return m.fps == smpl22::kFps ? m : resample_joints(m, smpl22::kFps);
+}
 
-void derive_stairs_clip(const JointSequence& walk, const std::string& file, DeriveReport& report, std::vector<DerivedClip>& out) {
+void derive_stairs_clip(const JointSequence& walk, const std::string& file, DeriveReport& report,
+                        std::vector<DerivedClip>& out) {
     const uint64_t seed = file_seed(file);
     std::mt19937_64 rng(seed);
     const bool ascend = seed % 2 == 0;
@@ -134,8 +154,13 @@ void derive_stairs_clip(const JointSequence& walk, const std::string& file, Deri
     c.activity = c.method;
     c.joints = std::move(m.motion);
     c.joints_20fps = std::move(at_20);
-    c.parameters = {{"rise_m", o.rise_m}, {"going_m", o.going_m}, {"ascend", o.ascend}, {"trunk_lean_rad", o.trunk_lean_rad},
-                    {"cadence_factor", o.cadence_factor}, {"swing_clearance_m", o.swing_clearance_m}, {"steps", steps}};
+    c.parameters = {{"rise_m", o.rise_m},
+                    {"going_m", o.going_m},
+                    {"ascend", o.ascend},
+                    {"trunk_lean_rad", o.trunk_lean_rad},
+                    {"cadence_factor", o.cadence_factor},
+                    {"swing_clearance_m", o.swing_clearance_m},
+                    {"steps", steps}};
     c.seed = seed;
     c.captions = pick_captions(captions_for(c.method), rng);
     out.push_back(std::move(c));
@@ -143,7 +168,8 @@ void derive_stairs_clip(const JointSequence& walk, const std::string& file, Deri
 
 // Up a flight and down the next (gait_splice.hpp), both derived from one walk on stairs of one rise and going, each
 // at its direction's pace and lean; cut to the longest clip the training keeps around the splice.
-void derive_stairs_round_trip(const JointSequence& walk, const std::string& file, DeriveReport& report, std::vector<DerivedClip>& out) {
+void derive_stairs_round_trip(const JointSequence& walk, const std::string& file, DeriveReport& report,
+                              std::vector<DerivedClip>& out) {
     const uint64_t seed = file_seed(file) + 2;  // its own stream: the single flights stay as they were
     std::mt19937_64 rng(seed);
     const double rise = uniform(rng, 0.15, 0.19), going = uniform(rng, 0.25, 0.32);
@@ -176,9 +202,15 @@ void derive_stairs_round_trip(const JointSequence& walk, const std::string& file
     // "stairs", either direction (activity_names.hpp), not both directions' tags: filed under stairs_down too, its
     // captions were 4 of the 12 a "down the stairs" prompt's caption anchor chose from, and such prompts drew climbs.
     c.activity = "stairs";
-    c.parameters = {{"rise_m", rise}, {"going_m", going}, {"cadence_factor_up", o[0].cadence_factor}, {"cadence_factor_down", o[1].cadence_factor},
-                    {"trunk_lean_rad_up", o[0].trunk_lean_rad}, {"trunk_lean_rad_down", o[1].trunk_lean_rad},
-                    {"swing_clearance_m", o[0].swing_clearance_m}, {"blend_s", GaitSpliceOptions{}.blend_s}, {"seconds", seconds}};
+    c.parameters = {{"rise_m", rise},
+                    {"going_m", going},
+                    {"cadence_factor_up", o[0].cadence_factor},
+                    {"cadence_factor_down", o[1].cadence_factor},
+                    {"trunk_lean_rad_up", o[0].trunk_lean_rad},
+                    {"trunk_lean_rad_down", o[1].trunk_lean_rad},
+                    {"swing_clearance_m", o[0].swing_clearance_m},
+                    {"blend_s", GaitSpliceOptions{}.blend_s},
+                    {"seconds", seconds}};
     c.seed = seed;
     c.captions = pick_captions(captions_for(c.method), rng);
     out.push_back(std::move(c));
@@ -205,7 +237,8 @@ void fit_still_phases(ChairOptions& o) {
     o.stand_after_s *= room / still;
 }
 
-void derive_sit_clips(const JointSequence& standing, const std::string& file, DeriveReport& report, std::vector<DerivedClip>& out) {
+void derive_sit_clips(const JointSequence& standing, const std::string& file, DeriveReport& report,
+                      std::vector<DerivedClip>& out) {
     const uint64_t seed = file_seed(file);
     const double hip_height = hip_joint_height(standing);
     std::mt19937_64 rng(seed);
@@ -221,7 +254,10 @@ void derive_sit_clips(const JointSequence& standing, const std::string& file, De
         o.trunk_flexion_peak_rad = uniform(rng, 0.55, 0.85);
         fit_still_phases(o);
         const int frames = stand_sit_stand_frames(o, standing.fps);
-        if (frames > standing.num_frames) { ++report.refused; continue; }
+        if (frames > standing.num_frames) {
+            ++report.refused;
+            continue;
+        }
         // Window k of kSitsPerRecording spread evenly over the recording.
         const int begin = static_cast<int>((standing.num_frames - frames) * (2 * k + 1) / (2 * kSitsPerRecording));
         DerivedClip c;
@@ -232,12 +268,21 @@ void derive_sit_clips(const JointSequence& standing, const std::string& file, De
             continue;
         }
         c.joints_20fps = at_dataset_rate(c.joints);
-        if (!passes(c.joints_20fps)) { ++report.failed_quality; continue; }
+        if (!passes(c.joints_20fps)) {
+            ++report.failed_quality;
+            continue;
+        }
         c.method = "sit_down_stand_up";
         c.activity = "sitting";
-        c.parameters = {{"source_start_frame", begin}, {"seat_height_m", o.seat_height_m}, {"pelvis_above_seat_m", o.pelvis_above_seat_m},
-                        {"stand_before_s", o.stand_before_s}, {"sit_down_s", o.sit_down_s}, {"seated_s", o.seated_s},
-                        {"stand_up_s", o.stand_up_s}, {"stand_after_s", o.stand_after_s}, {"trunk_flexion_peak_rad", o.trunk_flexion_peak_rad},
+        c.parameters = {{"source_start_frame", begin},
+                        {"seat_height_m", o.seat_height_m},
+                        {"pelvis_above_seat_m", o.pelvis_above_seat_m},
+                        {"stand_before_s", o.stand_before_s},
+                        {"sit_down_s", o.sit_down_s},
+                        {"seated_s", o.seated_s},
+                        {"stand_up_s", o.stand_up_s},
+                        {"stand_after_s", o.stand_after_s},
+                        {"trunk_flexion_peak_rad", o.trunk_flexion_peak_rad},
                         {"pace_factor", pace_factor}};
         c.seed = seed + static_cast<uint64_t>(k);
         c.captions = pick_captions(captions_for(c.method), rng);
@@ -245,7 +290,8 @@ void derive_sit_clips(const JointSequence& standing, const std::string& file, De
     }
 }
 
-void derive_lying_clips(const JointSequence& lie_down, const std::string& file, DeriveReport& report, std::vector<DerivedClip>& out) {
+void derive_lying_clips(const JointSequence& lie_down, const std::string& file, DeriveReport& report,
+                        std::vector<DerivedClip>& out) {
     const uint64_t seed = file_seed(file);
     std::mt19937_64 rng(seed);
     for (int k = 0; k < kLyingPerRecording; ++k) {
@@ -261,7 +307,10 @@ void derive_lying_clips(const JointSequence& lie_down, const std::string& file, 
             return;
         }
         c.joints_20fps = at_dataset_rate(c.joints);
-        if (!passes(c.joints_20fps)) { ++report.failed_quality; continue; }
+        if (!passes(c.joints_20fps)) {
+            ++report.failed_quality;
+            continue;
+        }
         c.method = "lying_still";
         c.activity = "lying";
         c.parameters = {{"seconds", o.seconds}, {"breaths_per_min", o.breaths_per_min}, {"chest_rad", o.chest_rad}};
@@ -272,24 +321,33 @@ void derive_lying_clips(const JointSequence& lie_down, const std::string& file, 
 }
 
 // The captured lie-down and then its final pose held, breathing: one clip from standing to resting on the floor.
-void derive_lie_down_rest_clip(const JointSequence& lie_down, const std::string& file, DeriveReport& report, std::vector<DerivedClip>& out) {
+void derive_lie_down_rest_clip(const JointSequence& lie_down, const std::string& file, DeriveReport& report,
+                               std::vector<DerivedClip>& out) {
     std::mt19937_64 rng(file_seed(file) + 2);  // its own stream: the other lying clips stay as they were
     LyingOptions o;
     const double captured_s = (lie_down.num_frames - 1) / lie_down.fps;
-    o.seconds = std::min(uniform(rng, kLieDownRestMinSeconds, kLieDownRestMaxSeconds), kLieDownRestMaxClipSeconds - captured_s);
+    o.seconds =
+        std::min(uniform(rng, kLieDownRestMinSeconds, kLieDownRestMaxSeconds), kLieDownRestMaxClipSeconds - captured_s);
     o.breaths_per_min = uniform(rng, 12.0, 20.0);
     o.chest_rad = uniform(rng, 0.015, 0.025);
-    if (o.seconds < kLieDownRestMinSeconds) { ++report.refused; return; }  // the capture alone fills a training clip
+    if (o.seconds < kLieDownRestMinSeconds) {
+        ++report.refused;
+        return;
+    }  // the capture alone fills a training clip
     DerivedClip c;
     try {
         const JointSequence rest = lying_still(lie_down, o);
-        c.joints = concatenate_frames(lie_down, slice_frames(rest, 1, rest.num_frames));  // rest's frame 0 is the capture's last
+        c.joints = concatenate_frames(lie_down,
+                                      slice_frames(rest, 1, rest.num_frames));  // rest's frame 0 is the capture's last
     } catch (const Error&) {
         ++report.refused;  // the clip does not end lying
         return;
     }
     c.joints_20fps = at_dataset_rate(c.joints);
-    if (!passes(c.joints_20fps)) { ++report.failed_quality; return; }
+    if (!passes(c.joints_20fps)) {
+        ++report.failed_quality;
+        return;
+    }
     c.method = "lie_down_rest";
     c.activity = "lying";
     c.parameters = {{"rest_seconds", o.seconds}, {"breaths_per_min", o.breaths_per_min}, {"chest_rad", o.chest_rad}};
@@ -298,7 +356,8 @@ void derive_lie_down_rest_clip(const JointSequence& lie_down, const std::string&
     out.push_back(std::move(c));
 }
 
-void derive_lying_turn_clips(const JointSequence& lie_down, const std::string& file, DeriveReport& report, std::vector<DerivedClip>& out) {
+void derive_lying_turn_clips(const JointSequence& lie_down, const std::string& file, DeriveReport& report,
+                             std::vector<DerivedClip>& out) {
     std::mt19937_64 rng(file_seed(file) + 1);  // its own stream: the still clips stay as they were
     for (int k = 0; k < kLyingTurnsPerRecording; ++k) {
         LyingOptions still;
@@ -320,18 +379,28 @@ void derive_lying_turn_clips(const JointSequence& lie_down, const std::string& f
             return;
         }
         c.joints_20fps = at_dataset_rate(c.joints);
-        if (!passes(c.joints_20fps)) { ++report.failed_quality; continue; }
+        if (!passes(c.joints_20fps)) {
+            ++report.failed_quality;
+            continue;
+        }
         c.method = "lying_turn";
         c.activity = "lying";
-        c.parameters = {{"breaths_per_min", still.breaths_per_min}, {"chest_rad", still.chest_rad}, {"before_s", o.before_s},
-                        {"turn_s", o.turn_s}, {"on_side_s", o.on_side_s}, {"back_s", o.back_s}, {"after_s", o.after_s}, {"angle_rad", o.angle_rad}};
+        c.parameters = {{"breaths_per_min", still.breaths_per_min},
+                        {"chest_rad", still.chest_rad},
+                        {"before_s", o.before_s},
+                        {"turn_s", o.turn_s},
+                        {"on_side_s", o.on_side_s},
+                        {"back_s", o.back_s},
+                        {"after_s", o.after_s},
+                        {"angle_rad", o.angle_rad}};
         c.seed = file_seed(file) + static_cast<uint64_t>(kLyingPerRecording + k);
         c.captions = pick_captions(captions_for(c.method), rng);
         out.push_back(std::move(c));
     }
 }
 
-void derive_jump_clip(const JointSequence& jump, const std::string& file, DeriveReport& report, std::vector<DerivedClip>& out) {
+void derive_jump_clip(const JointSequence& jump, const std::string& file, DeriveReport& report,
+                      std::vector<DerivedClip>& out) {
     const uint64_t seed = file_seed(file);
     std::mt19937_64 rng(seed);
     JumpRescaleOptions o;
@@ -344,7 +413,10 @@ void derive_jump_clip(const JointSequence& jump, const std::string& file, Derive
         return;
     }
     c.joints_20fps = at_dataset_rate(c.joints);
-    if (!passes(c.joints_20fps)) { ++report.failed_quality; return; }
+    if (!passes(c.joints_20fps)) {
+        ++report.failed_quality;
+        return;
+    }
     c.method = "jump_rescaled";
     c.activity = "jumping";
     c.parameters = {{"time_scale", o.time_scale}, {"height_scale", o.time_scale * o.time_scale}};
@@ -355,7 +427,8 @@ void derive_jump_clip(const JointSequence& jump, const std::string& file, Derive
 
 // A single jump shorter than the training keeps (hml3d_dataset.hpp: 40 frames at 20 fps) also gives a series of
 // kJumpsPerSeriesMin to kJumpsPerSeriesMax of it, each jump of its own height (time scale uniform in [0.9, 1.1]).
-void derive_jump_series(const JointSequence& jump, const std::string& file, DeriveReport& report, std::vector<DerivedClip>& out) {
+void derive_jump_series(const JointSequence& jump, const std::string& file, DeriveReport& report,
+                        std::vector<DerivedClip>& out) {
     if (jump.num_frames >= Hml3dDataset::kMinFrames / smpl22::kFps * jump.fps) return;
     const uint64_t seed = file_seed(file) + 1;
     std::mt19937_64 rng(seed);
@@ -376,7 +449,10 @@ void derive_jump_series(const JointSequence& jump, const std::string& file, Deri
         return;
     }
     c.joints_20fps = at_dataset_rate(c.joints);
-    if (!passes(c.joints_20fps)) { ++report.failed_quality; return; }
+    if (!passes(c.joints_20fps)) {
+        ++report.failed_quality;
+        return;
+    }
     c.method = "jump_series";
     c.activity = "jumping";
     c.parameters = {{"jumps", count}, {"time_scales", scales}, {"blend_s", JumpSeriesOptions{}.blend_s}};
@@ -388,15 +464,21 @@ void derive_jump_series(const JointSequence& jump, const std::string& file, Deri
 // The sentences of a walk that turns by `degrees` (+ left).
 std::vector<std::string> walk_turn_captions(double degrees) {
     if (std::abs(degrees) >= 135)
-        return {"a person walks forward and then turns around", "someone walks, turns around and walks back", "a person walks and turns back the way they came",
-                "the person walks a few steps and turns around", "someone walks and makes a u-turn", "a man walks forward, turns around and returns"};
+        return {"a person walks forward and then turns around",
+                "someone walks, turns around and walks back",
+                "a person walks and turns back the way they came",
+                "the person walks a few steps and turns around",
+                "someone walks and makes a u-turn",
+                "a man walks forward, turns around and returns"};
     const std::string side = degrees > 0 ? "left" : "right";
-    return {"a person walks forward and turns " + side, "someone walks and then turns to the " + side, "a person walks in a curve to the " + side,
-            "the person walks and turns " + side, "someone turns " + side + " while walking", "a man walks forward and bears " + side};
+    return {"a person walks forward and turns " + side, "someone walks and then turns to the " + side,
+            "a person walks in a curve to the " + side, "the person walks and turns " + side,
+            "someone turns " + side + " while walking", "a man walks forward and bears " + side};
 }
 
 // One walk turned onto a curve (walk_turn.hpp), its size, side and timing drawn from the file's seed.
-void derive_turning_walk(const JointSequence& walk, const std::string& file, DeriveReport& report, std::vector<DerivedClip>& out) {
+void derive_turning_walk(const JointSequence& walk, const std::string& file, DeriveReport& report,
+                         std::vector<DerivedClip>& out) {
     const MotionAttributes source = measure_attributes(walk, file);
     if (source.travel != TravelDirection::forward || std::abs(source.heading_change_deg) > 30) {
         ++report.refused;  // a backward, sideways or already turning walk: its captions would not say what it does
@@ -441,7 +523,8 @@ std::vector<DerivedClip> derive_clips(const JointSequence& captured, const std::
     if (t.size() != 1) return out;
     if (t.count("walking")) {
         derive_stairs_clip(captured, file, report, out);
-        if (options.stairs_round_trips && file_seed(file) / 2 % 2 == 0) derive_stairs_round_trip(captured, file, report, out);
+        if (options.stairs_round_trips && file_seed(file) / 2 % 2 == 0)
+            derive_stairs_round_trip(captured, file, report, out);
         if (options.turning_walks) derive_turning_walk(captured, file, report, out);
     }
     if (t.count("standing")) derive_sit_clips(captured, file, report, out);

@@ -86,13 +86,14 @@ constexpr int kJumpsPerSeriesMin = 5;
 constexpr int kJumpsPerSeriesMax = 8;
 
 struct DerivedClip {
-    // "stairs_up", "stairs_down", "stairs_round_trip", "sit_down_stand_up", "lying_still", "lying_turn", "lie_down_rest",
-    // "jump_rescaled", "jump_series", "walk_turn"
+    // "stairs_up", "stairs_down", "stairs_round_trip", "sit_down_stand_up", "lying_still", "lying_turn",
+    // "lie_down_rest", "jump_rescaled", "jump_series", "walk_turn"
     std::string method;
-    std::string activity;               // its activity tag: stairs_up, stairs_down, stairs (a round trip), sitting, lying, jumping, walking
-    JointSequence joints;               // at the source recording's rate, floor at y = 0 under the lowest joint
-    JointSequence joints_20fps;         // the same at 20 fps (Catmull-Rom), as quality-scored and as the dataset holds it
-    nlohmann::json parameters;          // the edit's options
+    std::string
+        activity;  // its activity tag: stairs_up, stairs_down, stairs (a round trip), sitting, lying, jumping, walking
+    JointSequence joints;        // at the source recording's rate, floor at y = 0 under the lowest joint
+    JointSequence joints_20fps;  // the same at 20 fps (Catmull-Rom), as quality-scored and as the dataset holds it
+    nlohmann::json parameters;   // the edit's options
     uint64_t seed = 0;
     std::vector<std::string> captions;  // three sentences for the whole clip
 };

@@ -19,14 +19,14 @@
 namespace t2imu {
 
 struct MotionClip {
-    std::string id;                     // the file id, with "#start-end" for a caption span
-    FeatureMatrix features;             // [frames, 263], not normalised
+    std::string id;          // the file id, with "#start-end" for a caption span
+    FeatureMatrix features;  // [frames, 263], not normalised
     std::vector<CaptionLine> captions;
 };
 
 struct Batch {
     int size = 0;
-    int frames = kMaxMotionFrames;      // padded length
+    int frames = kMaxMotionFrames;  // padded length
     int channels = 263;
     std::vector<float> features;        // [size, frames, channels], normalised, zero after each length
     std::vector<uint8_t> mask;          // [size, frames], 1 on valid frames

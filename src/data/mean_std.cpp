@@ -17,7 +17,8 @@ FeatureStats compute_mean_std(const std::vector<FeatureMatrix>& clips) {
         n += static_cast<double>(m.rows());
     }
     const Eigen::VectorXd mean = sum / n;
-    for (const FeatureMatrix& m : clips) sq += (m.rowwise() - mean.transpose()).array().square().colwise().sum().matrix().transpose();
+    for (const FeatureMatrix& m : clips)
+        sq += (m.rowwise() - mean.transpose()).array().square().colwise().sum().matrix().transpose();
     Eigen::VectorXd std = (sq / n).array().sqrt();
     if (c == 263) {
         const int groups[][2] = {{0, 1}, {1, 3}, {3, 4}, {4, 67}, {67, 193}, {193, 259}, {259, 263}};

@@ -20,15 +20,15 @@ namespace t2imu {
 enum class WalkingPace { slow, normal, brisk };
 enum class RunningPace { jog, run, sprint };
 
-constexpr double kSlowWalk = 1.0;    // m/s: below, a slow walk
-constexpr double kBriskWalk = 1.5;   // m/s: above, a brisk walk
-constexpr double kJogLimit = 2.7;    // m/s: below, a jog
-constexpr double kSprintSpeed = 5.0; // m/s: above, a sprint
+constexpr double kSlowWalk = 1.0;     // m/s: below, a slow walk
+constexpr double kBriskWalk = 1.5;    // m/s: above, a brisk walk
+constexpr double kJogLimit = 2.7;     // m/s: below, a jog
+constexpr double kSprintSpeed = 5.0;  // m/s: above, a sprint
 // Running's pace words go to its tails only, so "slowly" and "fast" name speeds apart (a 2.6 m/s jog and a
 // 2.8 m/s run are one pace): "slowly" below an easy jog's 2.2 m/s, "fast" above a fast run's 3.3 m/s
 // (docs/attributes.md).
-constexpr double kEasyJog = 2.2;     // m/s
-constexpr double kFastRun = 3.3;     // m/s
+constexpr double kEasyJog = 2.2;  // m/s
+constexpr double kFastRun = 3.3;  // m/s
 
 WalkingPace walking_pace(double ground_speed_m_s);
 RunningPace running_pace(double ground_speed_m_s);
@@ -41,7 +41,8 @@ std::string caption_activity(const std::string& activity_tags);
 
 // Up to `count` distinct captions of a motion with these attributes and tags, drawn with `seed`; none when the
 // activity is not one measured captions describe or the measurements contradict it.
-std::vector<std::string> measured_captions(const MotionAttributes& a, const std::string& activity_tags, int count, uint64_t seed);
+std::vector<std::string> measured_captions(const MotionAttributes& a, const std::string& activity_tags, int count,
+                                           uint64_t seed);
 
 // The words of measured captions that name an attribute, by attribute ("pace_slow": slowly, slow, leisurely,
 // ...; "turn_left": left; ...): what the caption anchor and the coverage report look for in a prompt.

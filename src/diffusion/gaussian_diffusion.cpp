@@ -20,16 +20,19 @@ torch::Tensor GaussianDiffusion::gather(const std::vector<double>& values, const
     return table.index_select(0, t.to(torch::kCPU).to(torch::kLong)).to(like.options()).reshape(shape);
 }
 
-torch::Tensor GaussianDiffusion::q_sample(const torch::Tensor& x0, const torch::Tensor& t, const torch::Tensor& noise) const {
-    return gather(schedule_.sqrt_alphas_cumprod, t, x0) * x0 + gather(schedule_.sqrt_one_minus_alphas_cumprod, t, x0) * noise;
+torch::Tensor GaussianDiffusion::q_sample(const torch::Tensor& x0, const torch::Tensor& t,
+                                          const torch::Tensor& noise) const {
+    return gather(schedule_.sqrt_alphas_cumprod, t, x0) * x0 +
+           gather(schedule_.sqrt_one_minus_alphas_cumprod, t, x0) * noise;
 }
 
-torch::Tensor GaussianDiffusion::posterior_mean(const torch::Tensor& x0, const torch::Tensor& x_t, const torch::Tensor& t) const {
+torch::Tensor GaussianDiffusion::posterior_mean(const torch::Tensor& x0, const torch::Tensor& x_t,
+                                                const torch::Tensor& t) const {
     return gather(schedule_.posterior_mean_coef1, t, x_t) * x0 + gather(schedule_.posterior_mean_coef2, t, x_t) * x_t;
 }
 
-torch::Tensor GaussianDiffusion::p_sample_step(const torch::Tensor& x_t, const torch::Tensor& x0_pred, const torch::Tensor& t,
-                                               const torch::Tensor& noise) const {
+torch::Tensor GaussianDiffusion::p_sample_step(const torch::Tensor& x_t, const torch::Tensor& x0_pred,
+                                               const torch::Tensor& t, const torch::Tensor& noise) const {
     const torch::Tensor mean = posterior_mean(x0_pred, x_t, t);
     const torch::Tensor sigma = (0.5 * gather(schedule_.posterior_log_variance_clipped, t, x_t)).exp();
     std::vector<int64_t> shape(static_cast<size_t>(x_t.dim()), 1);

@@ -22,7 +22,8 @@ torch::Tensor velocity_mse(const torch::Tensor& target, const torch::Tensor& pre
     return masked_mse(vel(target), vel(prediction), mask.index({Slice(), Slice(1, torch::indexing::None)}));
 }
 
-torch::Tensor acceleration_loss(const torch::Tensor& target, const torch::Tensor& prediction, const torch::Tensor& mask) {
+torch::Tensor acceleration_loss(const torch::Tensor& target, const torch::Tensor& prediction,
+                                const torch::Tensor& mask) {
     using torch::indexing::Slice;
     auto acc = [](const torch::Tensor& x) {
         return x.index({Slice(), Slice(2, torch::indexing::None)}) - 2 * x.index({Slice(), Slice(1, -1)}) +

@@ -23,6 +23,7 @@ torch::Tensor velocity_mse(const torch::Tensor& target, const torch::Tensor& pre
 // frames are valid and over the channels. The paper writes a squared norm over N-1; its reported figures (L_acc
 // 0.056 on HumanML3D) are per channel, as a mean-reducing MSE gives, and only a per-channel mean keeps lambda_acc
 // independent of the feature width (summed over 263 channels, lambda = 0.01 acted like 2.6).
-torch::Tensor acceleration_loss(const torch::Tensor& target, const torch::Tensor& prediction, const torch::Tensor& mask);
+torch::Tensor acceleration_loss(const torch::Tensor& target, const torch::Tensor& prediction,
+                                const torch::Tensor& mask);
 
 }  // namespace t2imu

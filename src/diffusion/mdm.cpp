@@ -16,10 +16,13 @@ namespace {
 // pe[pos, 2i] = sin(pos w_i), pe[pos, 2i+1] = cos(pos w_i), w_i = 10000^(-2i/d).
 torch::Tensor sinusoidal_table(int64_t max_len, int64_t d) {
     const torch::Tensor pos = torch::arange(max_len, torch::kFloat).unsqueeze(1);
-    const torch::Tensor div = torch::exp(torch::arange(0, d, 2, torch::kFloat) * (-std::log(10000.0) / static_cast<double>(d)));
+    const torch::Tensor div =
+        torch::exp(torch::arange(0, d, 2, torch::kFloat) * (-std::log(10000.0) / static_cast<double>(d)));
     torch::Tensor pe = torch::zeros({max_len, d});
-    pe.index_put_({torch::indexing::Slice(), torch::indexing::Slice(0, torch::indexing::None, 2)}, torch::sin(pos * div));
-    pe.index_put_({torch::indexing::Slice(), torch::indexing::Slice(1, torch::indexing::None, 2)}, torch::cos(pos * div));
+    pe.index_put_({torch::indexing::Slice(), torch::indexing::Slice(0, torch::indexing::None, 2)},
+                  torch::sin(pos * div));
+    pe.index_put_({torch::indexing::Slice(), torch::indexing::Slice(1, torch::indexing::None, 2)},
+                  torch::cos(pos * div));
     return pe.unsqueeze(1);  // [max_len, 1, d]
 }
 
@@ -60,7 +63,8 @@ MdmImpl::MdmImpl(const MdmConfig& c) : config_(c) {
     pose_embedding_ = input_process->register_module("poseEmbedding", nn::Linear(c.njoints, c.latent_dim));
     auto embed_timestep = register_module("embed_timestep", std::make_shared<Named>());
     time_embed_ = embed_timestep->register_module(
-        "time_embed", nn::Sequential(nn::Linear(c.latent_dim, c.latent_dim), nn::SiLU(), nn::Linear(c.latent_dim, c.latent_dim)));
+        "time_embed",
+        nn::Sequential(nn::Linear(c.latent_dim, c.latent_dim), nn::SiLU(), nn::Linear(c.latent_dim, c.latent_dim)));
     embed_text_ = register_module("embed_text", nn::Linear(c.text_dim, c.latent_dim));
     EncoderOptions encoder;
     encoder.d_model = c.latent_dim;
@@ -75,8 +79,8 @@ MdmImpl::MdmImpl(const MdmConfig& c) : config_(c) {
     pe_ = register_buffer("pe", sinusoidal_table(c.max_len, c.latent_dim));
 }
 
-torch::Tensor MdmImpl::forward(const torch::Tensor& x, const torch::Tensor& timesteps, const torch::Tensor& text, bool uncond,
-                               const torch::Tensor& lengths) {
+torch::Tensor MdmImpl::forward(const torch::Tensor& x, const torch::Tensor& timesteps, const torch::Tensor& text,
+                               bool uncond, const torch::Tensor& lengths) {
     const int64_t frames = x.size(3);
     // Condition token [1, B, d]: time embedding + text embedding.
     const torch::Tensor t_emb = time_embed_->forward(pe_.index_select(0, timesteps).squeeze(1)).unsqueeze(0);
@@ -109,7 +113,8 @@ torch::Tensor MdmImpl::forward_guided(const torch::Tensor& x, const torch::Tenso
 
 void load_mdm_weights(Mdm& model, const std::string& path, const std::string& other_prefix) {
     StateDictLayout layout;
-    if (!other_prefix.empty()) layout.foreign = [other_prefix](const std::string& key) { return key.rfind(other_prefix, 0) == 0; };
+    if (!other_prefix.empty())
+        layout.foreign = [other_prefix](const std::string& key) { return key.rfind(other_prefix, 0) == 0; };
     layout.owner = "a key of the MDM state dict";
     load_state_dict(*model, path, layout);
 }

@@ -26,7 +26,7 @@ struct MdmConfig {
     int64_t num_heads = 4;
     double dropout = 0.1;
     int64_t text_dim = 512;
-    int64_t max_len = 5000;  // positional table length
+    int64_t max_len = 5000;    // positional table length
     bool mask_frames = false;  // official flag: padded frames are masked out of attention (needs lengths)
 };
 
@@ -40,11 +40,11 @@ public:
     // uncond: zero the text feature (classifier-free guidance's unconditional pass). lengths [B] (optional, an
     // undefined tensor for none): with mask_frames, frames at or beyond a sample's length are hidden from
     // attention, so they cannot change the valid frames' output.
-    torch::Tensor forward(const torch::Tensor& x, const torch::Tensor& timesteps, const torch::Tensor& text, bool uncond = false,
-                          const torch::Tensor& lengths = {});
+    torch::Tensor forward(const torch::Tensor& x, const torch::Tensor& timesteps, const torch::Tensor& text,
+                          bool uncond = false, const torch::Tensor& lengths = {});
     // uncond + scale * (cond - uncond), computed as one batched forward over both passes.
-    torch::Tensor forward_guided(const torch::Tensor& x, const torch::Tensor& timesteps, const torch::Tensor& text, double scale,
-                                 const torch::Tensor& lengths = {});
+    torch::Tensor forward_guided(const torch::Tensor& x, const torch::Tensor& timesteps, const torch::Tensor& text,
+                                 double scale, const torch::Tensor& lengths = {});
 
     const MdmConfig& config() const { return config_; }
 

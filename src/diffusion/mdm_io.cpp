@@ -31,9 +31,11 @@ void run_mdm_forward(const MdmForwardFiles& f) {
     const int64_t njoints = model->config().njoints;
     if (x.dim() != 4 || x.size(1) != njoints || x.size(2) != 1)
         throw Error(f.x, "shape", "[batch, " + std::to_string(njoints) + ", 1, frames]", c10::str(x.sizes()));
-    if (t.dim() != 1 || t.size(0) != x.size(0)) throw Error(f.timesteps, "shape", "[" + std::to_string(x.size(0)) + "]", c10::str(t.sizes()));
+    if (t.dim() != 1 || t.size(0) != x.size(0))
+        throw Error(f.timesteps, "shape", "[" + std::to_string(x.size(0)) + "]", c10::str(t.sizes()));
     if (text.dim() != 2 || text.size(0) != x.size(0) || text.size(1) != model->config().text_dim)
-        throw Error(f.text, "shape", "[" + std::to_string(x.size(0)) + ", " + std::to_string(model->config().text_dim) + "]",
+        throw Error(f.text, "shape",
+                    "[" + std::to_string(x.size(0)) + ", " + std::to_string(model->config().text_dim) + "]",
                     c10::str(text.sizes()));
     if (x.size(3) + 1 > model->config().max_len) throw Error(f.x, "frames", "fewer than the positional table's length");
     const torch::Tensor lengths = f.lengths.empty() ? torch::Tensor() : long_tensor(f.lengths);

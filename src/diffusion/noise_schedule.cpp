@@ -15,7 +15,8 @@ NoiseSchedule schedule_from_betas(const std::vector<double>& betas) {
     s.betas = betas;
     double cumprod = 1.0;
     for (size_t i = 0; i < n; ++i) {
-        if (!(betas[i] > 0 && betas[i] <= 1)) throw Error("noise schedule", "beta " + std::to_string(i), "a value in (0, 1]");
+        if (!(betas[i] > 0 && betas[i] <= 1))
+            throw Error("noise schedule", "beta " + std::to_string(i), "a value in (0, 1]");
         s.alphas_cumprod_prev.push_back(cumprod);
         cumprod *= 1.0 - betas[i];
         s.alphas_cumprod.push_back(cumprod);
@@ -33,7 +34,8 @@ NoiseSchedule schedule_from_betas(const std::vector<double>& betas) {
         s.posterior_mean_coef2.push_back((1.0 - prev) * std::sqrt(1.0 - betas[i]) / (1.0 - ac));
     }
     // The variance at t = 0 is 0; its log is clipped by taking the value at t = 1 instead.
-    for (size_t i = 0; i < n; ++i) s.posterior_log_variance_clipped.push_back(std::log(s.posterior_variance[i == 0 ? 1 : i]));
+    for (size_t i = 0; i < n; ++i)
+        s.posterior_log_variance_clipped.push_back(std::log(s.posterior_variance[i == 0 ? 1 : i]));
     return s;
 }
 
@@ -45,7 +47,8 @@ NoiseSchedule cosine_schedule(int steps) {
     };
     std::vector<double> raw;
     for (int i = 0; i < steps; ++i)
-        raw.push_back(std::min(1.0 - alpha_bar(static_cast<double>(i + 1) / steps) / alpha_bar(static_cast<double>(i) / steps), 0.999));
+        raw.push_back(std::min(
+            1.0 - alpha_bar(static_cast<double>(i + 1) / steps) / alpha_bar(static_cast<double>(i) / steps), 0.999));
     // SpacedDiffusion's recomputation from the cumulative products.
     const NoiseSchedule base = schedule_from_betas(raw);
     std::vector<double> betas;

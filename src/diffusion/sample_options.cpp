@@ -20,11 +20,14 @@ Sampler parse_sampler(const std::string& name, const std::string& option) {
     throw Error(option, "sampler", "ddpm, ddim or dpmpp", name);
 }
 
-int denoiser_calls(Sampler sampler, int steps, int schedule_steps) { return sampler == Sampler::ddpm ? schedule_steps : steps; }
+int denoiser_calls(Sampler sampler, int steps, int schedule_steps) {
+    return sampler == Sampler::ddpm ? schedule_steps : steps;
+}
 
 void check_guidance_scale(double scale, const std::string& option) {
     if (!(scale >= 0 && scale <= kMaxGuidance))
-        throw Error("sampling", option, "a scale from 0 to " + std::to_string(static_cast<int>(kMaxGuidance)), std::to_string(scale));
+        throw Error("sampling", option, "a scale from 0 to " + std::to_string(static_cast<int>(kMaxGuidance)),
+                    std::to_string(scale));
 }
 
 int frames_for_seconds(double seconds, const std::string& option) {
@@ -43,12 +46,14 @@ void SampleOptions::validate() const {
     check_guidance_scale(guidance, "--guidance");
     if (!(eta >= 0 && eta <= 1)) throw Error("sampling", "--eta", "0 to 1", std::to_string(eta));
     if (batch < 1) throw Error("sampling", "--batch", "at least 1", std::to_string(batch));
-    if (!(strength > 0 && strength <= 1)) throw Error("sampling", "--strength", "above 0 and at most 1", std::to_string(strength));
+    if (!(strength > 0 && strength <= 1))
+        throw Error("sampling", "--strength", "above 0 and at most 1", std::to_string(strength));
     if (caption_anchor && !(*caption_anchor >= 0 && *caption_anchor <= 1))
         throw Error("sampling", "--caption-anchor", "a weight from 0 to 1", std::to_string(*caption_anchor));
     for (const FeatureMatrix& m : start_motions)
         if (m.rows() != frames || m.cols() != 263)
-            throw Error("sampling", "start motion", std::to_string(frames) + " x 263 features", std::to_string(m.rows()) + " x " + std::to_string(m.cols()));
+            throw Error("sampling", "start motion", std::to_string(frames) + " x 263 features",
+                        std::to_string(m.rows()) + " x " + std::to_string(m.cols()));
 }
 
 }  // namespace t2imu

@@ -14,7 +14,7 @@ namespace t2imu {
 
 // The samplers by the names options, configs and records use: "ddpm", "ddim", "dpmpp" (parsed here only).
 enum class Sampler { ddpm, ddim, dpmpp };
-const std::vector<std::string>& sampler_names();      // in the enum's order
+const std::vector<std::string>& sampler_names();  // in the enum's order
 const std::string& sampler_name(Sampler sampler);
 Sampler parse_sampler(const std::string& name, const std::string& option = "--sampler");  // Error naming `option`
 // Denoiser evaluations per motion: DDPM takes every step of the model's schedule, the others `steps`.
@@ -23,20 +23,20 @@ int denoiser_calls(Sampler sampler, int steps, int schedule_steps);
 constexpr double kMaxGuidance = 100;  // classifier-free guidance scales accepted: [0, kMaxGuidance]
 // Throws Error naming `option` unless 0 <= scale <= kMaxGuidance (NaN refused).
 void check_guidance_scale(double scale, const std::string& option);
-constexpr double kSampleFps = 20;     // HumanML3D's frame rate: every sampled motion is at 20 fps
+constexpr double kSampleFps = 20;  // HumanML3D's frame rate: every sampled motion is at 20 fps
 
 // A length in seconds as sampled frames (round(seconds * 20)); throws Error naming `option` unless the length is
 // finite and gives 4 to 196 frames (0.2 to 9.8 s), the lengths SampleOptions accepts.
 int frames_for_seconds(double seconds, const std::string& option);
 
 struct SampleOptions {
-    int frames = 120;              // 20 fps; at most 196 (HumanML3D's longest)
+    int frames = 120;                 // 20 fps; at most 196 (HumanML3D's longest)
     Sampler sampler = Sampler::ddpm;  // MDM's own: every step of the schedule (t2imu sample's default)
     int steps = 50;                   // denoiser evaluations for ddim and dpmpp (ddpm uses every step)
     double guidance = 2.5;
-    double eta = 0.0;              // ddim only
+    double eta = 0.0;  // ddim only
     uint64_t seed = 0;
-    std::vector<uint64_t> seeds;   // when given, one per prompt: sample i draws from seeds[i] instead of seed + i
+    std::vector<uint64_t> seeds;  // when given, one per prompt: sample i draws from seeds[i] instead of seed + i
     int batch = 16;
     // The hybrid (SDEdit, Meng et al. 2022): when given, one per prompt, motion i starts from start_motions[i]
     // (de-normalised features [frames, 263]) noised to step t_s = round(strength (T-1)) with its seed's noise,
@@ -51,7 +51,8 @@ struct SampleOptions {
     std::optional<double> caption_anchor;
     std::vector<std::string> activities;
 
-    // Throws Error naming the option (--frames, --steps, --guidance, --strength...) for a value out of range or not finite.
+    // Throws Error naming the option (--frames, --steps, --guidance, --strength...) for a value out of range or not
+    // finite.
     void validate() const;
 };
 

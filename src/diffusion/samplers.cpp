@@ -17,8 +17,10 @@ torch::Tensor step_tensor(int t, const torch::Tensor& x) {
 
 std::vector<int> sampling_timesteps(int schedule_steps, int steps, int t_start) {
     const int first = t_start < 0 ? schedule_steps - 1 : t_start;
-    if (first >= schedule_steps) throw Error("sampler", "start step", "0.." + std::to_string(schedule_steps - 1), std::to_string(first));
-    if (steps < 1 || steps > first + 1) throw Error("sampler", "steps", "1.." + std::to_string(first + 1), std::to_string(steps));
+    if (first >= schedule_steps)
+        throw Error("sampler", "start step", "0.." + std::to_string(schedule_steps - 1), std::to_string(first));
+    if (steps < 1 || steps > first + 1)
+        throw Error("sampler", "steps", "1.." + std::to_string(first + 1), std::to_string(steps));
     if (steps == 1) return {first};
     std::vector<int> ts;
     for (int k = 0; k < steps; ++k) {
@@ -31,9 +33,11 @@ std::vector<int> sampling_timesteps(int schedule_steps, int steps, int t_start) 
     return ts;
 }
 
-torch::Tensor sample_ddpm(const GaussianDiffusion& diffusion, const X0Predictor& denoiser, torch::Tensor x, const NoiseSource& noise, int t_start) {
+torch::Tensor sample_ddpm(const GaussianDiffusion& diffusion, const X0Predictor& denoiser, torch::Tensor x,
+                          const NoiseSource& noise, int t_start) {
     torch::NoGradGuard no_grad;
-    if (t_start >= diffusion.steps()) throw Error("sampler", "start step", "0.." + std::to_string(diffusion.steps() - 1), std::to_string(t_start));
+    if (t_start >= diffusion.steps())
+        throw Error("sampler", "start step", "0.." + std::to_string(diffusion.steps() - 1), std::to_string(t_start));
     for (int t = t_start < 0 ? diffusion.steps() - 1 : t_start; t >= 0; --t) {
         const torch::Tensor ts = step_tensor(t, x);
         x = diffusion.p_sample_step(x, denoiser(x, ts), ts, noise(x));
@@ -41,14 +45,15 @@ torch::Tensor sample_ddpm(const GaussianDiffusion& diffusion, const X0Predictor&
     return x;
 }
 
-torch::Tensor sample_ddim(const NoiseSchedule& s, const X0Predictor& denoiser, torch::Tensor x, int steps, double eta, const NoiseSource& noise,
-                          int t_start) {
+torch::Tensor sample_ddim(const NoiseSchedule& s, const X0Predictor& denoiser, torch::Tensor x, int steps, double eta,
+                          const NoiseSource& noise, int t_start) {
     torch::NoGradGuard no_grad;
     const std::vector<int> ts = sampling_timesteps(s.steps, steps, t_start);
     for (size_t i = 0; i < ts.size(); ++i) {
         const torch::Tensor x0 = denoiser(x, step_tensor(ts[i], x));
         if (i + 1 == ts.size()) return x0;
-        const double a = s.alphas_cumprod[static_cast<size_t>(ts[i])], a_next = s.alphas_cumprod[static_cast<size_t>(ts[i + 1])];
+        const double a = s.alphas_cumprod[static_cast<size_t>(ts[i])],
+                     a_next = s.alphas_cumprod[static_cast<size_t>(ts[i + 1])];
         const torch::Tensor eps = (x - std::sqrt(a) * x0) / std::sqrt(1 - a);
         const double sigma = eta * std::sqrt((1 - a_next) / (1 - a)) * std::sqrt(1 - a / a_next);
         x = std::sqrt(a_next) * x0 + std::sqrt(std::max(1 - a_next - sigma * sigma, 0.0)) * eps;
@@ -57,7 +62,8 @@ torch::Tensor sample_ddim(const NoiseSchedule& s, const X0Predictor& denoiser, t
     return x;
 }
 
-torch::Tensor sample_dpmpp_2m(const NoiseSchedule& s, const X0Predictor& denoiser, torch::Tensor x, int steps, int t_start) {
+torch::Tensor sample_dpmpp_2m(const NoiseSchedule& s, const X0Predictor& denoiser, torch::Tensor x, int steps,
+                              int t_start) {
     torch::NoGradGuard no_grad;
     const std::vector<int> ts = sampling_timesteps(s.steps, steps, t_start);
     const auto alpha = [&](int t) { return std::sqrt(s.alphas_cumprod[static_cast<size_t>(t)]); };

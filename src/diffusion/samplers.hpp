@@ -13,9 +13,9 @@
 // 0.777/0.888/0.955 and 1.365/1.185/1.039 with linear spacing). The K-th and last denoiser call, at t = 0, gives
 // the sample (its x0 estimate), so K is the number of denoiser evaluations.
 #pragma once
+#include <torch/torch.h>
 #include <functional>
 #include <string>
-#include <torch/torch.h>
 #include <vector>
 
 #include "diffusion/gaussian_diffusion.hpp"
@@ -32,14 +32,14 @@ using NoiseSource = std::function<torch::Tensor(const torch::Tensor& like)>;
 // `t_start`: the step x is at (-1 = T-1, pure noise). A smaller one continues a partly noised motion (SDEdit,
 // Meng et al. 2022: the hybrid source noises a retrieved clip to t_start and lets the model finish it); DDPM
 // then takes t_start + 1 steps, the few-step samplers their K evaluations spread over t_start .. 0.
-torch::Tensor sample_ddpm(const GaussianDiffusion& diffusion, const X0Predictor& denoiser, torch::Tensor x_T, const NoiseSource& noise,
-                          int t_start = -1);
-torch::Tensor sample_ddim(const NoiseSchedule& schedule, const X0Predictor& denoiser, torch::Tensor x_T, int steps, double eta,
+torch::Tensor sample_ddpm(const GaussianDiffusion& diffusion, const X0Predictor& denoiser, torch::Tensor x_T,
                           const NoiseSource& noise, int t_start = -1);
-torch::Tensor sample_dpmpp_2m(const NoiseSchedule& schedule, const X0Predictor& denoiser, torch::Tensor x_T, int steps, int t_start = -1);
+torch::Tensor sample_ddim(const NoiseSchedule& schedule, const X0Predictor& denoiser, torch::Tensor x_T, int steps,
+                          double eta, const NoiseSource& noise, int t_start = -1);
+torch::Tensor sample_dpmpp_2m(const NoiseSchedule& schedule, const X0Predictor& denoiser, torch::Tensor x_T, int steps,
+                              int t_start = -1);
 
 // Descending, first t_start (-1 = T-1), last 0, quadratic spacing as above; at most t_start + 1 steps.
 std::vector<int> sampling_timesteps(int schedule_steps, int steps, int t_start = -1);
-
 
 }  // namespace t2imu

@@ -51,24 +51,26 @@ struct CaptionAnchor {
 struct MotionModel {
     std::unique_ptr<WordVectors> vocab;  // the text encoder keeps a reference: declared first, destroyed last
     Mdm mdm{nullptr};
-    GloveTextEncoder text{nullptr};      // text_encoder.kind "glove_transformer" (t2imu train's models)
-    ClipTextEncoder clip{nullptr};       // text_encoder.kind "clip" (official MDM checkpoints)
-    BertEncoder minilm{nullptr};         // text_encoder.kind "minilm" (frozen sentence vectors)
+    GloveTextEncoder text{nullptr};  // text_encoder.kind "glove_transformer" (t2imu train's models)
+    ClipTextEncoder clip{nullptr};   // text_encoder.kind "clip" (official MDM checkpoints)
+    BertEncoder minilm{nullptr};     // text_encoder.kind "minilm" (frozen sentence vectors)
     NoiseSchedule schedule;
     FeatureStats stats;
     nlohmann::json meta;  // model.json
     torch::Device device{torch::kCPU};
-    CaptionAnchor anchor;                // searched with the GloVe vocabulary: glove_transformer models only
+    CaptionAnchor anchor;  // searched with the GloVe vocabulary: glove_transformer models only
 
-    torch::Tensor encode_text(const std::vector<std::string>& captions);  // [B, text_dim] by whichever encoder is loaded
+    torch::Tensor encode_text(
+        const std::vector<std::string>& captions);  // [B, text_dim] by whichever encoder is loaded
     // The caption anchor's weight a run samples with: `asked` when given, else the folder's. Error naming
     // --caption-anchor for a weight above 0 on a folder without an anchor (callers ask before any output).
     double caption_anchor_weight(std::optional<double> asked) const;
     // The features [B, text_dim] the prompts condition the denoiser with: encode_text blended by the caption
     // anchor at weight w (checked as caption_anchor_weight does); activities: empty, or one canonical name per
     // prompt ("" = unknown).
-    torch::Tensor condition(const std::vector<std::string>& prompts, const std::vector<std::string>& activities, double weight);
-    torch::nn::Module& text_module();                                     // that encoder
+    torch::Tensor condition(const std::vector<std::string>& prompts, const std::vector<std::string>& activities,
+                            double weight);
+    torch::nn::Module& text_module();  // that encoder
 };
 
 // model.json's text_encoder names the encoder:
@@ -92,9 +94,9 @@ struct MotionModel {
 // `device` is cpu, cuda or cuda:N.
 std::unique_ptr<MotionModel> load_motion_model(const std::string& dir, const std::string& device = "cpu");
 
-
 // One de-normalised feature matrix [frames, 263] per prompt; validates `options` first (and that activities, when
 // given, are one per prompt).
-std::vector<FeatureMatrix> sample_motions(MotionModel& model, const std::vector<std::string>& prompts, const SampleOptions& options);
+std::vector<FeatureMatrix> sample_motions(MotionModel& model, const std::vector<std::string>& prompts,
+                                          const SampleOptions& options);
 
 }  // namespace t2imu

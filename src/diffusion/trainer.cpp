@@ -36,7 +36,8 @@ namespace fs = std::filesystem;
 namespace {
 
 // A value of `section` that must lie in [lo, hi] (or above lo when `open_low`); NaN fails every comparison.
-void check_range(const std::string& path, const std::string& field, double v, double lo, double hi, bool open_low = false) {
+void check_range(const std::string& path, const std::string& field, double v, double lo, double hi,
+                 bool open_low = false) {
     if (!(open_low ? v > lo : v >= lo) || !(v <= hi)) {
         char range[96];
         std::snprintf(range, sizeof range, "a number %s %g and at most %g", open_low ? "above" : "from", lo, hi);
@@ -55,12 +56,14 @@ void TrainConfig::validate(const std::string& path) const {
     check_range(path, "model.ff_size", static_cast<double>(mdm.ff_size), 1, 1 << 20);
     check_range(path, "model.num_layers", static_cast<double>(mdm.num_layers), 1, 256);
     check_range(path, "model.num_heads", static_cast<double>(mdm.num_heads), 1, static_cast<double>(mdm.latent_dim));
-    if (mdm.latent_dim % mdm.num_heads != 0) throw Error(path, "model.num_heads", "a divisor of model.latent_dim", std::to_string(mdm.num_heads));
+    if (mdm.latent_dim % mdm.num_heads != 0)
+        throw Error(path, "model.num_heads", "a divisor of model.latent_dim", std::to_string(mdm.num_heads));
     check_range(path, "model.dropout", mdm.dropout, 0, 0.99);
     check_range(path, "text.model_dim", static_cast<double>(text.model_dim), 1, 65536);
     check_range(path, "text.layers", static_cast<double>(text.layers), 1, 256);
     check_range(path, "text.heads", static_cast<double>(text.heads), 1, static_cast<double>(text.model_dim));
-    if (text.model_dim % text.heads != 0) throw Error(path, "text.heads", "a divisor of text.model_dim", std::to_string(text.heads));
+    if (text.model_dim % text.heads != 0)
+        throw Error(path, "text.heads", "a divisor of text.model_dim", std::to_string(text.heads));
     check_range(path, "text.ff_size", static_cast<double>(text.ff_size), 1, 1 << 20);
     check_range(path, "text.dropout", text.dropout, 0, 0.99);
     check_range(path, "diffusion.steps", diffusion_steps, 2, 100000);
@@ -76,7 +79,8 @@ void TrainConfig::validate(const std::string& path) const {
     check_range(path, "loss.lambda_vel", lambda_vel, 0, big);
     check_range(path, "loss.lambda_foot", lambda_foot, 0, big);
     check_range(path, "loss.lambda_acc", lambda_acc, 0, big);
-    if (acc_space != "features" && acc_space != "joints") throw Error(path, "loss.acc_space", "features or joints", acc_space);
+    if (acc_space != "features" && acc_space != "joints")
+        throw Error(path, "loss.acc_space", "features or joints", acc_space);
     parse_precision(precision, path, "train.precision");
     augment.validate(path);
 }
@@ -86,8 +90,9 @@ TrainConfig read_train_config(const std::string& path) {
     TomlSection top(doc, path, "");
     TrainConfig c;
     top.read("out", c.out);
-    TomlSection data = top.table("data"), model = top.table("model"), text = top.table("text"), diffusion = top.table("diffusion"),
-                train = top.table("train"), loss = top.table("loss"), augment = top.table("augment");
+    TomlSection data = top.table("data"), model = top.table("model"), text = top.table("text"),
+                diffusion = top.table("diffusion"), train = top.table("train"), loss = top.table("loss"),
+                augment = top.table("augment");
     top.refuse_unknown_keys();
     data.read("dataset", c.dataset);
     data.read("vocab", c.vocab);
@@ -133,15 +138,15 @@ TrainConfig read_train_config(const std::string& path) {
 
 // ---------------------------------------------------------------- losses
 
-LossTerms mdm_loss_terms(const torch::Tensor& x0, const torch::Tensor& x0_hat, const torch::Tensor& lengths, const torch::Tensor& mean,
-                         const torch::Tensor& std, const TrainConfig& c) {
+LossTerms mdm_loss_terms(const torch::Tensor& x0, const torch::Tensor& x0_hat, const torch::Tensor& lengths,
+                         const torch::Tensor& mean, const torch::Tensor& std, const TrainConfig& c) {
     const torch::Tensor mask = frame_mask(lengths, x0.size(1));
     LossTerms t;
     t.simple = masked_mse(x0, x0_hat, mask).mean();
     const bool need_joints = c.lambda_pos > 0 || c.lambda_foot > 0 || (c.lambda_acc > 0 && c.acc_space == "joints");
     torch::Tensor joints, joints_hat;
     if (need_joints) {
-        joints = recover_from_ric_torch(x0 * std + mean).flatten(2);        // [B, F, 66]
+        joints = recover_from_ric_torch(x0 * std + mean).flatten(2);  // [B, F, 66]
         joints_hat = recover_from_ric_torch(x0_hat * std + mean).flatten(2);
     }
     const torch::Tensor zero = torch::zeros({}, x0.options());
@@ -152,7 +157,7 @@ LossTerms mdm_loss_terms(const torch::Tensor& x0, const torch::Tensor& x0_hat, c
         // the last four feature channels in the same order.
         const torch::Tensor feet = torch::tensor({7, 10, 8, 11}, torch::kInt64).to(x0.device());
         const torch::Tensor j = joints_hat.view({x0.size(0), x0.size(1), 22, 3}).index_select(2, feet);
-        const torch::Tensor velocity = j.slice(1, 1) - j.slice(1, 0, -1);                     // [B, F-1, 4, 3]
+        const torch::Tensor velocity = j.slice(1, 1) - j.slice(1, 0, -1);  // [B, F-1, 4, 3]
         const torch::Tensor contact = (x0 * std + mean).slice(2, 259, 263).slice(1, 0, -1).gt(0.5).to(x0.dtype());
         const torch::Tensor moving = (velocity * contact.unsqueeze(3)).flatten(2);
         t.foot = masked_mse(torch::zeros_like(moving), moving, mask.slice(1, 1)).mean();
@@ -160,7 +165,9 @@ LossTerms mdm_loss_terms(const torch::Tensor& x0, const torch::Tensor& x0_hat, c
         t.foot = zero;
     }
     if (c.lambda_acc > 0)
-        t.acc = (c.acc_space == "joints" ? acceleration_loss(joints, joints_hat, mask) : acceleration_loss(x0, x0_hat, mask)).mean();
+        t.acc = (c.acc_space == "joints" ? acceleration_loss(joints, joints_hat, mask)
+                                         : acceleration_loss(x0, x0_hat, mask))
+                    .mean();
     else
         t.acc = zero;
     t.total = t.simple + c.lambda_pos * t.pos + c.lambda_vel * t.vel + c.lambda_foot * t.foot + c.lambda_acc * t.acc;
@@ -241,12 +248,14 @@ std::string verified_checkpoint_state(const std::string& path) {
         throw Error(path, "checkpoint", "a checkpoint libtorch can read (cut or damaged?)", first_line(e));
     }
     torch::Tensor state, sum;
-    if (!file.try_read("state", state) || !file.try_read("fnv1a64", sum) || state.scalar_type() != torch::kUInt8 || sum.numel() != 1)
+    if (!file.try_read("state", state) || !file.try_read("fnv1a64", sum) || state.scalar_type() != torch::kUInt8 ||
+        sum.numel() != 1)
         throw Error(path, "state", "a checkpoint of this version of t2imu (a state and its fnv1a64 checksum)");
     std::string bytes = tensor_text(state);
     const uint64_t expected = static_cast<uint64_t>(sum.item<int64_t>()), got = fnv1a64(bytes);
     if (expected != got)
-        throw Error(path, "fnv1a64", "the checksum of its state (the file is damaged: resume from a copy, or train afresh)",
+        throw Error(path, "fnv1a64",
+                    "the checksum of its state (the file is damaged: resume from a copy, or train afresh)",
                     std::to_string(got) + " against " + std::to_string(expected));
     return bytes;
 }
@@ -256,7 +265,8 @@ void load_checkpoint(Training& tr, Hml3dDataset& data, const std::string& path, 
     torch::serialize::InputArchive archive;
     std::string key = "state";
     try {
-        archive.load_from(bytes.data(), bytes.size(), device);  // a checkpoint written on a GPU resumes on the CPU, and back
+        archive.load_from(bytes.data(), bytes.size(),
+                          device);  // a checkpoint written on a GPU resumes on the CPU, and back
         torch::NoGradGuard no_grad;
         // A fresh tensor per read: the archive's storage cannot be resized into another shape.
         const auto read = [&](const std::string& name) {
@@ -269,7 +279,8 @@ void load_checkpoint(Training& tr, Hml3dDataset& data, const std::string& path, 
         const auto restore = [&](torch::Tensor& into, const std::string& name) {
             const torch::Tensor t = read(name);
             if (t.sizes() != into.sizes())
-                throw Error(path, name, "shape " + shape_text(into.sizes()) + " (the config's model)", shape_text(t.sizes()));
+                throw Error(path, name, "shape " + shape_text(into.sizes()) + " (the config's model)",
+                            shape_text(t.sizes()));
             into.copy_(t);
         };
         for (auto& p : tr.mdm->named_parameters()) restore(p.value(), "mdm." + p.key());
@@ -291,7 +302,8 @@ void load_checkpoint(Training& tr, Hml3dDataset& data, const std::string& path, 
         throw Error(path, key, "the training state this config makes", first_line(e));
     }
     for (const torch::Tensor& p : tr.parameters())
-        if (!torch::isfinite(p).all().item<bool>()) throw Error(path, "parameters", "finite weights", "NaN or infinite values");
+        if (!torch::isfinite(p).all().item<bool>())
+            throw Error(path, "parameters", "finite weights", "NaN or infinite values");
 }
 
 void write_model(const Training& tr, const TrainConfig& c, const Hml3dDataset& data) {
@@ -313,23 +325,50 @@ void write_model(const Training& tr, const TrainConfig& c, const Hml3dDataset& d
         for (size_t i = 0; i < params.size(); ++i) params[i].copy_(saved[i]);
     }
     const FeatureStats& s = data.stats();
-    const std::vector<double> mean(s.mean.data(), s.mean.data() + s.mean.size()), sd(s.std.data(), s.std.data() + s.std.size());
+    const std::vector<double> mean(s.mean.data(), s.mean.data() + s.mean.size()),
+        sd(s.std.data(), s.std.data() + s.std.size());
     write_npy(c.out + "/Mean.npy", NdArray::from(mean, {static_cast<int64_t>(mean.size())}));
     write_npy(c.out + "/Std.npy", NdArray::from(sd, {static_cast<int64_t>(sd.size())}));
     const MdmConfig& m = tr.mdm->config();
     const nlohmann::json model = {
         {"architecture", "mdm_trans_enc"},
-        {"mdm", {{"njoints", m.njoints}, {"latent_dim", m.latent_dim}, {"ff_size", m.ff_size}, {"num_layers", m.num_layers},
-                 {"num_heads", m.num_heads}, {"dropout", m.dropout}, {"text_dim", m.text_dim}, {"mask_frames", m.mask_frames}}},
-        {"text_encoder", {{"kind", "glove_transformer"}, {"vocab", c.vocab}, {"model_dim", c.text.model_dim},
-                          {"layers", c.text.layers}, {"heads", c.text.heads}, {"ff_size", c.text.ff_size}, {"out_dim", c.text.out_dim}}},
+        {"mdm",
+         {{"njoints", m.njoints},
+          {"latent_dim", m.latent_dim},
+          {"ff_size", m.ff_size},
+          {"num_layers", m.num_layers},
+          {"num_heads", m.num_heads},
+          {"dropout", m.dropout},
+          {"text_dim", m.text_dim},
+          {"mask_frames", m.mask_frames}}},
+        {"text_encoder",
+         {{"kind", "glove_transformer"},
+          {"vocab", c.vocab},
+          {"model_dim", c.text.model_dim},
+          {"layers", c.text.layers},
+          {"heads", c.text.heads},
+          {"ff_size", c.text.ff_size},
+          {"out_dim", c.text.out_dim}}},
         {"diffusion", {{"schedule", "cosine"}, {"steps", c.diffusion_steps}, {"predict", "x0"}}},
         {"normalisation", {{"mean", "Mean.npy"}, {"std", "Std.npy"}}},
-        {"training", {{"dataset", c.dataset}, {"step", tr.step}, {"ema", c.ema_decay > 0}, {"precision", c.precision}, {"lambda_pos", c.lambda_pos},
-                      {"lambda_vel", c.lambda_vel}, {"lambda_foot", c.lambda_foot}, {"lambda_acc", c.lambda_acc}, {"acc_space", c.acc_space},
-                      {"augment", {{"swap", c.augment.swap}, {"dropout", c.augment.dropout}, {"neighbours", c.augment.neighbours},
-                                   {"min_similarity", c.augment.min_similarity}, {"search_words", c.augment.search_words}}}}},
-        {"caption_anchor", {{"captions", "captions.tsv"}, {"neighbours", kCaptionAnchorNeighbours}, {"weight", kCaptionAnchorWeight}}}};
+        {"training",
+         {{"dataset", c.dataset},
+          {"step", tr.step},
+          {"ema", c.ema_decay > 0},
+          {"precision", c.precision},
+          {"lambda_pos", c.lambda_pos},
+          {"lambda_vel", c.lambda_vel},
+          {"lambda_foot", c.lambda_foot},
+          {"lambda_acc", c.lambda_acc},
+          {"acc_space", c.acc_space},
+          {"augment",
+           {{"swap", c.augment.swap},
+            {"dropout", c.augment.dropout},
+            {"neighbours", c.augment.neighbours},
+            {"min_similarity", c.augment.min_similarity},
+            {"search_words", c.augment.search_words}}}}},
+        {"caption_anchor",
+         {{"captions", "captions.tsv"}, {"neighbours", kCaptionAnchorNeighbours}, {"weight", kCaptionAnchorWeight}}}};
     write_training_captions(c.out + "/captions.tsv", training_captions(data, c.dataset));
     write_file_atomic(c.out + "/model.json", model.dump(2) + "\n");
 }
@@ -356,14 +395,17 @@ torch::Generator noise_generator(const torch::Device& device, uint64_t seed, boo
 // A rank's own stream for the model's dropout masks (splitmix64 of seed, rank and the starting step), so the
 // ranks do not drop the same units in their different samples.
 void seed_rank_dropout(const torch::Device& device, uint64_t seed, int rank, int64_t step) {
-    const uint64_t z = splitmix64(seed + 0x9E3779B97F4A7C15ull * (static_cast<uint64_t>(rank) + 1) + 0xBF58476D1CE4E5B9ull * static_cast<uint64_t>(step));
-    at::Generator dropout = device.is_cpu() ? at::detail::getDefaultCPUGenerator() : at::globalContext().defaultGenerator(device);
+    const uint64_t z = splitmix64(seed + 0x9E3779B97F4A7C15ull * (static_cast<uint64_t>(rank) + 1) +
+                                  0xBF58476D1CE4E5B9ull * static_cast<uint64_t>(step));
+    at::Generator dropout =
+        device.is_cpu() ? at::detail::getDefaultCPUGenerator() : at::globalContext().defaultGenerator(device);
     dropout.set_current_seed(z);  // a handle sharing the default generator
 }
 
 // "cuda" alone means the GPU of this process's LOCAL_RANK when several processes share a machine.
 torch::Device training_device(const std::string& name, const ProcessGroupEnv& processes) {
-    if (name == "cuda" && processes.world_size > 1) return torch::Device(torch::kCUDA, static_cast<c10::DeviceIndex>(processes.local_rank));
+    if (name == "cuda" && processes.world_size > 1)
+        return torch::Device(torch::kCUDA, static_cast<c10::DeviceIndex>(processes.local_rank));
     return torch::Device(name);
 }
 
@@ -411,13 +453,19 @@ enum Rider : int64_t { kSimple, kPos, kVel, kFoot, kAcc, kTotal, kStop };
 
 // The model and text encoder, initialised from the configuration's seed (so every rank builds the same weights)
 // or loaded from a model folder (a fine-tuning), on the device; the optimiser and EMA come after the broadcast.
-Training new_training(const TrainConfig& c, const WordVectors& vocab, const torch::Device& device, const std::string& init_from) {
+Training new_training(const TrainConfig& c, const WordVectors& vocab, const torch::Device& device,
+                      const std::string& init_from) {
     torch::manual_seed(c.seed);
     MdmConfig mc = c.mdm;
     mc.text_dim = c.text.out_dim;
     mc.mask_frames = true;
-    Training tr{Mdm(mc), GloveTextEncoder(vocab, c.text), nullptr, {}, noise_generator(device, c.seed, c.processes.world_size > 1),
-                std::mt19937_64(c.seed + 1), 0};
+    Training tr{Mdm(mc),
+                GloveTextEncoder(vocab, c.text),
+                nullptr,
+                {},
+                noise_generator(device, c.seed, c.processes.world_size > 1),
+                std::mt19937_64(c.seed + 1),
+                0};
     if (!init_from.empty()) {
         load_state_dict(*tr.mdm, init_from + "/weights.safetensors");
         load_state_dict(*tr.text, init_from + "/text_encoder.safetensors");
@@ -429,14 +477,14 @@ Training new_training(const TrainConfig& c, const WordVectors& vocab, const torc
 
 // Everything a run keeps fixed from its first step to its last, beside the Training state.
 struct RunSetup {
-    BatchShare share;                // this rank's samples of the global batch
+    BatchShare share;  // this rank's samples of the global batch
     torch::Device device;
-    torch::TensorOptions draws_on;   // where t and the noise are drawn: the CPU when several ranks must agree
+    torch::TensorOptions draws_on;  // where t and the noise are drawn: the CPU when several ranks must agree
     GaussianDiffusion diffusion;
-    torch::Tensor mean, std;         // the dataset's feature statistics on the device (the losses de-normalise)
+    torch::Tensor mean, std;  // the dataset's feature statistics on the device (the losses de-normalise)
     Precision precision;
-    std::bernoulli_distribution drop;         // classifier-free guidance's caption dropout
-    std::optional<CaptionAugmenter> reword;   // caption augmentation, when configured
+    std::bernoulli_distribution drop;        // classifier-free guidance's caption dropout
+    std::optional<CaptionAugmenter> reword;  // caption augmentation, when configured
 };
 
 RunSetup run_setup(const TrainConfig& c, const Hml3dDataset& data, const WordVectors& vocab, const BatchShare& share,
@@ -473,9 +521,12 @@ StepBatch draw_step_batch(Training& tr, Hml3dDataset& data, const TrainConfig& c
     const Batch& b = s.drawn;
     std::vector<std::string> captions = b.captions;
     for (std::string& caption : captions)
-        if (run.drop(tr.dropout_rng)) caption.clear();
-        else if (run.reword) caption = run.reword->augment(caption, tr.dropout_rng);  // same stream: saved with the checkpoint
-    const torch::Tensor t_all = torch::randint(c.diffusion_steps, {b.size}, tr.generator, run.draws_on.dtype(torch::kInt64));
+        if (run.drop(tr.dropout_rng))
+            caption.clear();
+        else if (run.reword)
+            caption = run.reword->augment(caption, tr.dropout_rng);  // same stream: saved with the checkpoint
+    const torch::Tensor t_all =
+        torch::randint(c.diffusion_steps, {b.size}, tr.generator, run.draws_on.dtype(torch::kInt64));
     const torch::Tensor noise_all = torch::randn({b.size, b.channels, 1, b.frames}, tr.generator, run.draws_on);
     const int64_t lo = run.share.begin, n = run.share.size;
     const float* features = b.features.data() + static_cast<size_t>(lo) * static_cast<size_t>(b.frames * b.channels);
@@ -483,14 +534,15 @@ StepBatch draw_step_batch(Training& tr, Hml3dDataset& data, const TrainConfig& c
     s.lengths = torch::tensor(std::vector<int64_t>(b.lengths.begin() + lo, b.lengths.begin() + lo + n)).to(run.device);
     s.captions.assign(captions.begin() + lo, captions.begin() + lo + n);
     s.t = t_all.slice(0, lo, lo + n).to(run.device);
-    s.x_t = run.diffusion.q_sample(s.x0.permute({0, 2, 1}).unsqueeze(2), s.t, noise_all.slice(0, lo, lo + n).to(run.device));
+    s.x_t = run.diffusion.q_sample(s.x0.permute({0, 2, 1}).unsqueeze(2), s.t,
+                                   noise_all.slice(0, lo, lo + n).to(run.device));
     return s;
 }
 
 // Forward, losses, backward and the all-reduce that carries the loss terms and the stop flag (riders, in Rider
 // order, on the CPU), then the optimiser and EMA. Times each part on `clock`.
-std::vector<double> train_step(Training& tr, const StepBatch& s, const TrainConfig& c, const RunSetup& run, const DataParallel& group,
-                               bool out_of_time, PartClock& clock) {
+std::vector<double> train_step(Training& tr, const StepBatch& s, const TrainConfig& c, const RunSetup& run,
+                               const DataParallel& group, bool out_of_time, PartClock& clock) {
     // The text encoder (libtorch's own layers, a few tokens) stays in fp32; MDM's products run in bf16 when
     // asked, its output and the losses below in fp32.
     const torch::Tensor text = tr.text->encode(s.captions);
@@ -507,8 +559,12 @@ std::vector<double> train_step(Training& tr, const StepBatch& s, const TrainConf
     tr.optimiser->zero_grad();
     terms.total.backward();
     const torch::Tensor stop_flag = torch::full({1}, g_stop_requested || out_of_time ? 1.0f : 0.0f, s.x0.options());
-    const torch::Tensor losses = torch::stack({terms.simple, terms.pos, terms.vel, terms.foot, terms.acc, terms.total}).detach().to(torch::kFloat32);
-    const torch::Tensor riders = group.average_gradients(tr.parameters(), torch::cat({losses, stop_flag})).to(torch::kCPU, torch::kFloat64).contiguous();
+    const torch::Tensor losses = torch::stack({terms.simple, terms.pos, terms.vel, terms.foot, terms.acc, terms.total})
+                                     .detach()
+                                     .to(torch::kFloat32);
+    const torch::Tensor riders = group.average_gradients(tr.parameters(), torch::cat({losses, stop_flag}))
+                                     .to(torch::kCPU, torch::kFloat64)
+                                     .contiguous();
     clock.lap(clock.parts.backward);
     tr.optimiser->step();
     clock.lap(clock.parts.optimiser);
@@ -519,16 +575,17 @@ std::vector<double> train_step(Training& tr, const StepBatch& s, const TrainConf
 
 // Rank 0's log line (stderr and the metrics buffer) and, every save_every steps, the metrics appended, the
 // checkpoint and the model folder; whether it saved.
-bool log_and_save(Training& tr, const Hml3dDataset& data, const TrainConfig& c, const std::vector<double>& r, double seconds,
-                  int64_t first, bool last_step, std::string* metrics) {
+bool log_and_save(Training& tr, const Hml3dDataset& data, const TrainConfig& c, const std::vector<double>& r,
+                  double seconds, int64_t first, bool last_step, std::string* metrics) {
     if (tr.step % c.log_every == 0 || last_step) {
         const double rate = static_cast<double>(tr.step - first) / std::max(seconds, 1e-9);
-        const nlohmann::json line = {{"step", tr.step}, {"loss", r[kTotal]}, {"l_simple", r[kSimple]}, {"l_pos", r[kPos]},
-                                     {"l_vel", r[kVel]}, {"l_foot", r[kFoot]}, {"l_acc", r[kAcc]}, {"steps_per_s", rate}};
+        const nlohmann::json line = {{"step", tr.step},  {"loss", r[kTotal]},  {"l_simple", r[kSimple]},
+                                     {"l_pos", r[kPos]}, {"l_vel", r[kVel]},   {"l_foot", r[kFoot]},
+                                     {"l_acc", r[kAcc]}, {"steps_per_s", rate}};
         *metrics += line.dump() + "\n";
-        std::fprintf(stderr, "step %lld/%lld loss %.4f (simple %.4f acc %.4f) %.2f steps/s ETA %.0f s\n", static_cast<long long>(tr.step),
-                     static_cast<long long>(c.steps), r[kTotal], r[kSimple], r[kAcc], rate,
-                     static_cast<double>(c.steps - tr.step) / std::max(rate, 1e-9));
+        std::fprintf(stderr, "step %lld/%lld loss %.4f (simple %.4f acc %.4f) %.2f steps/s ETA %.0f s\n",
+                     static_cast<long long>(tr.step), static_cast<long long>(c.steps), r[kTotal], r[kSimple], r[kAcc],
+                     rate, static_cast<double>(c.steps - tr.step) / std::max(rate, 1e-9));
     }
     if (tr.step % c.save_every == 0 || last_step) {
         std::string previous;
@@ -555,12 +612,15 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
     const BatchShare share = batch_share(c.batch, c.processes.rank, c.processes.world_size);
     if (c.threads > 0) set_torch_threads(c.threads);
     Hml3dDataset data(c.dataset, c.split);
-    if (data.clips().empty()) throw Error(c.dataset, c.split, "at least one usable clip (40 to 199 frames with a caption)");
+    if (data.clips().empty())
+        throw Error(c.dataset, c.split, "at least one usable clip (40 to 199 frames with a caption)");
     // The feature space a run trains in: a fine-tuning's base model's (its weights were fitted to it, and a dataset
     // rebuilt with more clips has a slightly different Mean/Std), a resumed run's own as it saved it, else the
     // dataset's. The model folder written holds the same.
-    const std::string checkpoint = c.out + "/checkpoint.pt";  // asked for first: it, not Mean.npy, is what a resume needs
-    if (resume && !fs::exists(checkpoint)) throw Error(checkpoint, "file", "a checkpoint to resume from (train without --resume to start)");
+    const std::string checkpoint =
+        c.out + "/checkpoint.pt";  // asked for first: it, not Mean.npy, is what a resume needs
+    if (resume && !fs::exists(checkpoint))
+        throw Error(checkpoint, "file", "a checkpoint to resume from (train without --resume to start)");
     const std::string stats_from = resume ? c.out : init_from;
     if (!stats_from.empty()) data.use_stats(read_feature_stats(stats_from + "/Mean.npy", stats_from + "/Std.npy"));
     data.seed(c.seed);
@@ -569,17 +629,21 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
     Training tr = new_training(c, vocab, device, init_from);
     const DataParallel group(c.processes, device);
     group.broadcast_from_main(tr.parameters());  // the same seed already gave the same weights: this makes sure
-    tr.optimiser = std::make_unique<torch::optim::AdamW>(tr.parameters(), torch::optim::AdamWOptions(c.learning_rate).weight_decay(c.weight_decay));
+    tr.optimiser = std::make_unique<torch::optim::AdamW>(
+        tr.parameters(), torch::optim::AdamWOptions(c.learning_rate).weight_decay(c.weight_decay));
     if (c.ema_decay > 0)
         for (const torch::Tensor& p : tr.parameters()) tr.ema.push_back(p.detach().clone());
-    if (group.is_main()) claim_output_folder(c.out);  // marked as t2imu's: --resume continues in it (core/output_path.hpp)
+    if (group.is_main())
+        claim_output_folder(c.out);  // marked as t2imu's: --resume continues in it (core/output_path.hpp)
     if (resume) load_checkpoint(tr, data, checkpoint, device);
     if (c.processes.world_size > 1) seed_rank_dropout(device, c.seed, group.rank(), tr.step);
     RunSetup run = run_setup(c, data, vocab, share, device);
     std::string metrics;
     TrainProgress progress;
     const auto start = std::chrono::steady_clock::now();
-    const auto elapsed_s = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    const auto elapsed_s = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
     const int64_t first = tr.step, last = stop_after > 0 ? std::min(c.steps, tr.step + stop_after) : c.steps;
     int64_t last_saved = first;  // the step the model folder holds (0: nothing saved yet)
     g_stop_requested = false;
@@ -596,7 +660,8 @@ TrainProgress train_mdm(const TrainConfig& c, bool resume, const std::string& in
         // Every rank sees the same reduced loss, so all stop here; the step's update is never saved.
         if (!std::isfinite(r[kTotal]))
             throw Error(c.out, "step " + std::to_string(tr.step),
-                        last_saved > 0 ? "a finite loss (training stopped; the model folder stays at step " + std::to_string(last_saved) + ")"
+                        last_saved > 0 ? "a finite loss (training stopped; the model folder stays at step " +
+                                             std::to_string(last_saved) + ")"
                                        : std::string("a finite loss (training stopped before anything was saved)"),
                         std::to_string(r[kTotal]));
         progress.loss = r[kTotal];

@@ -3,12 +3,12 @@
 //
 // Every step: a batch (MDM's crop and caption rules, hml3d_dataset.hpp), t uniform in [0, T), x_t = q_sample,
 // the captions reworded when [augment] asks (caption_augment.hpp) and encoded (each replaced by the empty
-// caption with probability cond_dropout, which encodes to MDM's zero text feature: classifier-free guidance), x0_hat = MDM(x_t, t, text), then, each masked to valid
-// frames: L_simple = MSE(x0_hat, x0) on normalised features; L_pos = MSE of joint positions (metres) from a
-// differentiable recover_from_ric of the de-normalised features; L_vel = MDM's velocity term on the features;
-// L_foot = squared predicted velocity of the four foot joints where the ground truth's contact flag is 1;
-// L_acc = the paper's second-difference loss, on the normalised features or on joint positions (acc_space).
-// AdamW; optional EMA of the weights. Checkpoints (model, optimiser, EMA, step, both random generators'
+// caption with probability cond_dropout, which encodes to MDM's zero text feature: classifier-free guidance), x0_hat =
+// MDM(x_t, t, text), then, each masked to valid frames: L_simple = MSE(x0_hat, x0) on normalised features; L_pos = MSE
+// of joint positions (metres) from a differentiable recover_from_ric of the de-normalised features; L_vel = MDM's
+// velocity term on the features; L_foot = squared predicted velocity of the four foot joints where the ground truth's
+// contact flag is 1; L_acc = the paper's second-difference loss, on the normalised features or on joint positions
+// (acc_space). AdamW; optional EMA of the weights. Checkpoints (model, optimiser, EMA, step, both random generators'
 // states, the dataset's draw state) are written atomically every save_every steps and at the end, so a run
 // resumed after a kill continues on the same trajectory. Metrics go to metrics.jsonl, one line per log step.
 //
@@ -33,7 +33,7 @@ namespace t2imu {
 
 struct TrainConfig {
     std::string dataset, out, vocab, split = "train";
-    MdmConfig mdm;                 // latent_dim, ff_size, num_layers, num_heads, dropout (text_dim = text.out_dim)
+    MdmConfig mdm;  // latent_dim, ff_size, num_layers, num_heads, dropout (text_dim = text.out_dim)
     GloveEncoderConfig text;
     int diffusion_steps = 1000;
     int batch = 32;
@@ -43,13 +43,15 @@ struct TrainConfig {
     std::string acc_space = "features";  // or "joints"
     CaptionAugmentOptions augment;       // [augment]: the training captions reworded (text/caption_augment.hpp)
     int64_t save_every = 1000, log_every = 50;
-    std::string precision = "fp32";  // or "bf16": the forward's products in bfloat16, weights and losses fp32 (nn/autocast.hpp)
+    std::string precision =
+        "fp32";  // or "bf16": the forward's products in bfloat16, weights and losses fp32 (nn/autocast.hpp)
     uint64_t seed = 0;
     int threads = 0;
-    std::string device = "cpu";  // a torch device: cpu, cuda, cuda:1 (not in the TOML: where to train is not what to train)
-    ProcessGroupEnv processes;   // data-parallel ranks (torchrun's variables; not in the TOML either)
-    double max_minutes = 0;      // > 0: stop after the step that reaches this wall time, saved (a leased GPU's budget)
-    bool profile = false;        // on a GPU, wait for each part's kernels so the profile is exact (slower)
+    std::string device =
+        "cpu";  // a torch device: cpu, cuda, cuda:1 (not in the TOML: where to train is not what to train)
+    ProcessGroupEnv processes;  // data-parallel ranks (torchrun's variables; not in the TOML either)
+    double max_minutes = 0;     // > 0: stop after the step that reaches this wall time, saved (a leased GPU's budget)
+    bool profile = false;       // on a GPU, wait for each part's kernels so the profile is exact (slower)
 
     // Throws Error naming `path` and the dotted field ("train.learning_rate") for a missing or out-of-range
     // value: sizes from 1, heads dividing their width, rates and dropouts in [0, 1), lambdas from 0.
@@ -59,8 +61,9 @@ struct TrainConfig {
 // TOML: [data] dataset, vocab, split; [model] latent_dim, ff_size, num_layers, num_heads, dropout;
 // [text] model_dim, layers, heads, ff_size, dropout; [diffusion] steps; [train] batch, steps, learning_rate,
 // weight_decay, cond_dropout, ema_decay, seed, save_every, log_every, precision; [loss] lambda_pos, lambda_vel,
-// lambda_foot, lambda_acc, acc_space; [augment] swap, dropout, neighbours, min_similarity, search_words; `out` at the top level (the model folder). Read strictly
-// (core/toml_section.hpp): unknown keys and wrong types are refused by name; then validate().
+// lambda_foot, lambda_acc, acc_space; [augment] swap, dropout, neighbours, min_similarity, search_words; `out` at the
+// top level (the model folder). Read strictly (core/toml_section.hpp): unknown keys and wrong types are refused by
+// name; then validate().
 TrainConfig read_train_config(const std::string& path);
 
 // The EMA decay after `step` updates of this run: min(max_decay, (1 + step) / (10 + step)). Without the
@@ -84,8 +87,8 @@ struct StepProfile {
 
 struct TrainProgress {
     int64_t step = 0;
-    int64_t steps_run = 0;  // by this call: 0 when a resumed run was already at train.steps
-    double loss = 0;  // the last logged total
+    int64_t steps_run = 0;       // by this call: 0 when a resumed run was already at train.steps
+    double loss = 0;             // the last logged total
     bool stopped_early = false;  // by a signal or max_minutes, before its last step
     StepProfile profile;
 };
@@ -93,7 +96,8 @@ struct TrainProgress {
 // Trains into config.out (model.json, weights.safetensors, Mean.npy, Std.npy, checkpoint.pt, metrics.jsonl).
 // resume: continue from config.out/checkpoint.pt. init_from: start from another model folder's weights
 // (fine-tuning), with a fresh optimiser. `stop_after` > 0 ends after that many steps of this call (tests).
-TrainProgress train_mdm(const TrainConfig& config, bool resume, const std::string& init_from = "", int64_t stop_after = 0);
+TrainProgress train_mdm(const TrainConfig& config, bool resume, const std::string& init_from = "",
+                        int64_t stop_after = 0);
 
 // Asks a running train_mdm to finish its step, write its checkpoint and model, and return: safe to call from
 // a signal handler (the CLI calls it on SIGINT and SIGTERM, so `timeout -s INT` ends a run cleanly).

@@ -17,6 +17,7 @@ namespace t2imu {
 std::string map_activity(const std::string& dataset, const std::string& activity);
 
 // Merges fine classes into a coarse one when the other side only has the coarse one (see above).
-std::string coarsen_for(const std::string& label, const std::set<std::string>& this_side, const std::set<std::string>& other_side);
+std::string coarsen_for(const std::string& label, const std::set<std::string>& this_side,
+                        const std::set<std::string>& other_side);
 
 }  // namespace t2imu

@@ -7,7 +7,8 @@
 namespace t2imu {
 
 Confusion confusion_matrix(const std::vector<int>& truth, const std::vector<int>& predicted, int classes) {
-    if (truth.size() != predicted.size()) throw Error("metrics", "predictions", std::to_string(truth.size()), std::to_string(predicted.size()));
+    if (truth.size() != predicted.size())
+        throw Error("metrics", "predictions", std::to_string(truth.size()), std::to_string(predicted.size()));
     Confusion c(static_cast<size_t>(classes), std::vector<long>(static_cast<size_t>(classes), 0));
     for (size_t i = 0; i < truth.size(); ++i) {
         if (truth[i] < 0 || truth[i] >= classes || predicted[i] < 0 || predicted[i] >= classes)

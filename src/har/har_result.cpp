@@ -11,7 +11,8 @@ namespace {
 
 using nlohmann::json;
 
-std::vector<std::string> strings(const json& doc, const std::string& key, const std::string& path, const std::string& where = "") {
+std::vector<std::string> strings(const json& doc, const std::string& key, const std::string& path,
+                                 const std::string& where = "") {
     std::vector<std::string> out;
     const std::string field = (where.empty() ? "" : where + ".") + key;
     for (const json& s : json_array(doc, key, path, where)) {
@@ -23,8 +24,11 @@ std::vector<std::string> strings(const json& doc, const std::string& key, const 
 
 json run_record(const HarResult& r, size_t k) {
     const HarRun& run = r.runs[k];
-    json record = {{"name", k < r.run_names.size() ? r.run_names[k] : ""}, {"balanced_accuracy", run.balanced_accuracy},
-                   {"macro_f1", run.macro_f1}, {"epochs", run.epochs}, {"seconds_per_epoch", run.seconds_per_epoch},
+    json record = {{"name", k < r.run_names.size() ? r.run_names[k] : ""},
+                   {"balanced_accuracy", run.balanced_accuracy},
+                   {"macro_f1", run.macro_f1},
+                   {"epochs", run.epochs},
+                   {"seconds_per_epoch", run.seconds_per_epoch},
                    {"confusion", run.confusion}};
     if (!run.train_subjects.empty() || !run.test_subjects.empty()) {
         record["train_subjects"] = run.train_subjects;
@@ -32,7 +36,8 @@ json run_record(const HarResult& r, size_t k) {
     }
     if (!run.set_windows.empty()) {
         json per_set = json::object();
-        for (size_t i = 0; i < run.set_windows.size() && i < r.training_sets.size(); ++i) per_set[r.training_sets[i]] = run.set_windows[i];
+        for (size_t i = 0; i < run.set_windows.size() && i < r.training_sets.size(); ++i)
+            per_set[r.training_sets[i]] = run.set_windows[i];
         record["train_windows_per_set"] = per_set;
     }
     return record;
@@ -41,10 +46,12 @@ json run_record(const HarResult& r, size_t k) {
 Confusion read_confusion(const json& record, size_t classes, const std::string& path, const std::string& where) {
     Confusion c;
     for (const json& row : json_array(record, "confusion", path, where)) {
-        if (!row.is_array() || row.size() != classes) throw Error(path, where + ".confusion", std::to_string(classes) + " counts per row");
+        if (!row.is_array() || row.size() != classes)
+            throw Error(path, where + ".confusion", std::to_string(classes) + " counts per row");
         c.emplace_back();
         for (const json& n : row) {
-            if (!n.is_number_integer() || n.get<long>() < 0) throw Error(path, where + ".confusion", "whole counts from 0", n.dump());
+            if (!n.is_number_integer() || n.get<long>() < 0)
+                throw Error(path, where + ".confusion", "whole counts from 0", n.dump());
             c.back().push_back(n.get<long>());
         }
     }
@@ -65,7 +72,8 @@ HarRun read_run(const json& record, const HarResult& r, const std::string& path,
     }
     if (record.contains("train_windows_per_set")) {
         const json& per_set = json_object(record, "train_windows_per_set", path, where);
-        for (const std::string& set : r.training_sets) run.set_windows.push_back(json_count(per_set, set, path, where + ".train_windows_per_set"));
+        for (const std::string& set : r.training_sets)
+            run.set_windows.push_back(json_count(per_set, set, path, where + ".train_windows_per_set"));
     }
     return run;
 }
@@ -109,22 +117,33 @@ std::string har_result_json(const HarResult& r, const std::string& description) 
     }
     json per_class, records = json::array();
     for (size_t k = 0; k < r.runs.size(); ++k) records.push_back(run_record(r, k));
-    for (size_t i = 0; i < K; ++i) per_class[r.classes[i]] = recall_n[i] ? json(recall[i] / recall_n[i]) : json(nullptr);
-    json j = {{"description", description}, {"classes", r.classes}, {"balanced_accuracy", summary(&HarRun::balanced_accuracy)},
-              {"macro_f1", summary(&HarRun::macro_f1)}, {"per_class_recall", per_class}, {"confusion", total},
-              {"run_names", r.run_names}, {"train_windows", r.train_windows}, {"test_windows", r.test_windows},
-              {"epochs_total", epochs}, {"seconds_per_epoch", epochs > 0 ? seconds / epochs : 0.0}};
+    for (size_t i = 0; i < K; ++i)
+        per_class[r.classes[i]] = recall_n[i] ? json(recall[i] / recall_n[i]) : json(nullptr);
+    json j = {{"description", description},
+              {"classes", r.classes},
+              {"balanced_accuracy", summary(&HarRun::balanced_accuracy)},
+              {"macro_f1", summary(&HarRun::macro_f1)},
+              {"per_class_recall", per_class},
+              {"confusion", total},
+              {"run_names", r.run_names},
+              {"train_windows", r.train_windows},
+              {"test_windows", r.test_windows},
+              {"epochs_total", epochs},
+              {"seconds_per_epoch", epochs > 0 ? seconds / epochs : 0.0}};
     if (!r.training_sets.empty()) {
         j["training_sets"] = r.training_sets;
         j["shares"] = r.shares;
         j["protocol"] = r.protocol;
-        if (r.protocol == "finetune") j["finetune"] = {{"epochs", r.finetune_epochs}, {"learning_rate", r.finetune_learning_rate}};
+        if (r.protocol == "finetune")
+            j["finetune"] = {{"epochs", r.finetune_epochs}, {"learning_rate", r.finetune_learning_rate}};
     }
     j["run_records"] = records;
     return j.dump(2) + "\n";
 }
 
-bool is_har_result(const json& doc) { return doc.is_object() && doc.contains("run_records") && doc.contains("classes"); }
+bool is_har_result(const json& doc) {
+    return doc.is_object() && doc.contains("run_records") && doc.contains("classes");
+}
 
 HarResult parse_har_result(const json& j, const std::string& path) {
     HarResult r;
@@ -134,13 +153,16 @@ HarResult parse_har_result(const json& j, const std::string& path) {
     if (j.contains("training_sets")) {
         r.training_sets = strings(j, "training_sets", path);
         for (const json& s : json_array(j, "shares", path)) {
-            if (!s.is_number() || !(s.get<double>() > 0 && s.get<double>() <= 1)) throw Error(path, "shares", "shares above 0, at most 1", s.dump());
+            if (!s.is_number() || !(s.get<double>() > 0 && s.get<double>() <= 1))
+                throw Error(path, "shares", "shares above 0, at most 1", s.dump());
             r.shares.push_back(s.get<double>());
         }
         r.protocol = json_string(j, "protocol", path);
-        if (r.protocol != "mix" && r.protocol != "finetune") throw Error(path, "protocol", "mix or finetune", r.protocol);
+        if (r.protocol != "mix" && r.protocol != "finetune")
+            throw Error(path, "protocol", "mix or finetune", r.protocol);
         if (r.protocol == "finetune") {
-            r.finetune_epochs = static_cast<int>(json_count(json_object(j, "finetune", path), "epochs", path, "finetune"));
+            r.finetune_epochs =
+                static_cast<int>(json_count(json_object(j, "finetune", path), "epochs", path, "finetune"));
             r.finetune_learning_rate = json_number(json_object(j, "finetune", path), "learning_rate", path, "finetune");
         }
     }
@@ -171,7 +193,8 @@ HarResult merge_har_results(const std::vector<HarResult>& parts) {
             all.train_windows += p.train_windows;
             all.test_windows += p.test_windows;
         } else if (p.train_windows != parts.front().train_windows || p.test_windows != parts.front().test_windows) {
-            throw Error("har results", "train_windows", "the same windows in every part (or runs with their own subject draws)");
+            throw Error("har results", "train_windows",
+                        "the same windows in every part (or runs with their own subject draws)");
         }
         all.runs.insert(all.runs.end(), p.runs.begin(), p.runs.end());
         all.run_names.insert(all.run_names.end(), p.run_names.begin(), p.run_names.end());

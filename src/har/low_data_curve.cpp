@@ -30,7 +30,11 @@ json low_data_curves_json(const std::vector<LowDataCurve>& curves) {
             json points = json::array();
             for (const LowDataPoint& p : a.points) {
                 const ScoreSummary s = p.balanced_accuracy();
-                points.push_back({{"label", p.label}, {"train_subjects", p.train_subjects}, {"draws", p.draws}, {"mean", s.mean}, {"sd", s.sd}});
+                points.push_back({{"label", p.label},
+                                  {"train_subjects", p.train_subjects},
+                                  {"draws", p.draws},
+                                  {"mean", s.mean},
+                                  {"sd", s.sd}});
             }
             arms.push_back({{"name", a.name}, {"points", points}});
         }
@@ -79,7 +83,8 @@ std::vector<LowDataCurve> parse_low_data_curves(const json& doc, const std::stri
             const std::string at = where + ".arms." + std::to_string(a);
             LowDataArm arm{json_string(arms[a], "name", path, at), {}};
             const json& points = json_array(arms[a], "points", path, at);
-            for (size_t k = 0; k < points.size(); ++k) arm.points.push_back(read_point(points[k], path, at + ".points." + std::to_string(k)));
+            for (size_t k = 0; k < points.size(); ++k)
+                arm.points.push_back(read_point(points[k], path, at + ".points." + std::to_string(k)));
             c.arms.push_back(arm);
         }
         curves.push_back(c);

@@ -11,8 +11,8 @@
 namespace t2imu {
 
 struct LowDataPoint {
-    std::string label;        // "0", "1", ..., or "all"
-    int train_subjects = 0;   // K: real subjects trained on ("all": every subject but the ones tested)
+    std::string label;          // "0", "1", ..., or "all"
+    int train_subjects = 0;     // K: real subjects trained on ("all": every subject but the ones tested)
     std::vector<double> draws;  // balanced accuracy per draw of subjects
     ScoreSummary balanced_accuracy() const;
 };
@@ -30,7 +30,8 @@ struct LowDataCurve {
     std::vector<LowDataArm> arms;
 };
 
-// {"low_data_curves": [{real_set, classes, labels, arms: [{name, points: [{label, train_subjects, draws, mean, sd}]}]}]}
+// {"low_data_curves": [{real_set, classes, labels, arms: [{name, points: [{label, train_subjects, draws, mean,
+// sd}]}]}]}
 nlohmann::json low_data_curves_json(const std::vector<LowDataCurve>& curves);
 std::vector<LowDataCurve> parse_low_data_curves(const nlohmann::json& doc, const std::string& path);
 bool is_low_data_curves(const nlohmann::json& doc);

@@ -60,11 +60,16 @@ std::vector<double> resample_channel(const std::vector<double>& x, double rate_i
 }
 
 void WindowOptions::validate() const {
-    if (!(rate_hz > 0 && rate_hz <= 10000)) throw Error("windows", "--rate", "0 < HZ <= 10000", std::to_string(rate_hz));
-    if (!(window_s > 0 && window_s <= 3600)) throw Error("windows", window_option, "0 < SECONDS <= 3600", std::to_string(window_s));
-    if (!(overlap >= 0 && overlap < 1)) throw Error("windows", "--overlap", "0 <= OVERLAP < 1", std::to_string(overlap));
+    if (!(rate_hz > 0 && rate_hz <= 10000))
+        throw Error("windows", "--rate", "0 < HZ <= 10000", std::to_string(rate_hz));
+    if (!(window_s > 0 && window_s <= 3600))
+        throw Error("windows", window_option, "0 < SECONDS <= 3600", std::to_string(window_s));
+    if (!(overlap >= 0 && overlap < 1))
+        throw Error("windows", "--overlap", "0 <= OVERLAP < 1", std::to_string(overlap));
     if (std::lround(window_s * rate_hz) < min_window_samples)
-        throw Error(window_option, std::to_string(window_s) + " s", "at least " + std::to_string(min_window_samples) + " samples at --rate " + std::to_string(rate_hz) + " Hz");
+        throw Error(
+            window_option, std::to_string(window_s) + " s",
+            "at least " + std::to_string(min_window_samples) + " samples at --rate " + std::to_string(rate_hz) + " Hz");
 }
 
 WindowSet make_windows(const std::vector<ImuRecording>& recordings, const WindowOptions& o) {
@@ -73,7 +78,9 @@ WindowSet make_windows(const std::vector<ImuRecording>& recordings, const Window
     if (positions.empty()) {
         std::set<std::string> all;
         for (const ImuRecording& r : recordings) all.insert(r.position);
-        if (all.size() != 1) throw Error(o.positions_option, "positions", "a choice: the data set holds " + std::to_string(all.size()) + " positions");
+        if (all.size() != 1)
+            throw Error(o.positions_option, "positions",
+                        "a choice: the data set holds " + std::to_string(all.size()) + " positions");
         positions = {*all.begin()};
     }
     for (const std::string& p : positions) check_position_held(recordings, p, o.positions_option, /*sided=*/true);
@@ -109,7 +116,8 @@ WindowSet make_windows(const std::vector<ImuRecording>& recordings, const Window
         longest = std::max(longest, n);
         for (size_t start = 0; start + static_cast<size_t>(w.length) <= n; start += static_cast<size_t>(step)) {
             for (int k = 0; k < w.length; ++k)
-                for (const std::vector<double>& ch : channels) w.data.push_back(static_cast<float>(ch[start + static_cast<size_t>(k)]));
+                for (const std::vector<double>& ch : channels)
+                    w.data.push_back(static_cast<float>(ch[start + static_cast<size_t>(k)]));
             w.labels.push_back(label);
             w.subjects.push_back(chosen[0]->dataset + ":" + chosen[0]->subject);
             w.groups.push_back(key);
@@ -117,7 +125,8 @@ WindowSet make_windows(const std::vector<ImuRecording>& recordings, const Window
     }
     if (w.size() == 0 && longest > 0 && longest < static_cast<size_t>(w.length)) {
         char expected[64], got[32];
-        std::snprintf(expected, sizeof expected, "at most the longest trial, %.3g s", static_cast<double>(longest) / o.rate_hz);
+        std::snprintf(expected, sizeof expected, "at most the longest trial, %.3g s",
+                      static_cast<double>(longest) / o.rate_hz);
         std::snprintf(got, sizeof got, "%g s", o.window_s);
         throw Error("windows", o.window_option, expected, got);
     }
@@ -132,7 +141,8 @@ WindowSet relabel(const WindowSet& w, const std::map<std::string, std::string>& 
     for (size_t i = 0; i < w.size(); ++i) {
         const auto it = rename.find(w.labels[i]);
         if (it == rename.end() || it->second.empty()) continue;
-        out.data.insert(out.data.end(), w.data.begin() + static_cast<std::ptrdiff_t>(i * per), w.data.begin() + static_cast<std::ptrdiff_t>((i + 1) * per));
+        out.data.insert(out.data.end(), w.data.begin() + static_cast<std::ptrdiff_t>(i * per),
+                        w.data.begin() + static_cast<std::ptrdiff_t>((i + 1) * per));
         out.labels.push_back(it->second);
         out.subjects.push_back(w.subjects[i]);
         out.groups.push_back(w.groups[i]);

@@ -1,4 +1,5 @@
-// IMU recordings -> fixed-length, labelled windows for a classifier (the paper: 20 Hz, 2 s, each window overlapping the next by half).
+// IMU recordings -> fixed-length, labelled windows for a classifier (the paper: 20 Hz, 2 s, each window overlapping the
+// next by half).
 //
 // Positions: recordings of one trial at several positions are grouped by their path with the trailing
 // `_<position>.csv` or `/<position>.csv` removed; a window holds the chosen positions' channels side by side
@@ -19,8 +20,8 @@ namespace t2imu {
 
 struct WindowOptions {
     double rate_hz = 20, window_s = 2, overlap = 0.5;
-    bool gyro = false;                   // acc only, or acc and gyr
-    std::vector<std::string> positions;  // empty: the data set must hold a single position
+    bool gyro = false;                             // acc only, or acc and gyr
+    std::vector<std::string> positions;            // empty: the data set must hold a single position
     std::string positions_option = "--positions";  // the option errors about `positions` name
     std::string window_option = "--window";        // likewise for window_s
     long min_window_samples = 1;                   // what the windows feed needs (catch22: 10)
@@ -30,11 +31,11 @@ struct WindowOptions {
 };
 
 struct WindowSet {
-    int length = 0, channels = 0;      // samples per window, channels per sample
-    std::vector<float> data;           // [windows, length, channels]
-    std::vector<std::string> labels;   // evaluation class per window
-    std::vector<std::string> subjects; // per window
-    std::vector<std::string> groups;   // per window: the trial it came from (for splits without leakage)
+    int length = 0, channels = 0;       // samples per window, channels per sample
+    std::vector<float> data;            // [windows, length, channels]
+    std::vector<std::string> labels;    // evaluation class per window
+    std::vector<std::string> subjects;  // per window
+    std::vector<std::string> groups;    // per window: the trial it came from (for splits without leakage)
     size_t size() const { return labels.size(); }
 };
 

@@ -20,7 +20,8 @@ std::vector<double> moving_mean(const std::vector<double>& x, size_t width) {
     std::vector<double> out(x.size());
     for (std::ptrdiff_t k = 0; k < n; ++k) {
         double sum = 0;
-        for (std::ptrdiff_t j = k - w / 2; j < k - w / 2 + w; ++j) sum += x[static_cast<size_t>(std::clamp<std::ptrdiff_t>(j, 0, n - 1))];
+        for (std::ptrdiff_t j = k - w / 2; j < k - w / 2 + w; ++j)
+            sum += x[static_cast<size_t>(std::clamp<std::ptrdiff_t>(j, 0, n - 1))];
         out[static_cast<size_t>(k)] = sum / static_cast<double>(w);
     }
     return out;

@@ -29,8 +29,8 @@
 namespace t2imu {
 
 struct BodyVibration {
-    double gain = 0;        // vibration sd per m/s^2 of the motion's local rms level; 0 = off
-    double low_hz = 5;      // band edges (Hz): the band where the real board exceeds ours most
+    double gain = 0;    // vibration sd per m/s^2 of the motion's local rms level; 0 = off
+    double low_hz = 5;  // band edges (Hz): the band where the real board exceeds ours most
     double high_hz = 12;
     bool enabled() const { return gain > 0; }  // ranges: realism.cpp's table
 };

@@ -11,12 +11,17 @@ namespace t2imu {
 ImuSignals resample_imu_signals(const ImuSignals& s, double rate_hz) {
     if (s.rate_hz == rate_hz || s.t.empty()) return s;
     const long in = std::lround(s.rate_hz), out = std::lround(rate_hz);
-    if (std::fabs(s.rate_hz - static_cast<double>(in)) > 1e-9 || std::fabs(rate_hz - static_cast<double>(out)) > 1e-9 || in <= 0 || out <= 0)
-        throw Error("--rate", "rate", "whole numbers of Hz for the device's rate and the output's", std::to_string(s.rate_hz) + " and " + std::to_string(rate_hz));
+    if (std::fabs(s.rate_hz - static_cast<double>(in)) > 1e-9 || std::fabs(rate_hz - static_cast<double>(out)) > 1e-9 ||
+        in <= 0 || out <= 0)
+        throw Error("--rate", "rate", "whole numbers of Hz for the device's rate and the output's",
+                    std::to_string(s.rate_hz) + " and " + std::to_string(rate_hz));
     const long g = std::gcd(in, out);
     const int up = static_cast<int>(out / g), down = static_cast<int>(in / g);
     // No sample past the last input instant: the resampler's tail would be the edge padding's line.
-    const size_t n = static_cast<size_t>(std::floor(static_cast<double>(s.t.size() - 1) * static_cast<double>(out) / static_cast<double>(in) + 1e-9)) + 1;
+    const size_t n =
+        static_cast<size_t>(std::floor(
+            static_cast<double>(s.t.size() - 1) * static_cast<double>(out) / static_cast<double>(in) + 1e-9)) +
+        1;
     ImuSignals r;
     r.rate_hz = rate_hz;
     r.acc.assign(n, Eigen::Vector3d::Zero());

@@ -12,18 +12,28 @@ using Eigen::Vector3d;
 double landing_transmissibility(int segment) {
     using namespace smpl22;
     switch (segment) {
-        case left_knee: case right_knee: case left_ankle: case right_ankle: case left_foot: case right_foot: return 1.0;
-        case left_hip: case right_hip: return 0.6;
+        case left_knee:
+        case right_knee:
+        case left_ankle:
+        case right_ankle:
+        case left_foot:
+        case right_foot: return 1.0;
+        case left_hip:
+        case right_hip: return 0.6;
         case pelvis: return 0.4;
-        case spine1: case spine2: return 0.35;
-        case spine3: case left_collar: case right_collar: return 0.3;
-        case neck: case head: return 0.2;
+        case spine1:
+        case spine2: return 0.35;
+        case spine3:
+        case left_collar:
+        case right_collar: return 0.3;
+        case neck:
+        case head: return 0.2;
         default: return 0.15;  // shoulders (upper arms), elbows (forearms), wrists (hands)
     }
 }
 
-ImpactPulses impact_pulses(const std::vector<Landing>& landings, double gain, double duration_s, int segment, double fps,
-                           const LandingSpread& spread, uint64_t seed) {
+ImpactPulses impact_pulses(const std::vector<Landing>& landings, double gain, double duration_s, int segment,
+                           double fps, const LandingSpread& spread, uint64_t seed) {
     ImpactPulses p;
     p.duration_s = duration_s;
     p.smoothing_s = 1 / fps;

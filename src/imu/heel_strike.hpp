@@ -35,17 +35,17 @@ struct LandingSpread {
 };
 
 struct ImpactPulses {
-    std::vector<double> time_s;             // per landing: contact time (s)
-    std::vector<Eigen::Vector3d> delta_v;   // per landing: velocity change at the sensor (m/s, world, Y up)
-    double duration_s = 0.04;             // the sharp landing
-    double smoothing_s = 0.05;            // the frames' spread: one frame period
+    std::vector<double> time_s;            // per landing: contact time (s)
+    std::vector<Eigen::Vector3d> delta_v;  // per landing: velocity change at the sensor (m/s, world, Y up)
+    double duration_s = 0.04;              // the sharp landing
+    double smoothing_s = 0.05;             // the frames' spread: one frame period
     // The extra world acceleration (m/s^2, Y up) at time t (s).
     Eigen::Vector3d acceleration(double t) const;
 };
 
 // Pulses for a sensor on `segment`: delta_v = gain (m/s at the shank) x transmissibility upwards, spread as
 // above with draws from `seed` in landing order; smoothing = 1 / fps.
-ImpactPulses impact_pulses(const std::vector<Landing>& landings, double gain, double duration_s, int segment, double fps,
-                           const LandingSpread& spread = {}, uint64_t seed = 0);
+ImpactPulses impact_pulses(const std::vector<Landing>& landings, double gain, double duration_s, int segment,
+                           double fps, const LandingSpread& spread = {}, uint64_t seed = 0);
 
 }  // namespace t2imu

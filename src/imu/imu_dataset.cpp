@@ -15,7 +15,8 @@ namespace t2imu {
 
 namespace {
 
-const std::vector<std::string> kColumns = {"path", "dataset", "subject", "activity", "position", "rate_hz", "n_samples", "units"};
+const std::vector<std::string> kColumns = {"path",     "dataset", "subject",   "activity",
+                                           "position", "rate_hz", "n_samples", "units"};
 const std::vector<std::string> kSampleColumns = {"t", "acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z"};
 
 std::string sample_header() {
@@ -28,7 +29,8 @@ void load_samples(const std::string& dir, ImuRecording& r, size_t expected) {
     const CsvTable t = read_csv(dir + "/" + r.path);
     if (t.header != kSampleColumns) throw Error(t.source, "header", sample_header());
     if (t.rows.size() != expected)
-        throw Error(t.source, "rows", std::to_string(expected) + " samples as the manifest says", std::to_string(t.rows.size()));
+        throw Error(t.source, "rows", std::to_string(expected) + " samples as the manifest says",
+                    std::to_string(t.rows.size()));
     r.t.resize(t.rows.size());
     r.samples.resize(t.rows.size());
     for (size_t i = 0; i < t.rows.size(); ++i) {
@@ -37,9 +39,11 @@ void load_samples(const std::string& dir, ImuRecording& r, size_t expected) {
             r.samples[i][c] = t.number(i, c + 1);
             // A NaN would spread through resampling and normalisation into every window and the trained network.
             if (!std::isfinite(r.samples[i][c]))
-                throw Error(t.source, "row " + std::to_string(i + 2) + " column '" + kSampleColumns[c + 1] + "'", "a finite number", "'" + t.rows[i][c + 1] + "'");
+                throw Error(t.source, "row " + std::to_string(i + 2) + " column '" + kSampleColumns[c + 1] + "'",
+                            "a finite number", "'" + t.rows[i][c + 1] + "'");
         }
-        if (!std::isfinite(r.t[i]) || (i > 0 && !(r.t[i] > r.t[i - 1]))) throw Error(t.source, "row " + std::to_string(i + 2), "finite, increasing time");
+        if (!std::isfinite(r.t[i]) || (i > 0 && !(r.t[i] > r.t[i - 1])))
+            throw Error(t.source, "row " + std::to_string(i + 2), "finite, increasing time");
     }
 }
 
@@ -51,11 +55,13 @@ constexpr double kMaxTime = 1e9;    // s
 // Refuses a row the reader would refuse or that would be a wall of digits, naming the file, row and column.
 void check_sample_row(const std::string& file, size_t row, double t, const double* six) {
     const auto refuse = [&](size_t column, double v, const char* expected) {
-        throw Error(file, "row " + std::to_string(row + 2) + " column '" + kSampleColumns[column] + "'", expected, general_text(v, 6));
+        throw Error(file, "row " + std::to_string(row + 2) + " column '" + kSampleColumns[column] + "'", expected,
+                    general_text(v, 6));
     };
     if (!(std::isfinite(t) && std::fabs(t) <= kMaxTime)) refuse(0, t, "a finite time within 1e9 s");
     for (size_t c = 0; c < 6; ++c)
-        if (!(std::isfinite(six[c]) && std::fabs(six[c]) <= kMaxSample)) refuse(c + 1, six[c], "a finite sample within ±1e6 (m/s², rad/s)");
+        if (!(std::isfinite(six[c]) && std::fabs(six[c]) <= kMaxSample))
+            refuse(c + 1, six[c], "a finite sample within ±1e6 (m/s², rad/s)");
 }
 
 void append_sample_row(std::string& out, double t, const double* six, int decimals) {
@@ -78,7 +84,8 @@ std::vector<ImuRecording> read_imu_dataset(const std::string& dir, bool load) {
     for (size_t r = 0; r < m.rows.size(); ++r) {
         for (size_t c = 0; c < m.header.size() && c < m.rows[r].size(); ++c)  // names go into JSON and reports
             if (first_invalid_utf8(m.rows[r][c]) != std::string::npos)
-                throw Error(m.source, "row " + std::to_string(r + 2) + " column '" + m.header[c] + "'", "UTF-8 text", "bytes that are not UTF-8");
+                throw Error(m.source, "row " + std::to_string(r + 2) + " column '" + m.header[c] + "'", "UTF-8 text",
+                            "bytes that are not UTF-8");
         ImuRecording rec;
         rec.path = m.rows[r][m.column("path")];
         confined_path(dir, rec.path, m.source + " row " + std::to_string(r + 2) + " column 'path'");
@@ -88,12 +95,15 @@ std::vector<ImuRecording> read_imu_dataset(const std::string& dir, bool load) {
         rec.position = m.rows[r][m.column("position")];
         rec.rate_hz = m.number(r, m.column("rate_hz"));
         if (!(rec.rate_hz > 0 && std::isfinite(rec.rate_hz)))
-            throw Error(m.source, "row " + std::to_string(r + 2) + " column 'rate_hz'", "a positive rate", "'" + m.rows[r][m.column("rate_hz")] + "'");
+            throw Error(m.source, "row " + std::to_string(r + 2) + " column 'rate_hz'", "a positive rate",
+                        "'" + m.rows[r][m.column("rate_hz")] + "'");
         for (size_t c = 0; c < m.header.size(); ++c)
-            if (std::find(kColumns.begin(), kColumns.end(), m.header[c]) == kColumns.end()) rec.extra[m.header[c]] = m.rows[r][c];
+            if (std::find(kColumns.begin(), kColumns.end(), m.header[c]) == kColumns.end())
+                rec.extra[m.header[c]] = m.rows[r][c];
         const double n = m.number(r, m.column("n_samples"));
         if (!(n >= 0 && n <= 1e12 && n == std::floor(n)))
-            throw Error(m.source, "row " + std::to_string(r + 2) + " column 'n_samples'", "a whole number of samples from 0", "'" + m.rows[r][m.column("n_samples")] + "'");
+            throw Error(m.source, "row " + std::to_string(r + 2) + " column 'n_samples'",
+                        "a whole number of samples from 0", "'" + m.rows[r][m.column("n_samples")] + "'");
         rec.n_samples = static_cast<size_t>(n);
         if (load) load_samples(dir, rec, rec.n_samples);
         out.push_back(std::move(rec));
@@ -133,7 +143,8 @@ void write_imu_recording(const std::string& path, const ImuSignals& s, int decim
     write_file_atomic(path, text);
 }
 
-void write_imu_manifest(const std::string& dir, const std::vector<ImuRecording>& recordings, const std::vector<std::string>& extra_order) {
+void write_imu_manifest(const std::string& dir, const std::vector<ImuRecording>& recordings,
+                        const std::vector<std::string>& extra_order) {
     CsvTable manifest;
     manifest.header = kColumns;
     std::set<std::string> extra;
@@ -145,17 +156,27 @@ void write_imu_manifest(const std::string& dir, const std::vector<ImuRecording>&
     extra_columns.insert(extra_columns.end(), extra.begin(), extra.end());
     manifest.header.insert(manifest.header.end(), extra_columns.begin(), extra_columns.end());
     for (const ImuRecording& r : recordings) {
-        std::vector<std::string> row = {r.path, r.dataset, r.subject, r.activity, r.position, general_text(r.rate_hz, 6), std::to_string(r.n_samples), kImuUnits};
+        std::vector<std::string> row = {r.path,
+                                        r.dataset,
+                                        r.subject,
+                                        r.activity,
+                                        r.position,
+                                        general_text(r.rate_hz, 6),
+                                        std::to_string(r.n_samples),
+                                        kImuUnits};
         for (const std::string& k : extra_columns) row.push_back(r.extra.count(k) ? r.extra.at(k) : "");
         manifest.rows.push_back(row);
     }
     write_csv(dir + "/manifest.csv", manifest);
 }
 
-void check_position_held(const std::vector<ImuRecording>& recordings, const std::string& position, const std::string& option, bool sided) {
+void check_position_held(const std::vector<ImuRecording>& recordings, const std::string& position,
+                         const std::string& option, bool sided) {
     std::set<std::string> held;
     for (const ImuRecording& r : recordings) held.insert(r.position);
-    const auto matches = [&](const std::string& h) { return h == position || (sided && (h == "left_" + position || h == "right_" + position)); };
+    const auto matches = [&](const std::string& h) {
+        return h == position || (sided && (h == "left_" + position || h == "right_" + position));
+    };
     if (std::any_of(held.begin(), held.end(), matches)) return;
     std::string list;
     for (const std::string& h : held) list += (list.empty() ? "" : ", ") + h;

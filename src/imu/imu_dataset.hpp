@@ -29,9 +29,9 @@ struct ImuRecording {
     std::string path;  // relative to the dataset folder
     std::string dataset, subject, activity, position;
     double rate_hz = 0;
-    std::map<std::string, std::string> extra;  // optional manifest columns (source, prompt, body, gyro_flag, ...)
-    size_t n_samples = 0;                      // the manifest's count; samples.size() wherever samples are held
-    std::vector<double> t;                     // seconds
+    std::map<std::string, std::string> extra;    // optional manifest columns (source, prompt, body, gyro_flag, ...)
+    size_t n_samples = 0;                        // the manifest's count; samples.size() wherever samples are held
+    std::vector<double> t;                       // seconds
     std::vector<std::array<double, 6>> samples;  // acc xyz, gyr xyz
 };
 
@@ -43,7 +43,8 @@ std::vector<ImuRecording> read_imu_dataset(const std::string& dir, bool load_sam
 // Error(option, position, "a position the data set holds (LIST)") when no recording is at `position`; with
 // `sided`, left_POSITION and right_POSITION count as POSITION. A wanted position nothing matches is a typo or
 // the wrong data set, never an empty result.
-void check_position_held(const std::vector<ImuRecording>& recordings, const std::string& position, const std::string& option, bool sided = false);
+void check_position_held(const std::vector<ImuRecording>& recordings, const std::string& position,
+                         const std::string& option, bool sided = false);
 
 void write_imu_dataset(const std::string& dir, const std::vector<ImuRecording>& recordings, int decimals = 4);
 
@@ -53,6 +54,7 @@ void write_imu_recording(const std::string& path, const ImuSignals& signals, int
 
 // The manifest alone (atomic), from the recordings' fields and n_samples; their CSVs must already be written.
 // Extra columns are the union of the recordings' `extra` keys, in `extra_order` first, then alphabetically.
-void write_imu_manifest(const std::string& dir, const std::vector<ImuRecording>& recordings, const std::vector<std::string>& extra_order = {});
+void write_imu_manifest(const std::string& dir, const std::vector<ImuRecording>& recordings,
+                        const std::vector<std::string>& extra_order = {});
 
 }  // namespace t2imu

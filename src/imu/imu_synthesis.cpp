@@ -34,7 +34,8 @@ SplinePose evaluate_pose(const CubicSpline& ps, const CubicSpline& qs, double t)
 }
 
 // The sensor on its attachment, at an internal rate, then box-filtered down to rate_hz (see the header).
-void synthesize_attached(const CubicSpline& ps, const CubicSpline& qs, double rate_hz, const AttachmentDynamics& dyn, ImuSignals* out) {
+void synthesize_attached(const CubicSpline& ps, const CubicSpline& qs, double rate_hz, const AttachmentDynamics& dyn,
+                         ImuSignals* out) {
     const int over = static_cast<int>(std::ceil(kAttachmentRateHz / rate_hz));
     const double dt = 1 / (rate_hz * over);
     const size_t n = static_cast<size_t>(std::floor(ps.duration() / dt + 1e-9)) + 1;
@@ -49,9 +50,11 @@ void synthesize_attached(const CubicSpline& ps, const CubicSpline& qs, double ra
     }
     for (size_t i = 0; i < n; ++i) {
         const size_t a = i == 0 ? 0 : i - 1, b = std::min(n - 1, i + 1);
-        alpha[i] = b > a ? Eigen::Vector3d((omega[b] - omega[a]) / (static_cast<double>(b - a) * dt)) : Eigen::Vector3d::Zero();
+        alpha[i] = b > a ? Eigen::Vector3d((omega[b] - omega[a]) / (static_cast<double>(b - a) * dt))
+                         : Eigen::Vector3d::Zero();
     }
-    const SpringMassResponse shift = spring_mass_response(acc, dt, dyn.tissue), turn = spring_mass_response(alpha, dt, dyn.tissue);
+    const SpringMassResponse shift = spring_mass_response(acc, dt, dyn.tissue),
+                             turn = spring_mass_response(alpha, dt, dyn.tissue);
     std::vector<Eigen::Vector3d> along_strap(dyn.strap_enabled() ? n : 0);
     for (size_t i = 0; i < along_strap.size(); ++i)
         along_strap[i] = dyn.strap_axis * dyn.strap_axis.dot(rot[i].conjugate() * (acc[i] + shift.acceleration[i]));
@@ -62,7 +65,8 @@ void synthesize_attached(const CubicSpline& ps, const CubicSpline& qs, double ra
         const long centre = static_cast<long>(k) * over;
         Eigen::Vector3d f = Eigen::Vector3d::Zero(), w = Eigen::Vector3d::Zero();
         int count = 0;
-        for (long i = std::max(0L, centre - half); i <= std::min(static_cast<long>(n) - 1, centre + half); ++i, ++count) {
+        for (long i = std::max(0L, centre - half); i <= std::min(static_cast<long>(n) - 1, centre + half);
+             ++i, ++count) {
             const size_t s = static_cast<size_t>(i);
             Eigen::Vector3d force = specific_force(rot[s], acc[s] + shift.acceleration[s]);
             if (!along_strap.empty()) force += slide.acceleration[s];
@@ -81,7 +85,8 @@ ImuSignals synthesize_imu(const std::vector<Eigen::Vector3d>& position, const st
                           double fps, double rate_hz, const AttachmentDynamics& dynamics) {
     const size_t n = position.size();
     if (n < 4) throw Error("imu", "frames", "at least 4 motion frames", std::to_string(n));
-    if (orientation.size() != n) throw Error("imu", "orientation", std::to_string(n) + " frames", std::to_string(orientation.size()));
+    if (orientation.size() != n)
+        throw Error("imu", "orientation", std::to_string(n) + " frames", std::to_string(orientation.size()));
     if (!(fps > 0) || !(rate_hz > 0)) throw Error("imu", "rate", "positive frame and sample rates");
     CubicSpline::Samples p(static_cast<Eigen::Index>(n), 3), q(static_cast<Eigen::Index>(n), 4);
     Quat previous = orientation[0];

@@ -15,9 +15,9 @@
 // to the gyroscope); a strap mode (a device that slides along its belt or strap) is a second spring-mass, run on
 // the component along one sensor axis of the acceleration the first one gives, whose relative acceleration is
 // added along that axis (translation only: the measured belt board's gyroscope shows no such rocking,
-// docs/realism.md#the-belts-strap-2026-12-03; the terms of the sensor frame's rotation during a ring of a few tenths of a second are left
-// out); each output sample is the mean of the internal samples within half an output period of
-// it (a box filter: a sensor's and a data set's own low-pass before decimation).
+// docs/realism.md#the-belts-strap-2026-12-03; the terms of the sensor frame's rotation during a ring of a few tenths of
+// a second are left out); each output sample is the mean of the internal samples within half an output period of it (a
+// box filter: a sensor's and a data set's own low-pass before decimation).
 #pragma once
 #include <Eigen/Core>
 #include <vector>
@@ -32,9 +32,9 @@ constexpr double kGravity = 9.81;  // m/s^2, the value the paper's pipeline uses
 
 struct ImuSignals {
     double rate_hz = 0;
-    std::vector<double> t;                // seconds from the first motion frame
-    std::vector<Eigen::Vector3d> acc;     // m/s^2, sensor frame, gravity included
-    std::vector<Eigen::Vector3d> gyr;     // rad/s, sensor frame
+    std::vector<double> t;             // seconds from the first motion frame
+    std::vector<Eigen::Vector3d> acc;  // m/s^2, sensor frame, gravity included
+    std::vector<Eigen::Vector3d> gyr;  // rad/s, sensor frame
 };
 
 // Specific force in the sensor frame for a world acceleration (m/s^2) and orientation (world from sensor).

@@ -26,7 +26,8 @@ int joint_index(const std::string& name, const std::string& file) {
     throw Error(file, "segment", "an SMPL-22 joint name (pelvis, left_hip, ..., right_wrist)", name);
 }
 
-const std::set<std::string> kAxisWords = {"up", "down", "left", "right", "front", "back", "out", "in", "distal", "proximal"};
+const std::set<std::string> kAxisWords = {"up",   "down", "left", "right",  "front",
+                                          "back", "out",  "in",   "distal", "proximal"};
 
 }  // namespace
 
@@ -35,7 +36,8 @@ void check_placement(const SensorPlacement& p, const std::string& file) {
     for (const std::string& a : p.axis) {
         if (a.empty()) continue;
         ++given;
-        if (!kAxisWords.count(a)) throw Error(file, p.position + " axis", "up|down|left|right|front|back|out|in|distal|proximal", a);
+        if (!kAxisWords.count(a))
+            throw Error(file, p.position + " axis", "up|down|left|right|front|back|out|in|distal|proximal", a);
     }
     if (given != 2) throw Error(file, p.position + " axes", "exactly two of x, y, z", std::to_string(given));
 }
@@ -99,9 +101,11 @@ PlacementSet parse_placement_toml(const std::string& text, const std::string& pa
         t.refuse_unknown_keys();
         if (p.position.empty()) throw Error(path, "position", "a position name in every [[sensor]]");
         p.segment = joint_index(segment, path);
-        if (vertex < -1 || vertex > std::numeric_limits<int>::max()) throw Error(path, p.position + " vertex", "a vertex index (0 or more)", std::to_string(vertex));
+        if (vertex < -1 || vertex > std::numeric_limits<int>::max())
+            throw Error(path, p.position + " vertex", "a vertex index (0 or more)", std::to_string(vertex));
         p.vertex = static_cast<int>(vertex);
-        if (!std::isfinite(p.along) || p.along < -0.5 || p.along > 2.0) throw Error(path, p.position + " along", "-0.5 to 2", std::to_string(p.along));
+        if (!std::isfinite(p.along) || p.along < -0.5 || p.along > 2.0)
+            throw Error(path, p.position + " along", "-0.5 to 2", std::to_string(p.along));
         if (!std::isfinite(p.around_deg)) throw Error(path, p.position + " around", "degrees");
         check_placement(p, path);
         set.sensors.push_back(p);
@@ -119,7 +123,8 @@ std::vector<SensorPlacement> parse_sensor_sets(const std::string& text) {
         const bool toml = item.size() > 5 && ends_with(item, ".toml");
         const PlacementSet set = toml ? read_placement_toml(item) : builtin_placement_set(item);
         for (const SensorPlacement& p : set.sensors) {
-            if (!seen.insert(p.position).second) throw Error("--sensors", "position", "distinct positions across the sets", p.position + " twice");
+            if (!seen.insert(p.position).second)
+                throw Error("--sensors", "position", "distinct positions across the sets", p.position + " twice");
             out.push_back(p);
         }
         if (comma == std::string::npos) break;
@@ -128,12 +133,14 @@ std::vector<SensorPlacement> parse_sensor_sets(const std::string& text) {
     return out;
 }
 
-SensorMount mount_sensor(const BodyModel& body, const SensorPlacement& placement, const Matrix3d& mounting_error, double tilt_down_deg) {
+SensorMount mount_sensor(const BodyModel& body, const SensorPlacement& placement, const Matrix3d& mounting_error,
+                         double tilt_down_deg) {
     SensorMount m;
     m.placement = placement;
     SurfacePoint surface;
     if (placement.vertex >= 0) {
-        if (body.spec().kind != BodySpec::Kind::smpl) throw Error("--sensors", placement.position + " vertex", "an SMPL body (--body smpl:FILE)");
+        if (body.spec().kind != BodySpec::Kind::smpl)
+            throw Error("--sensors", placement.position + " vertex", "an SMPL body (--body smpl:FILE)");
         surface = body.vertex_point(placement.vertex);
     } else {
         surface = body.surface_point(placement.segment, placement.along, placement.around_deg * M_PI / 180);
@@ -148,7 +155,8 @@ SensorMount mount_sensor(const BodyModel& body, const SensorPlacement& placement
     const Vector3d u = axis_direction(placement.axis[first], surface.normal, distal).normalized();
     Vector3d v = axis_direction(placement.axis[second], surface.normal, distal);
     v = (v - v.dot(u) * u);
-    if (v.norm() < 1e-6) throw Error("--sensors", placement.position + " axes", "two axes that are not parallel on this body");
+    if (v.norm() < 1e-6)
+        throw Error("--sensors", placement.position + " axes", "two axes that are not parallel on this body");
     v.normalize();
     Matrix3d r;
     r.col(first) = u;
@@ -161,7 +169,8 @@ SensorMount mount_sensor(const BodyModel& body, const SensorPlacement& placement
     const Vector3d tangent = Vector3d::UnitY().cross(surface.normal);
     if (tangent.norm() > 0.1) m.horizontal_tangent = tangent.normalized();
     if (tilt_down_deg != 0 && m.horizontal_tangent.squaredNorm() > 0)
-        m.rest_from_sensor = Eigen::AngleAxisd(tilt_down_deg * M_PI / 180, m.horizontal_tangent).toRotationMatrix() * m.rest_from_sensor;
+        m.rest_from_sensor =
+            Eigen::AngleAxisd(tilt_down_deg * M_PI / 180, m.horizontal_tangent).toRotationMatrix() * m.rest_from_sensor;
     return m;
 }
 

@@ -35,9 +35,9 @@ struct SensorPlacement {
     int segment = 0;       // proximal joint of the segment
     double along = 0.5;
     double around_deg = 0;
-    std::string axis[3];   // words for x, y, z; exactly one is empty
-    int vertex = -1;       // SMPL bodies only: this skin vertex instead of along/around
-    std::string note;      // where the mounting comes from
+    std::string axis[3];  // words for x, y, z; exactly one is empty
+    int vertex = -1;      // SMPL bodies only: this skin vertex instead of along/around
+    std::string note;     // where the mounting comes from
 };
 
 struct PlacementSet {

@@ -25,8 +25,8 @@ std::string format_number(double v) {  // 7.5, 0.25, 2000: as a user writes it
 }
 
 // A number key: range [lo, hi], 0 also valid when zero_is_off, whole numbers only when whole.
-RealismKey number(const char* key, const char* unit, double lo, double hi, double off, double on, double& (*field)(RealismModel&),
-                  bool zero_is_off = false, bool whole = false) {
+RealismKey number(const char* key, const char* unit, double lo, double hi, double off, double on,
+                  double& (*field)(RealismModel&), bool zero_is_off = false, bool whole = false) {
     return {key, unit, lo, hi, zero_is_off, whole, off, on, field, nullptr, nullptr};
 }
 
@@ -34,10 +34,12 @@ RealismKey number(const char* key, const char* unit, double lo, double hi, doubl
 // derived in docs/realism.md): an overdamped mode's fast root grows without bound in RK4 at 1 kHz otherwise.
 void check_damping(const SoftTissue& mode, const char* key, const char* hz_key, const std::string& source) {
     if (mode.enabled() && !(mode.damping_ratio > 0))
-        throw Error(source, key, "a damping ratio in (0, 2] when its frequency is on", std::to_string(mode.damping_ratio));
+        throw Error(source, key, "a damping ratio in (0, 2] when its frequency is on",
+                    std::to_string(mode.damping_ratio));
     if (mode.enabled() && rk4_growth_per_step(mode, 1 / kAttachmentRateHz) > 1)
         throw Error(source, std::string(hz_key) + " with " + key,
-                    "2 pi " + std::string(hz_key) + " (zeta + sqrt(zeta^2 - 1)) at most 2785 per second (stable at the 1 kHz integration rate)",
+                    "2 pi " + std::string(hz_key) +
+                        " (zeta + sqrt(zeta^2 - 1)) at most 2785 per second (stable at the 1 kHz integration rate)",
                     format_number(mode.frequency_hz) + " Hz with " + format_number(mode.damping_ratio));
 }
 
@@ -54,59 +56,94 @@ void check_damping(const SoftTissue& mode, const char* key, const char* hz_key, 
 // easier to tell from real and lowered HAR (docs/realism.md#device-roll-and-drawn-bodies-2026-12-02). Its keys,
 // recorded off (gain 1) in folders made before its retirement, read as today's models.
 const std::vector<RealismLever> kLevers = {
-    {"tempo", RealismStage::motion, "the motion played at its frame rate x exp(N(0, tempo_sd)) per recording: a uniform time warp",
+    {"tempo",
+     RealismStage::motion,
+     "the motion played at its frame rate x exp(N(0, tempo_sd)) per recording: a uniform time warp",
      {number("tempo_sd", "", 0, 0.5, 0, 0.08, [](RealismModel& m) -> double& { return m.tempo_log_sd; })},
-     [](const RealismModel& m) { return m.tempo_log_sd > 0; }, nullptr},
-    {"trunk", RealismStage::body,
-     "a trunk sensor turns with this share of its segment's sway about the left-right (pitch) and long (yaw) axes, the slow part kept",
+     [](const RealismModel& m) { return m.tempo_log_sd > 0; },
+     nullptr},
+    {"trunk",
+     RealismStage::body,
+     "a trunk sensor turns with this share of its segment's sway about the left-right (pitch) and long (yaw) axes, the "
+     "slow part kept",
      {number("trunk_pitch_gain", "", -1, 2, 1, 0.35, [](RealismModel& m) -> double& { return m.trunk.pitch_gain; }),
       number("trunk_yaw_gain", "", -1, 2, 1, 0.6, [](RealismModel& m) -> double& { return m.trunk.yaw_gain; }),
       number("trunk_sigma_s", "s", 0.1, 5, 0.5, 0.5, [](RealismModel& m) -> double& { return m.trunk.sigma_s; })},
-     [](const RealismModel& m) { return m.trunk.enabled(); }, nullptr},
-    {"tilt", RealismStage::mount, "the sensor turned about the skin's horizontal tangent, outward normal down, N(mean, sd) per recording",
+     [](const RealismModel& m) { return m.trunk.enabled(); },
+     nullptr},
+    {"tilt",
+     RealismStage::mount,
+     "the sensor turned about the skin's horizontal tangent, outward normal down, N(mean, sd) per recording",
      {number("tilt_deg", "deg", -90, 90, 0, 7.5, [](RealismModel& m) -> double& { return m.tilt.mean_deg; }),
       number("tilt_sd_deg", "deg", 0, 45, 0, 10, [](RealismModel& m) -> double& { return m.tilt.sd_deg; })},
-     [](const RealismModel& m) { return m.tilt.mean_deg != 0 || m.tilt.sd_deg > 0; }, nullptr},
-    {"tissue", RealismStage::attachment, "the attachment a damped spring-mass on the body point, translation and rotation (1 kHz)",
-     {number("tissue_hz", "Hz", 1, 200, 0, 10, [](RealismModel& m) -> double& { return m.tissue.frequency_hz; }, true),
+     [](const RealismModel& m) { return m.tilt.mean_deg != 0 || m.tilt.sd_deg > 0; },
+     nullptr},
+    {"tissue",
+     RealismStage::attachment,
+     "the attachment a damped spring-mass on the body point, translation and rotation (1 kHz)",
+     {number(
+          "tissue_hz", "Hz", 1, 200, 0, 10, [](RealismModel& m) -> double& { return m.tissue.frequency_hz; }, true),
       number("tissue_damping", "", 0, 2, 0, 0.5, [](RealismModel& m) -> double& { return m.tissue.damping_ratio; })},
      [](const RealismModel& m) { return m.tissue.enabled(); },
-     [](const RealismModel& m, const std::string& source) { check_damping(m.tissue, "tissue_damping", "tissue_hz", source); }},
-    {"strap", RealismStage::attachment, "the device sliding along its belt or strap: a spring-mass along the skin's horizontal tangent",
-     {number("strap_hz", "Hz", 1, 200, 0, 6, [](RealismModel& m) -> double& { return m.strap.frequency_hz; }, true),
+     [](const RealismModel& m, const std::string& source) {
+         check_damping(m.tissue, "tissue_damping", "tissue_hz", source);
+     }},
+    {"strap",
+     RealismStage::attachment,
+     "the device sliding along its belt or strap: a spring-mass along the skin's horizontal tangent",
+     {number(
+          "strap_hz", "Hz", 1, 200, 0, 6, [](RealismModel& m) -> double& { return m.strap.frequency_hz; }, true),
       number("strap_damping", "", 0, 2, 0, 0.25, [](RealismModel& m) -> double& { return m.strap.damping_ratio; })},
      [](const RealismModel& m) { return m.strap.enabled(); },
-     [](const RealismModel& m, const std::string& source) { check_damping(m.strap, "strap_damping", "strap_hz", source); }},
-    {"landings", RealismStage::attachment,
+     [](const RealismModel& m, const std::string& source) {
+         check_damping(m.strap, "strap_damping", "strap_hz", source);
+     }},
+    {"landings",
+     RealismStage::attachment,
      "each foot landing's sharp velocity change at the shank (m/s), scaled by transmissibility to the sensor's segment",
      {number("impact_gain", "m/s", 0, 10, 0, 0.8, [](RealismModel& m) -> double& { return m.landings.gain_m_s; }),
       number("impact_ms", "ms", 5, 200, 40, 40, [](RealismModel& m) -> double& { return m.landings.duration_ms; })},
-     [](const RealismModel& m) { return m.landings.enabled(); }, nullptr},
-    {"spread", RealismStage::attachment, "landings differ: log-normal size and horizontal components per landing",
+     [](const RealismModel& m) { return m.landings.enabled(); },
+     nullptr},
+    {"spread",
+     RealismStage::attachment,
+     "landings differ: log-normal size and horizontal components per landing",
      {number("impact_size_sd", "", 0, 1, 0, 0.3, [](RealismModel& m) -> double& { return m.landings.spread.size_sd; }),
-      number("impact_horizontal_sd", "", 0, 2, 0, 0.8, [](RealismModel& m) -> double& { return m.landings.spread.horizontal_sd; })},
-     [](const RealismModel& m) { return m.landings.spread.size_sd > 0 || m.landings.spread.horizontal_sd > 0; }, nullptr},
-    {"vibration", RealismStage::signal, "band-limited noise on the accelerometer, its sd gain x the motion's local rms level",
+      number("impact_horizontal_sd", "", 0, 2, 0, 0.8,
+             [](RealismModel& m) -> double& { return m.landings.spread.horizontal_sd; })},
+     [](const RealismModel& m) { return m.landings.spread.size_sd > 0 || m.landings.spread.horizontal_sd > 0; },
+     nullptr},
+    {"vibration",
+     RealismStage::signal,
+     "band-limited noise on the accelerometer, its sd gain x the motion's local rms level",
      {number("vibration_gain", "", 0, 1, 0, 0.15, [](RealismModel& m) -> double& { return m.vibration.gain; }),
       number("vibration_low_hz", "Hz", 0.1, 100, 5, 5, [](RealismModel& m) -> double& { return m.vibration.low_hz; }),
-      number("vibration_high_hz", "Hz", 0.1, 200, 12, 12, [](RealismModel& m) -> double& { return m.vibration.high_hz; })},
+      number("vibration_high_hz", "Hz", 0.1, 200, 12, 12,
+             [](RealismModel& m) -> double& { return m.vibration.high_hz; })},
      [](const RealismModel& m) { return m.vibration.enabled(); },
      [](const RealismModel& m, const std::string& source) {
          if (!(m.vibration.high_hz > m.vibration.low_hz))
              throw Error(source, "vibration_high_hz", "above vibration_low_hz", std::to_string(m.vibration.high_hz));
      }},
-    {"sensor", RealismStage::sensor, "the sensor's own errors: noise density, bias, range and resolution of its data sheet",
-     {{"sensor", "", 0, 0, false, false, 0, 0, nullptr, [](RealismModel& m) -> std::string& { return m.sensor; }, "sisfall"}},
+    {"sensor",
+     RealismStage::sensor,
+     "the sensor's own errors: noise density, bias, range and resolution of its data sheet",
+     {{"sensor", "", 0, 0, false, false, 0, 0, nullptr, [](RealismModel& m) -> std::string& { return m.sensor; },
+       "sisfall"}},
      [](const RealismModel& m) { return m.sensor != "none"; },
      [](const RealismModel& m, const std::string& source) { parse_noise_model(m.sensor, source + ": sensor"); }},
-    {"rate", RealismStage::sensor, "the sensor samples at its own rate (what lies above its Nyquist frequency folds in), then resampled",
-     {number("sensor_rate_hz", "Hz", 5, 2000, 0, 20, [](RealismModel& m) -> double& { return m.sensor_sample_rate_hz; }, true, true)},
-     [](const RealismModel& m) { return m.sensor_sample_rate_hz > 0; }, nullptr},
+    {"rate",
+     RealismStage::sensor,
+     "the sensor samples at its own rate (what lies above its Nyquist frequency folds in), then resampled",
+     {number(
+         "sensor_rate_hz", "Hz", 5, 2000, 0, 20, [](RealismModel& m) -> double& { return m.sensor_sample_rate_hz; },
+         true, true)},
+     [](const RealismModel& m) { return m.sensor_sample_rate_hz > 0; },
+     nullptr},
 };
 
 // Keys renamed since folders recorded them (the sensor model was "device", a word the torch device also uses).
-const std::pair<const char*, const char*> kRenamedKeys[] = {{"device", "sensor"},
-                                                            {"device_rate_hz", "sensor_rate_hz"}};
+const std::pair<const char*, const char*> kRenamedKeys[] = {{"device", "sensor"}, {"device_rate_hz", "sensor_rate_hz"}};
 
 // Keys of retired levers and the value that recorded them off.
 const std::pair<const char*, double> kRetiredKeys[] = {{"roll_gain", 1}, {"roll_sigma_s", 0.5}};
@@ -186,7 +223,8 @@ nlohmann::json RealismModel::to_json() const {
     nlohmann::json j = {{"name", name}};
     RealismModel m = *this;
     for (const RealismLever& lever : kLevers)
-        for (const RealismKey& k : lever.keys) j[k.key] = k.number ? nlohmann::json(k.number(m)) : nlohmann::json(k.text(m));
+        for (const RealismKey& k : lever.keys)
+            j[k.key] = k.number ? nlohmann::json(k.number(m)) : nlohmann::json(k.text(m));
     return j;
 }
 
@@ -204,15 +242,19 @@ nlohmann::json realism_record_as_today(const nlohmann::json& recorded) {
 }
 
 std::string realism_help() {
-    std::string h = "realism model: PRESET, PRESET+LEVER-LEVER (levers at their calibrated values / off) or FILE.toml\n"
-                    "(base = \"PRESET\" and keys). Presets: " + preset_names_text() + " (none is the default).\n"
-                    "Levers, in the order their stages run, and their keys:";
+    std::string h =
+        "realism model: PRESET, PRESET+LEVER-LEVER (levers at their calibrated values / off) or FILE.toml\n"
+        "(base = \"PRESET\" and keys). Presets: " +
+        preset_names_text() +
+        " (none is the default).\n"
+        "Levers, in the order their stages run, and their keys:";
     for (const RealismLever& lever : kLevers) {
         h += std::string("\n  ") + lever.name + " (" + realism_stage_name(lever.stage) + "): " + lever.physics;
         for (const RealismKey& k : lever.keys) {
             h += std::string("\n      ") + k.key + ": ";
             h += k.number ? range_text(k) + "; off " + format_number(k.off) + ", calibrated " + format_number(k.on)
-                          : std::string("none, a sensor model or model,key=value overrides; off none, calibrated ") + k.text_on;
+                          : std::string("none, a sensor model or model,key=value overrides; off none, calibrated ") +
+                                k.text_on;
         }
     }
     return h;
@@ -238,7 +280,8 @@ struct Preset {
 // smartphone chip.
 std::vector<Preset> presets() {
     std::vector<Preset> out = {{"none", 0, 0, "none"}};
-    for (const DatasetProfile& p : dataset_profiles()) out.push_back({p.name, p.tilt_mean_deg, p.tilt_spread_deg, p.name});
+    for (const DatasetProfile& p : dataset_profiles())
+        out.push_back({p.name, p.tilt_mean_deg, p.tilt_spread_deg, p.name});
     const DatasetProfile& phones = *find_dataset_profile("realworld");
     out.push_back({"smartphone", phones.tilt_mean_deg, phones.tilt_spread_deg, "smartphone"});
     return out;

@@ -56,7 +56,7 @@ struct RealismModel {
     SoftTissue strap;
     LandingTransients landings;
     BodyVibration vibration;
-    std::string sensor = "none";   // the sensor model (sensor_noise.hpp): "none", a preset, overrides
+    std::string sensor = "none";       // the sensor model (sensor_noise.hpp): "none", a preset, overrides
     double sensor_sample_rate_hz = 0;  // the sensor's own sample rate; 0 = sampled at the output rate (device_rate.hpp)
 
     // Throws Error naming `source` and the key for a value out of range.
@@ -75,8 +75,8 @@ struct RealismKey {
     bool zero_is_off;  // 0 is valid besides [lo, hi]
     bool whole;        // a whole number
     double off, on;    // the value that turns the lever off; the value it was calibrated or measured with
-    double& (*number)(RealismModel&);       // null for the sensor model's name
-    std::string& (*text)(RealismModel&);    // the sensor model's name (off "none", on `text_on`)
+    double& (*number)(RealismModel&);     // null for the sensor model's name
+    std::string& (*text)(RealismModel&);  // the sensor model's name (off "none", on `text_on`)
     const char* text_on;
 };
 

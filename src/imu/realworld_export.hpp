@@ -1,5 +1,5 @@
-// Virtual IMU signals in the RealWorld HAR release layout (the paper's test set; har/datasets/realworld.hpp reads it), for
-// users who feed synthetic data to tools written for RealWorld. The project's own layout is imu/imu_dataset.hpp.
+// Virtual IMU signals in the RealWorld HAR release layout (the paper's test set; har/datasets/realworld.hpp reads it),
+// for users who feed synthetic data to tools written for RealWorld. The project's own layout is imu/imu_dataset.hpp.
 #pragma once
 #include <string>
 

@@ -30,7 +30,8 @@ PlacementSet recorded_set(const std::string& dataset, const ImuRecording& r) {
     const auto frame = r.extra.find("frame");
     const std::string name = frame != r.extra.end() && !frame->second.empty() ? frame->second : r.dataset;
     if (!find_dataset_profile(name))
-        throw Error(dataset + "/manifest.csv", r.path + " dataset", "a data set's name (" + dataset_profile_names() + "), or --from", name);
+        throw Error(dataset + "/manifest.csv", r.path + " dataset",
+                    "a data set's name (" + dataset_profile_names() + "), or --from", name);
     return builtin_placement_set(name);
 }
 
@@ -41,14 +42,15 @@ PlacementSet placement_set_named(const std::string& text, const std::string& opt
     return builtin_placement_set(text, option);
 }
 
-std::vector<ImuRecording> reframe_dataset(const std::string& dataset, const std::vector<std::string>& positions, const PlacementSet& to,
-                                          const PlacementSet* from) {
+std::vector<ImuRecording> reframe_dataset(const std::string& dataset, const std::vector<std::string>& positions,
+                                          const PlacementSet& to, const PlacementSet* from) {
     const std::unique_ptr<BodyModel> body = make_body(parse_body_specs("preset:male_average")[0]);
     std::vector<ImuRecording> recordings = selected_recordings(dataset, positions);
     std::vector<Eigen::Matrix3d> rotations;
     for (const ImuRecording& r : recordings) {
-        const SensorPlacement source = from ? placement_at(*from, r.position, "--from")
-                                            : placement_at(recorded_set(dataset, r), r.position, dataset + "/manifest.csv " + r.path);
+        const SensorPlacement source =
+            from ? placement_at(*from, r.position, "--from")
+                 : placement_at(recorded_set(dataset, r), r.position, dataset + "/manifest.csv " + r.path);
         rotations.push_back(reframe_rotation(*body, source, placement_at(to, r.position, "--to")));
     }
     const std::vector<ImuRecording> loaded = read_imu_dataset(dataset);

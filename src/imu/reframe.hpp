@@ -32,8 +32,8 @@ PlacementSet placement_set_named(const std::string& text, const std::string& opt
 // axes from `from`'s, or when `from` is null from the convention each recording names: its `frame` column (a
 // reframed dataset), else its `dataset` column (a data set's profile). Every rotation is resolved, so every
 // convention and position checked, before any samples are read; each recording's `frame` column becomes to.name.
-std::vector<ImuRecording> reframe_dataset(const std::string& dataset, const std::vector<std::string>& positions, const PlacementSet& to,
-                                          const PlacementSet* from);
+std::vector<ImuRecording> reframe_dataset(const std::string& dataset, const std::vector<std::string>& positions,
+                                          const PlacementSet& to, const PlacementSet* from);
 
 // The placement of `position` in `set`; throws Error naming `option` with the set's positions if it has none.
 const SensorPlacement& placement_at(const PlacementSet& set, const std::string& position, const std::string& option);

@@ -49,19 +49,33 @@ SensorNoiseModel preset(const std::string& name, const std::string& option) {
 }
 
 void set_field(SensorNoiseModel& m, const std::string& key, double v, const std::string& option) {
-    if (key == "acc_noise_density") m.acc_noise_density = v;
-    else if (key == "gyr_noise_density") m.gyr_noise_density = v;
-    else if (key == "acc_bias_sd") m.acc_bias_sd = v;
-    else if (key == "gyr_bias_sd") m.gyr_bias_sd = v;
-    else if (key == "acc_bias_walk") m.acc_bias_walk = v;
-    else if (key == "gyr_bias_walk") m.gyr_bias_walk = v;
-    else if (key == "scale_sd") m.scale_sd = v;
-    else if (key == "misalignment_deg") m.misalignment_sd_rad = v * kDeg;
-    else if (key == "acc_range_g") m.acc_range = v * kG;
-    else if (key == "gyr_range_dps") m.gyr_range = v * kDeg;
-    else if (key == "bits") m.bits = static_cast<int>(v);
-    else throw Error(option, key, "a field of the noise model (acc_noise_density, gyr_noise_density, acc_bias_sd, "
-                     "gyr_bias_sd, acc_bias_walk, gyr_bias_walk, scale_sd, misalignment_deg, acc_range_g, gyr_range_dps, bits)");
+    if (key == "acc_noise_density")
+        m.acc_noise_density = v;
+    else if (key == "gyr_noise_density")
+        m.gyr_noise_density = v;
+    else if (key == "acc_bias_sd")
+        m.acc_bias_sd = v;
+    else if (key == "gyr_bias_sd")
+        m.gyr_bias_sd = v;
+    else if (key == "acc_bias_walk")
+        m.acc_bias_walk = v;
+    else if (key == "gyr_bias_walk")
+        m.gyr_bias_walk = v;
+    else if (key == "scale_sd")
+        m.scale_sd = v;
+    else if (key == "misalignment_deg")
+        m.misalignment_sd_rad = v * kDeg;
+    else if (key == "acc_range_g")
+        m.acc_range = v * kG;
+    else if (key == "gyr_range_dps")
+        m.gyr_range = v * kDeg;
+    else if (key == "bits")
+        m.bits = static_cast<int>(v);
+    else
+        throw Error(
+            option, key,
+            "a field of the noise model (acc_noise_density, gyr_noise_density, acc_bias_sd, "
+            "gyr_bias_sd, acc_bias_walk, gyr_bias_walk, scale_sd, misalignment_deg, acc_range_g, gyr_range_dps, bits)");
 }
 
 struct AxisErrors {

@@ -28,8 +28,8 @@ struct SensorNoiseModel {
     double acc_bias_sd = 0, gyr_bias_sd = 0;              // m/s^2, rad/s (constant per recording)
     double acc_bias_walk = 0, gyr_bias_walk = 0;          // m/s^3/sqrt(Hz), rad/s^2/sqrt(Hz)
     double scale_sd = 0, misalignment_sd_rad = 0;
-    double acc_range = 0, gyr_range = 0;                  // +- full scale, m/s^2 and rad/s; 0 = unlimited
-    int bits = 0;                                         // resolution over the full range; 0 = none
+    double acc_range = 0, gyr_range = 0;  // +- full scale, m/s^2 and rad/s; 0 = unlimited
+    int bits = 0;                         // resolution over the full range; 0 = none
 
     bool enabled() const { return name != "none"; }
 };

@@ -28,7 +28,9 @@ SpringMassResponse spring_mass_response(const std::vector<Vector3d>& base, doubl
     r.acceleration.assign(n, Vector3d::Zero());
     if (!tissue.enabled() || n == 0) return r;
     const double w = 2 * M_PI * tissue.frequency_hz, c = 2 * tissue.damping_ratio * w, k = w * w;
-    const auto accel = [&](const Vector3d& b, const Vector3d& u, const Vector3d& v) -> Vector3d { return -b - c * v - k * u; };
+    const auto accel = [&](const Vector3d& b, const Vector3d& u, const Vector3d& v) -> Vector3d {
+        return -b - c * v - k * u;
+    };
     Vector3d u = Vector3d::Zero(), v = Vector3d::Zero();
     r.acceleration[0] = accel(base[0], u, v);
     for (size_t i = 1; i < n; ++i) {

@@ -35,6 +35,7 @@ double rk4_growth_per_step(const SoftTissue& tissue, double dt);
 struct SpringMassResponse {
     std::vector<Eigen::Vector3d> displacement, velocity, acceleration;
 };
-SpringMassResponse spring_mass_response(const std::vector<Eigen::Vector3d>& base_acceleration, double dt, const SoftTissue& tissue);
+SpringMassResponse spring_mass_response(const std::vector<Eigen::Vector3d>& base_acceleration, double dt,
+                                        const SoftTissue& tissue);
 
 }  // namespace t2imu

@@ -30,8 +30,8 @@ struct MarkerAttempt {
 struct MarkerRecording {
     std::string path, body, position;  // path relative to the folder
     uint64_t n_samples = 0;
-    int64_t bytes = -1;    // the file's size as written; -1: not recorded
-    double tempo = 1;      // the realism model's draws for this recording (imu/realism.hpp): time warp and
+    int64_t bytes = -1;         // the file's size as written; -1: not recorded
+    double tempo = 1;           // the realism model's draws for this recording (imu/realism.hpp): time warp and
     double mount_tilt_deg = 0;  // mounting tilt (recorded under the tilt lever's key)
 };
 
@@ -49,10 +49,10 @@ struct ActivityCheck {
 // How well the motion source's training captions cover the job's prompt (text/prompt_coverage.hpp).
 struct MarkerCoverage {
     bool covered = true;
-    std::string summary;                   // "covered", or what is not ("activity 'ironing' has no training captions")
-    std::vector<std::string> nearest;      // the nearest training captions of its activity
-    std::vector<double> similarity;        // their SIF cosine
-    std::vector<std::string> uncovered;    // attributes asked that no caption of the activity names
+    std::string summary;                 // "covered", or what is not ("activity 'ironing' has no training captions")
+    std::vector<std::string> nearest;    // the nearest training captions of its activity
+    std::vector<double> similarity;      // their SIF cosine
+    std::vector<std::string> uncovered;  // attributes asked that no caption of the activity names
 };
 
 struct JobMarker {
@@ -67,8 +67,8 @@ struct JobMarker {
     std::optional<std::vector<MarkerFile>> motions;  // a kept job's motion files
     std::optional<double> sensor_motion_fps;         // when the sensors saw another copy (the capture rate)
     std::optional<ActivityCheck> activity_check;
-    nlohmann::json source_draw;                      // the source's own record of the draw (retrieval: the clip), or null
-    std::optional<MarkerCoverage> coverage;          // absent for a source without training captions
+    nlohmann::json source_draw;              // the source's own record of the draw (retrieval: the clip), or null
+    std::optional<MarkerCoverage> coverage;  // absent for a source without training captions
 };
 
 // A job's name ("j00003" for job 3) and its files relative to the folder: the one place they are spelled.
@@ -88,14 +88,15 @@ std::vector<JobMarker> read_job_markers(const std::string& dir);
 
 struct ActivityCounts {
     int kept = 0, kept_below_activity_agreement = 0, dropped = 0;
-    std::map<std::string, int> shown;                      // what the last draws showed (with an activity check)
-    std::optional<int> shows_activity_by_classifier;       // with an activity check
-    std::optional<int> shows_activity_by_tags;             // retrieval: clips whose tags name the activity
+    std::map<std::string, int> shown;                 // what the last draws showed (with an activity check)
+    std::optional<int> shows_activity_by_classifier;  // with an activity check
+    std::optional<int> shows_activity_by_tags;        // retrieval: clips whose tags name the activity
 };
 
 struct SynthRunTiming {
     int jobs_run = 0, threads = 1;
-    double load_s = 0, motion_generation_s = 0, quality_scoring_s = 0, bodies_imu_write_s = 0, manifest_s = 0, total_s = 0;
+    double load_s = 0, motion_generation_s = 0, quality_scoring_s = 0, bodies_imu_write_s = 0, manifest_s = 0,
+           total_s = 0;
     std::string device;
 };
 

@@ -24,7 +24,8 @@ nlohmann::json vec(const Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 }  // namespace
 
 void check_motion_for_imu(const JointSequence& motion, const std::string& source) {
-    if (motion.num_joints != smpl22::kNumJoints) throw Error(source, "shape", "[F,22,3] joints", std::to_string(motion.num_joints) + " joints");
+    if (motion.num_joints != smpl22::kNumJoints)
+        throw Error(source, "shape", "[F,22,3] joints", std::to_string(motion.num_joints) + " joints");
     if (motion.num_frames < 4) throw Error(source, "frames", "at least 4 frames", std::to_string(motion.num_frames));
     if (!(motion.fps > 0)) throw Error(source, "fps", "a positive frame rate", std::to_string(motion.fps));
 }
@@ -57,20 +58,24 @@ SensorNoiseModel VirtualImuOptions::sensor_model() const { return parse_noise_mo
 
 void VirtualImuOptions::validate() const {
     if (!(rate_hz > 0 && rate_hz <= 2000)) throw Error("--rate", "rate", "0 < HZ <= 2000", std::to_string(rate_hz));
-    if (!(mount_jitter_deg >= 0 && mount_jitter_deg <= 180)) throw Error("--mount-jitter", "degrees", "0 to 180", std::to_string(mount_jitter_deg));
+    if (!(mount_jitter_deg >= 0 && mount_jitter_deg <= 180))
+        throw Error("--mount-jitter", "degrees", "0 to 180", std::to_string(mount_jitter_deg));
     // A sigma of 1,000 frames (50 s at 20 fps) already flattens the twist of any clip we sample.
     if (!(twist_smoothing_frames >= 0 && twist_smoothing_frames <= 1000))
         throw Error("--twist-smoothing", "sigma", "0 to 1000 frames", std::to_string(twist_smoothing_frames));
     realism.validate("--realism " + realism.name);
     if (realism.sensor_sample_rate_hz > 0 && rate_hz != std::round(rate_hz))
-        throw Error("--rate", "rate", "a whole number of Hz with a realism model's sensor rate", std::to_string(rate_hz));
+        throw Error("--rate", "rate", "a whole number of Hz with a realism model's sensor rate",
+                    std::to_string(rate_hz));
 }
 
 void fold_noise_option(const std::string& noise, RealismModel* realism) {
     const SensorNoiseModel model = parse_noise_model(noise);  // errors name --noise
     if (!model.enabled()) return;
     if (realism->sensor != "none")
-        throw Error("--noise", "model", "--noise none with --realism " + realism->name + " (its sensor model is " + realism->sensor + ")", noise);
+        throw Error("--noise", "model",
+                    "--noise none with --realism " + realism->name + " (its sensor model is " + realism->sensor + ")",
+                    noise);
     realism->sensor = noise;
 }
 
@@ -94,7 +99,8 @@ MotionStage motion_stage(const JointSequence& motion, const RealismModel& realis
 
 // body: the fitted frames a sensor on `segment` rides on: its own re-posed copy when the trunk sway turns its
 // segment, else the body's fit.
-const FittedMotion& body_stage(const FittedMotion& fitted, const RealismModel& realism, int segment, double fps, FittedMotion* own) {
+const FittedMotion& body_stage(const FittedMotion& fitted, const RealismModel& realism, int segment, double fps,
+                               FittedMotion* own) {
     if (!realism.trunk.enabled() || !is_trunk_segment(segment)) return fitted;
     *own = fitted;
     apply_trunk_sway(realism.trunk, segment, fps, &own->frames);
@@ -102,21 +108,22 @@ const FittedMotion& body_stage(const FittedMotion& fitted, const RealismModel& r
 }
 
 // attachment: what lies between the body point and the sensor (soft tissue, the strap's run, landing pulses).
-AttachmentDynamics attachment_stage(const RealismModel& realism, const MotionStage& motion, const SensorMount& mount, uint64_t seed) {
+AttachmentDynamics attachment_stage(const RealismModel& realism, const MotionStage& motion, const SensorMount& mount,
+                                    uint64_t seed) {
     AttachmentDynamics d;
     d.tissue = realism.tissue;
     d.strap = realism.strap;
     d.strap_axis = mount.horizontal_tangent_in_sensor();
     if (!motion.landings.empty())
-        d.impacts = impact_pulses(motion.landings, realism.landings.gain_m_s, realism.landings.duration_ms / 1000, mount.placement.segment,
-                                  motion.timed.fps, realism.landings.spread, seed);
+        d.impacts = impact_pulses(motion.landings, realism.landings.gain_m_s, realism.landings.duration_ms / 1000,
+                                  mount.placement.segment, motion.timed.fps, realism.landings.spread, seed);
     return d;
 }
 
 }  // namespace
 
-BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& spec, const std::vector<SensorPlacement>& sensors,
-                            const VirtualImuOptions& options) {
+BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& spec,
+                            const std::vector<SensorPlacement>& sensors, const VirtualImuOptions& options) {
     options.validate();
     BodyImu out;
     const bool none = spec.kind == BodySpec::Kind::none;
@@ -125,7 +132,9 @@ BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& spec, c
     if (none) build.kind = BodySpec::Kind::procedural;
     const std::unique_ptr<BodyModel> body = make_body(build);
     const RealismModel& realism = options.realism;
-    const auto seed = [&](const std::string& position, const char* draw) { return derived_seed(options.seed, {out.body.name, position, draw}); };
+    const auto seed = [&](const std::string& position, const char* draw) {
+        return derived_seed(options.seed, {out.body.name, position, draw});
+    };
     const MotionStage timed = motion_stage(motion, realism, seed("", "tempo"));
     out.tempo = timed.tempo;
     FitOptions fit;
@@ -147,7 +156,8 @@ BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& spec, c
         out.mount_tilts_deg.push_back(draw_tilt_deg(realism, seed(placement.position, "tilt")));
         out.mounts.push_back(mount_sensor(*body, placement, jitter, out.mount_tilts_deg.back()));
         sensor_track(*body, frames, out.mounts.back(), &p, &q);
-        const AttachmentDynamics dynamics = attachment_stage(realism, timed, out.mounts.back(), seed(placement.position, "landings"));
+        const AttachmentDynamics dynamics =
+            attachment_stage(realism, timed, out.mounts.back(), seed(placement.position, "landings"));
         ImuSignals s = synthesize_imu(p, q, timed.timed.fps, sample_rate, dynamics);
         add_body_vibration(realism.vibration, seed(placement.position, "vibration"), &s);  // signal
         apply_sensor_noise(device, seed(placement.position, "noise"), &s);                 // device
@@ -165,8 +175,8 @@ std::vector<std::string> write_body_imu(const std::string& dir, const BodyImu& i
     return paths;
 }
 
-nlohmann::json virtual_imu_meta(const std::vector<BodyImu>& bodies, const JointSequence& motion, const VirtualImuOptions& options,
-                                const std::string& input) {
+nlohmann::json virtual_imu_meta(const std::vector<BodyImu>& bodies, const JointSequence& motion,
+                                const VirtualImuOptions& options, const std::string& input) {
     nlohmann::json meta;
     meta["input"] = input;
     meta["frames"] = motion.num_frames;
@@ -179,15 +189,22 @@ nlohmann::json virtual_imu_meta(const std::vector<BodyImu>& bodies, const JointS
     meta["realism"] = options.realism.to_json();
     meta["seed"] = options.seed;
     const SensorNoiseModel device = options.sensor_model();
-    meta["noise"] = {{"model", device.name}, {"acc_noise_density", device.acc_noise_density},
-                     {"gyr_noise_density", device.gyr_noise_density}, {"acc_bias_sd", device.acc_bias_sd},
-                     {"gyr_bias_sd", device.gyr_bias_sd}, {"acc_range", device.acc_range},
-                     {"gyr_range", device.gyr_range}, {"bits", device.bits}};
+    meta["noise"] = {{"model", device.name},
+                     {"acc_noise_density", device.acc_noise_density},
+                     {"gyr_noise_density", device.gyr_noise_density},
+                     {"acc_bias_sd", device.acc_bias_sd},
+                     {"gyr_bias_sd", device.gyr_bias_sd},
+                     {"acc_range", device.acc_range},
+                     {"gyr_range", device.gyr_range},
+                     {"bits", device.bits}};
     meta["bodies"] = nlohmann::json::array();
     for (const BodyImu& b : bodies) {
-        nlohmann::json body = {{"name", b.body.name}, {"height_m", b.body.height_m}, {"mass_kg", b.body.mass_kg},
-                               {"sex", sex_name(b.body.sex)}, {"leg_scale", b.leg_scale}, {"tempo", b.tempo}};
-        body["kind"] = b.body.kind == BodySpec::Kind::smpl ? "smpl" : b.body.kind == BodySpec::Kind::none ? "none" : "procedural";
+        nlohmann::json body = {{"name", b.body.name},       {"height_m", b.body.height_m},
+                               {"mass_kg", b.body.mass_kg}, {"sex", sex_name(b.body.sex)},
+                               {"leg_scale", b.leg_scale},  {"tempo", b.tempo}};
+        body["kind"] = b.body.kind == BodySpec::Kind::smpl   ? "smpl"
+                       : b.body.kind == BodySpec::Kind::none ? "none"
+                                                             : "procedural";
         if (b.body.kind == BodySpec::Kind::smpl) body["smpl"] = {{"path", b.body.smpl_path}, {"betas", b.body.betas}};
         nlohmann::json fit;
         double mean_all = 0;
@@ -202,14 +219,20 @@ nlohmann::json virtual_imu_meta(const std::vector<BodyImu>& bodies, const JointS
         for (size_t k = 0; k < b.mounts.size(); ++k) {
             const SensorMount& m = b.mounts[k];
             const SensorPlacement& p = m.placement;
-            nlohmann::json pj = {{"position", p.position}, {"segment", smpl22::kJointNames[static_cast<size_t>(p.segment)]},
-                                 {"along", p.along}, {"around_deg", p.around_deg}, {"note", p.note},
+            nlohmann::json pj = {{"position", p.position},
+                                 {"segment", smpl22::kJointNames[static_cast<size_t>(p.segment)]},
+                                 {"along", p.along},
+                                 {"around_deg", p.around_deg},
+                                 {"note", p.note},
                                  {"axes_words", {p.axis[0], p.axis[1], p.axis[2]}},
                                  {"rest_position_m", vec(m.anchor.rest_position)},
-                                 {"rest_axes", {{"x", vec(m.rest_from_sensor.col(0))}, {"y", vec(m.rest_from_sensor.col(1))},
-                                                {"z", vec(m.rest_from_sensor.col(2))}}}};
+                                 {"rest_axes",
+                                  {{"x", vec(m.rest_from_sensor.col(0))},
+                                   {"y", vec(m.rest_from_sensor.col(1))},
+                                   {"z", vec(m.rest_from_sensor.col(2))}}}};
             if (m.anchor.vertex >= 0) pj["vertex"] = m.anchor.vertex;
-            if (k < b.mount_tilts_deg.size()) pj[realism_lever("tilt").keys[0].key] = b.mount_tilts_deg[k];  // the drawn tilt
+            if (k < b.mount_tilts_deg.size())
+                pj[realism_lever("tilt").keys[0].key] = b.mount_tilts_deg[k];  // the drawn tilt
             placements.push_back(pj);
         }
         body["placements"] = placements;

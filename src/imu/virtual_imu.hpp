@@ -27,7 +27,7 @@ struct VirtualImuOptions {
     double rate_hz = 50;
     double mount_jitter_deg = 0;
     uint64_t seed = 0;
-    RealismModel realism;            // --realism (realism.hpp); "none" = the ideal sensor
+    RealismModel realism;  // --realism (realism.hpp); "none" = the ideal sensor
     double twist_smoothing_frames = 0;
 
     // The sensor error model in effect: the realism model's sensor.
@@ -44,7 +44,7 @@ void fold_noise_option(const std::string& noise, RealismModel* realism);
 struct BodyImu {
     BodySpec body;  // as used: --body none is given the height and mass it was sized to
     double leg_scale = 1;
-    double tempo = 1;  // the realism model's time warp of this recording (1 = as captured)
+    double tempo = 1;                     // the realism model's time warp of this recording (1 = as captured)
     std::vector<double> mount_tilts_deg;  // per mount: the realism model's tilt (degrees)
     std::array<double, smpl22::kNumJoints> mean_error_mm{}, max_error_mm{};
     std::vector<SensorMount> mounts;
@@ -58,8 +58,8 @@ BodySpec size_body_to_motion(const JointSequence& motion);
 // Refuses what the synthesis cannot use, naming `source`: a joint count other than 22, fewer than 4 frames.
 void check_motion_for_imu(const JointSequence& motion, const std::string& source);
 
-BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& body, const std::vector<SensorPlacement>& sensors,
-                            const VirtualImuOptions& options);
+BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& body,
+                            const std::vector<SensorPlacement>& sensors, const VirtualImuOptions& options);
 
 // Sensor position (world, m) and orientation (world from sensor) in every frame of a fitted motion.
 void sensor_track(const BodyModel& body, const FittedMotion& motion, const SensorMount& mount,
@@ -71,7 +71,7 @@ void sensor_track(const BodyModel& body, const FittedMotion& motion, const Senso
 std::vector<std::string> write_body_imu(const std::string& dir, const BodyImu& imu);
 
 // meta.json: bodies (height, mass, sex, fit error), placements with mountings, frames and rates, noise, seed.
-nlohmann::json virtual_imu_meta(const std::vector<BodyImu>& bodies, const JointSequence& motion, const VirtualImuOptions& options,
-                                const std::string& input);
+nlohmann::json virtual_imu_meta(const std::vector<BodyImu>& bodies, const JointSequence& motion,
+                                const VirtualImuOptions& options, const std::string& input);
 
 }  // namespace t2imu

@@ -16,8 +16,10 @@ std::vector<std::string> lower_words(const std::string& s) {
     std::vector<std::string> out(1);
     for (char ch : s) {
         const unsigned char c = static_cast<unsigned char>(ch);
-        if (std::isalpha(c)) out.back() += static_cast<char>(std::tolower(c));
-        else if (!out.back().empty()) out.emplace_back();
+        if (std::isalpha(c))
+            out.back() += static_cast<char>(std::tolower(c));
+        else if (!out.back().empty())
+            out.emplace_back();
     }
     if (out.back().empty()) out.pop_back();
     return out;
@@ -32,7 +34,8 @@ bool any_of(const std::vector<std::string>& words, const Words& set) {
 // Stairs need a stair word, or "steps" with a direction: "walks down a hallway" and "takes a few steps" are not
 // stairs, "walks up several steps" is. Climbing without "down" goes up.
 std::string stairs_named_in(const std::vector<std::string>& w) {
-    static const Words stair = {"stair", "stairs", "staircase", "stairway", "stairwell", "upstairs", "downstairs", "stairstep"};
+    static const Words stair = {"stair",     "stairs",   "staircase",  "stairway",
+                                "stairwell", "upstairs", "downstairs", "stairstep"};
     static const Words steps = {"step", "steps"};
     static const Words up = {"up", "upstairs", "ascend", "ascends", "ascending", "ascended"};
     static const Words down = {"down", "downstairs", "descend", "descends", "descending", "descended"};
@@ -48,10 +51,18 @@ std::string stairs_named_in(const std::vector<std::string>& w) {
 }  // namespace
 
 std::string canonical_activity(const std::string& label) {
-    static const std::map<std::string, std::string> aliases = {
-        {"jogging", "running"}, {"run", "running"}, {"walk", "walking"}, {"sit", "sitting"}, {"stand", "standing"},
-        {"lie", "lying"}, {"jump", "jumping"}, {"sit_down_stand_up", "sitting"}, {"lie_down_get_up_bed", "lying"},
-        {"stairs_up_down", "stairs"}, {"climbingup", "stairs_up"}, {"climbingdown", "stairs_down"}};
+    static const std::map<std::string, std::string> aliases = {{"jogging", "running"},
+                                                               {"run", "running"},
+                                                               {"walk", "walking"},
+                                                               {"sit", "sitting"},
+                                                               {"stand", "standing"},
+                                                               {"lie", "lying"},
+                                                               {"jump", "jumping"},
+                                                               {"sit_down_stand_up", "sitting"},
+                                                               {"lie_down_get_up_bed", "lying"},
+                                                               {"stairs_up_down", "stairs"},
+                                                               {"climbingup", "stairs_up"},
+                                                               {"climbingdown", "stairs_down"}};
     const auto a = aliases.find(label);
     return a == aliases.end() ? label : a->second;
 }
@@ -62,15 +73,19 @@ std::string activity_named_in(const std::string& sentence) {
     // From the most specific activity to the least: a sentence about sitting down often says "stands up", one
     // about running "strides", one about lying "gets up".
     static const std::array<std::pair<const char*, Words>, 7> kinds = {{
-        {"lying", {"lie", "lies", "lying", "lay", "lays", "laying", "recline", "reclines", "reclining", "supine", "prone"}},
+        {"lying",
+         {"lie", "lies", "lying", "lay", "lays", "laying", "recline", "reclines", "reclining", "supine", "prone"}},
         {"sitting", {"sit", "sits", "sitting", "sat", "seated", "seat", "chair", "stool", "bench", "sofa", "couch"}},
-        {"running", {"run", "runs", "running", "ran", "runner", "jog", "jogs", "jogging", "jogged", "jogger", "sprint",
-                     "sprints", "sprinting", "sprinted", "dash", "dashes", "dashing", "trot", "trots", "trotting"}},
-        {"jumping", {"jump", "jumps", "jumping", "jumped", "hop", "hops", "hopping", "hopped", "leap", "leaps", "leaping",
-                     "bounce", "bounces", "bouncing"}},
+        {"running", {"run",     "runs",   "running", "ran",    "runner",  "jog",       "jogs",
+                     "jogging", "jogged", "jogger",  "sprint", "sprints", "sprinting", "sprinted",
+                     "dash",    "dashes", "dashing", "trot",   "trots",   "trotting"}},
+        {"jumping",
+         {"jump", "jumps", "jumping", "jumped", "hop", "hops", "hopping", "hopped", "leap", "leaps", "leaping",
+          "bounce", "bounces", "bouncing"}},
         {"dancing", {"dance", "dances", "dancing", "danced", "dancer", "salsa", "waltz", "ballet", "tango"}},
-        {"walking", {"walk", "walks", "walking", "walked", "walker", "stroll", "strolls", "strolling", "march", "marches",
-                     "marching", "pace", "paces", "pacing", "wander", "wanders", "wandering", "stride", "strides", "striding"}},
+        {"walking", {"walk",      "walks",   "walking",   "walked",   "walker",  "stroll",  "strolls",
+                     "strolling", "march",   "marches",   "marching", "pace",    "paces",   "pacing",
+                     "wander",    "wanders", "wandering", "stride",   "strides", "striding"}},
         {"standing", {"stand", "stands", "standing", "stood", "idle", "idly"}},
     }};
     for (const auto& [activity, words] : kinds)

@@ -89,22 +89,32 @@ AsfSkeleton parse_asf(const std::string& text, const std::string& source) {
         } else if (section == ":root") {
             if (w[0] == "order") root.dofs = parse_dofs(w, 1, source, n);
             if (w[0] == "position" && w.size() >= 4)
-                root_position = {number(w[1], source, n, "a number"), number(w[2], source, n, "a number"), number(w[3], source, n, "a number")};
+                root_position = {number(w[1], source, n, "a number"), number(w[2], source, n, "a number"),
+                                 number(w[3], source, n, "a number")};
             if (w[0] == "orientation" && w.size() >= 4) {
-                const double deg[3] = {number(w[1], source, n, "a number"), number(w[2], source, n, "a number"), number(w[3], source, n, "a number")};
+                const double deg[3] = {number(w[1], source, n, "a number"), number(w[2], source, n, "a number"),
+                                       number(w[3], source, n, "a number")};
                 root.axis = euler_rotation(deg, "XYZ", source, n);
             }
         } else if (section == ":bonedata") {
-            if (w[0] == "begin") current.clear();
-            else if (w[0] == "name" && w.size() >= 2) { current = w[1]; bones[current]; }
-            else if (current.empty() && w[0] != "end" && w[0] != "id") throw Error(source, at, "a bone name before its data", w[0]);
+            if (w[0] == "begin")
+                current.clear();
+            else if (w[0] == "name" && w.size() >= 2) {
+                current = w[1];
+                bones[current];
+            } else if (current.empty() && w[0] != "end" && w[0] != "id")
+                throw Error(source, at, "a bone name before its data", w[0]);
             else if (w[0] == "direction" && w.size() >= 4)
-                bones[current].direction = {number(w[1], source, n, "a number"), number(w[2], source, n, "a number"), number(w[3], source, n, "a number")};
-            else if (w[0] == "length" && w.size() >= 2) bones[current].length = number(w[1], source, n, "a bone length");
+                bones[current].direction = {number(w[1], source, n, "a number"), number(w[2], source, n, "a number"),
+                                            number(w[3], source, n, "a number")};
+            else if (w[0] == "length" && w.size() >= 2)
+                bones[current].length = number(w[1], source, n, "a bone length");
             else if (w[0] == "axis" && w.size() >= 5) {
-                const double deg[3] = {number(w[1], source, n, "a number"), number(w[2], source, n, "a number"), number(w[3], source, n, "a number")};
+                const double deg[3] = {number(w[1], source, n, "a number"), number(w[2], source, n, "a number"),
+                                       number(w[3], source, n, "a number")};
                 bones[current].axis = euler_rotation(deg, w[4], source, n);
-            } else if (w[0] == "dof") bones[current].dofs = parse_dofs(w, 1, source, n);
+            } else if (w[0] == "dof")
+                bones[current].dofs = parse_dofs(w, 1, source, n);
         } else if (section == ":hierarchy" && w[0] != "begin" && w[0] != "end") {
             hierarchy.push_back({w[0], std::vector<std::string>(w.begin() + 1, w.end())});
         }
@@ -124,8 +134,9 @@ AsfSkeleton parse_asf(const std::string& text, const std::string& source) {
     for (size_t qi = 0; qi < queue.size(); ++qi) {
         const std::string parent = queue[qi];
         const int parent_index = s.structure.find(parent);
-        const Eigen::Vector3d parent_bone =
-            parent == "root" ? Eigen::Vector3d::Zero() : Eigen::Vector3d(bones[parent].direction * bones[parent].length);
+        const Eigen::Vector3d parent_bone = parent == "root"
+                                                ? Eigen::Vector3d::Zero()
+                                                : Eigen::Vector3d(bones[parent].direction * bones[parent].length);
         bool has_children = false;
         for (const auto& [p, children] : hierarchy) {
             if (p != parent) continue;
@@ -193,13 +204,18 @@ std::vector<BvhPose> parse_amc(const std::string& text, const AsfSkeleton& s, co
         bool translated = false;
         for (size_t k = 0; k < dofs.size(); ++k) {
             const double v = number(w[k + 1], source, n, "a number");
-            if (dofs[k] < 3) rot[dofs[k]] = v;
-            else { trans[dofs[k] - 3] = v; translated = true; }
+            if (dofs[k] < 3)
+                rot[dofs[k]] = v;
+            else {
+                trans[dofs[k] - 3] = v;
+                translated = true;
+            }
         }
         const Quat& c = s.axis[static_cast<size_t>(j)];
         BvhPose& pose = poses.back();
         pose.rotation[static_cast<size_t>(j)] = c * euler_rotation(rot, "XYZ", source, n) * c.conjugate();
-        if (translated) pose.translation[static_cast<size_t>(j)] = s.structure.joints[static_cast<size_t>(j)].offset + trans;
+        if (translated)
+            pose.translation[static_cast<size_t>(j)] = s.structure.joints[static_cast<size_t>(j)].offset + trans;
     }
     if (poses.empty()) throw Error(source, "AMC", "at least one frame");
     return poses;

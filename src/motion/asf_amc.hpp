@@ -18,9 +18,9 @@
 namespace t2imu {
 
 struct AsfSkeleton {
-    BvhMotion structure;       // joints, parents and offsets (ASF units); no channels or frames
-    double metres_per_unit;    // 0.0254 / length
-    std::vector<Quat> axis;    // C of each joint (identity for End Sites)
+    BvhMotion structure;     // joints, parents and offsets (ASF units); no channels or frames
+    double metres_per_unit;  // 0.0254 / length
+    std::vector<Quat> axis;  // C of each joint (identity for End Sites)
     // Degrees of freedom of each joint in the order AMC lists their values: 0..2 = rx, ry, rz; 3..5 = tx, ty, tz.
     std::vector<std::vector<int>> dofs;
 };

@@ -37,7 +37,10 @@ struct Tokens {
     double number(const char* what) {
         const std::string& w = next(what);
         const std::optional<double> v = parse_finite(w);
-        if (!v) { --i; fail(what); }
+        if (!v) {
+            --i;
+            fail(what);
+        }
         return *v;
     }
 };
@@ -49,8 +52,15 @@ Tokens tokenize(const std::string& text, const std::string& source) {
     size_t k = 0;
     while (k < text.size()) {
         const char c = text[k];
-        if (c == '\n') { ++line; ++k; continue; }
-        if (c == ' ' || c == '\t' || c == '\r') { ++k; continue; }
+        if (c == '\n') {
+            ++line;
+            ++k;
+            continue;
+        }
+        if (c == ' ' || c == '\t' || c == '\r') {
+            ++k;
+            continue;
+        }
         const size_t start = k;
         while (k < text.size() && text[k] != ' ' && text[k] != '\t' && text[k] != '\r' && text[k] != '\n') ++k;
         t.words.emplace_back(text, start, k - start);
@@ -61,10 +71,12 @@ Tokens tokenize(const std::string& text, const std::string& source) {
 
 BvhChannel parse_channel(Tokens& t) {
     const std::string& w = t.next("a channel name");
-    static const struct { const char* name; BvhChannel ch; } table[] = {
-        {"Xposition", BvhChannel::x_position}, {"Yposition", BvhChannel::y_position},
-        {"Zposition", BvhChannel::z_position}, {"Xrotation", BvhChannel::x_rotation},
-        {"Yrotation", BvhChannel::y_rotation}, {"Zrotation", BvhChannel::z_rotation}};
+    static const struct {
+        const char* name;
+        BvhChannel ch;
+    } table[] = {{"Xposition", BvhChannel::x_position}, {"Yposition", BvhChannel::y_position},
+                 {"Zposition", BvhChannel::z_position}, {"Xrotation", BvhChannel::x_rotation},
+                 {"Yrotation", BvhChannel::y_rotation}, {"Zrotation", BvhChannel::z_rotation}};
     for (const auto& e : table)
         if (w == e.name) return e.ch;
     --t.i;
@@ -87,9 +99,13 @@ void parse_joint(Tokens& t, BvhMotion& m, const std::string& name, int parent, i
     m.joints[static_cast<size_t>(index)].offset = parse_offset(t);
     t.expect("CHANNELS");
     const double n = t.number("a channel count");
-    if (n < 0 || n > 6 || n != std::floor(n)) { --t.i; t.fail("a channel count from 0 to 6"); }
+    if (n < 0 || n > 6 || n != std::floor(n)) {
+        --t.i;
+        t.fail("a channel count from 0 to 6");
+    }
     m.joints[static_cast<size_t>(index)].first_channel = m.num_channels;
-    for (int c = 0; c < static_cast<int>(n); ++c) m.joints[static_cast<size_t>(index)].channels.push_back(parse_channel(t));
+    for (int c = 0; c < static_cast<int>(n); ++c)
+        m.joints[static_cast<size_t>(index)].channels.push_back(parse_channel(t));
     m.num_channels += static_cast<int>(n);
     while (true) {
         const std::string& w = t.next("JOINT, End Site or '}'");
@@ -152,19 +168,28 @@ BvhMotion parse_bvh(const std::string& text, const std::string& source) {
     t.expect("MOTION");
     t.expect("Frames:");
     const double frames = t.number("a frame count");
-    if (frames < 1 || frames != std::floor(frames) || frames > 1e8) { --t.i; t.fail("a positive whole frame count"); }
+    if (frames < 1 || frames != std::floor(frames) || frames > 1e8) {
+        --t.i;
+        t.fail("a positive whole frame count");
+    }
     t.expect("Frame");
     t.expect("Time:");
     m.frame_time = t.number("a frame time in seconds");
-    if (!(m.frame_time > 0)) { --t.i; t.fail("a positive frame time"); }
+    if (!(m.frame_time > 0)) {
+        --t.i;
+        t.fail("a positive frame time");
+    }
     m.num_frames = static_cast<int>(frames);
     const size_t count = static_cast<size_t>(m.num_frames) * static_cast<size_t>(m.num_channels);
     if (t.words.size() - t.i < count)
-        throw Error(source, "MOTION", std::to_string(count) + " values (" + std::to_string(m.num_frames) + " frames x " +
-                    std::to_string(m.num_channels) + " channels)", std::to_string(t.words.size() - t.i) + " (truncated)");
+        throw Error(source, "MOTION",
+                    std::to_string(count) + " values (" + std::to_string(m.num_frames) + " frames x " +
+                        std::to_string(m.num_channels) + " channels)",
+                    std::to_string(t.words.size() - t.i) + " (truncated)");
     if (t.words.size() - t.i > count)
-        throw Error(source, "MOTION", std::to_string(count) + " values (" + std::to_string(m.num_channels) +
-                    " channels per frame)", std::to_string(t.words.size() - t.i));
+        throw Error(source, "MOTION",
+                    std::to_string(count) + " values (" + std::to_string(m.num_channels) + " channels per frame)",
+                    std::to_string(t.words.size() - t.i));
     m.values.resize(count);
     for (size_t k = 0; k < count; ++k) m.values[k] = t.number("a channel value");
     return m;
@@ -185,9 +210,18 @@ BvhPose bvh_pose(const BvhMotion& m, int frame, PositionChannels positions) {
         for (size_t c = 0; c < joint.channels.size(); ++c) {
             const double x = v[joint.first_channel + static_cast<int>(c)];
             switch (joint.channels[c]) {
-                case BvhChannel::x_position: pos.x() = x; has_position = true; break;
-                case BvhChannel::y_position: pos.y() = x; has_position = true; break;
-                case BvhChannel::z_position: pos.z() = x; has_position = true; break;
+                case BvhChannel::x_position:
+                    pos.x() = x;
+                    has_position = true;
+                    break;
+                case BvhChannel::y_position:
+                    pos.y() = x;
+                    has_position = true;
+                    break;
+                case BvhChannel::z_position:
+                    pos.z() = x;
+                    has_position = true;
+                    break;
                 default: p.rotation[j] = p.rotation[j] * axis_rotation(joint.channels[c], x);
             }
         }
@@ -232,9 +266,12 @@ void format_joint(const BvhMotion& m, const std::vector<std::vector<size_t>>& ch
                   std::ostringstream& out, std::vector<size_t>& order) {
     const BvhJoint& joint = m.joints[j];
     const std::string in(2 * depth, ' ');
-    if (joint.end_site) out << in << "End Site\n";
-    else out << in << (joint.parent < 0 ? "ROOT " : "JOINT ") << joint.name << "\n";
-    out << in << "{\n" << in << "  OFFSET " << joint.offset.x() << " " << joint.offset.y() << " " << joint.offset.z() << "\n";
+    if (joint.end_site)
+        out << in << "End Site\n";
+    else
+        out << in << (joint.parent < 0 ? "ROOT " : "JOINT ") << joint.name << "\n";
+    out << in << "{\n"
+        << in << "  OFFSET " << joint.offset.x() << " " << joint.offset.y() << " " << joint.offset.z() << "\n";
     if (!joint.end_site) {
         out << in << "  CHANNELS " << joint.channels.size();
         for (BvhChannel c : joint.channels) out << " " << channel_name(c);

@@ -14,11 +14,11 @@ namespace t2imu {
 enum class BvhChannel { x_position, y_position, z_position, x_rotation, y_rotation, z_rotation };
 
 struct BvhJoint {
-    std::string name;              // End Sites are named "<parent>/end"
-    int parent = -1;               // index into BvhMotion::joints, -1 for the root
-    Eigen::Vector3d offset;        // rest translation from the parent, file units
+    std::string name;        // End Sites are named "<parent>/end"
+    int parent = -1;         // index into BvhMotion::joints, -1 for the root
+    Eigen::Vector3d offset;  // rest translation from the parent, file units
     std::vector<BvhChannel> channels;
-    int first_channel = 0;         // index of this joint's first value in a frame line
+    int first_channel = 0;  // index of this joint's first value in a frame line
     bool end_site = false;
 };
 
@@ -26,11 +26,13 @@ struct BvhMotion {
     std::vector<BvhJoint> joints;  // parents before children
     int num_channels = 0;
     int num_frames = 0;
-    double frame_time = 0;         // seconds
-    std::vector<double> values;    // [num_frames * num_channels]
+    double frame_time = 0;       // seconds
+    std::vector<double> values;  // [num_frames * num_channels]
 
     int find(const std::string& name) const;  // -1 when absent
-    const double* frame(int f) const { return values.data() + static_cast<size_t>(f) * static_cast<size_t>(num_channels); }
+    const double* frame(int f) const {
+        return values.data() + static_cast<size_t>(f) * static_cast<size_t>(num_channels);
+    }
 };
 
 // One frame's local transforms: rotation and translation of each joint relative to its parent (file units).

@@ -37,8 +37,12 @@ std::array<Quat, 22> joint_world_rotations(const PoseQuats& q) {
     for (int c : {2, 0, 1, 3, 4})
         for (int k = 1; k + 1 < kKinematicChainLengths[static_cast<size_t>(c)]; ++k) {
             const size_t j = static_cast<size_t>(kKinematicChains[static_cast<size_t>(c)][static_cast<size_t>(k)]);
-            const size_t next = static_cast<size_t>(kKinematicChains[static_cast<size_t>(c)][static_cast<size_t>(k + 1)]);
-            if (!set[j]) { world[j] = bone[next]; set[j] = true; }
+            const size_t next =
+                static_cast<size_t>(kKinematicChains[static_cast<size_t>(c)][static_cast<size_t>(k + 1)]);
+            if (!set[j]) {
+                world[j] = bone[next];
+                set[j] = true;
+            }
         }
     for (size_t j = 1; j < 22; ++j)
         if (!set[j]) world[j] = world[static_cast<size_t>(kParents[j])];

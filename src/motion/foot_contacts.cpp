@@ -40,7 +40,10 @@ double lowest_height(const JointSequence& m, int j) {
 void close_short_gaps(std::vector<bool>& stance, int gap) {
     const int n = static_cast<int>(stance.size());
     for (int f = 1; f < n;) {
-        if (stance[static_cast<size_t>(f)] || !stance[static_cast<size_t>(f - 1)]) { ++f; continue; }
+        if (stance[static_cast<size_t>(f)] || !stance[static_cast<size_t>(f - 1)]) {
+            ++f;
+            continue;
+        }
         int end = f;
         while (end < n && !stance[static_cast<size_t>(end)]) ++end;
         if (end < n && end - f <= gap) std::fill(stance.begin() + f, stance.begin() + end, true);
@@ -49,7 +52,8 @@ void close_short_gaps(std::vector<bool>& stance, int gap) {
 }
 
 void require_walk(const JointSequence& m) {
-    if (m.num_joints != smpl22::kNumJoints) throw Error("foot contacts", "joints", "22 SMPL joints", std::to_string(m.num_joints));
+    if (m.num_joints != smpl22::kNumJoints)
+        throw Error("foot contacts", "joints", "22 SMPL joints", std::to_string(m.num_joints));
     if (m.num_frames < 3) throw Error("foot contacts", "frames", "at least 3", std::to_string(m.num_frames));
 }
 
@@ -61,7 +65,8 @@ std::vector<bool> stance_frames(const JointSequence& m, Foot foot) {
     const double low_ankle = lowest_height(m, joints[0]), low_toe = lowest_height(m, joints[1]);
     std::vector<bool> stance(static_cast<size_t>(m.num_frames));
     for (int f = 0; f < m.num_frames; ++f)
-        stance[static_cast<size_t>(f)] = low_and_slow(m, f, joints[0], low_ankle) || low_and_slow(m, f, joints[1], low_toe);
+        stance[static_cast<size_t>(f)] =
+            low_and_slow(m, f, joints[0], low_ankle) || low_and_slow(m, f, joints[1], low_toe);
     close_short_gaps(stance, std::max(1, frames_of(kMaxStanceGapSeconds, m.fps)));
     return stance;
 }
@@ -70,7 +75,8 @@ std::vector<bool> planted_frames(const JointSequence& m, Foot foot) {
     require_walk(m);
     const std::array<int, 2>& joints = foot == Foot::left ? smpl22::kFootLeft : smpl22::kFootRight;
     std::vector<bool> planted(static_cast<size_t>(m.num_frames));
-    for (int f = 0; f < m.num_frames; ++f) planted[static_cast<size_t>(f)] = still(m, f, joints[0]) || still(m, f, joints[1]);
+    for (int f = 0; f < m.num_frames; ++f)
+        planted[static_cast<size_t>(f)] = still(m, f, joints[0]) || still(m, f, joints[1]);
     close_short_gaps(planted, std::max(1, frames_of(kMaxStanceGapSeconds, m.fps)));
     return planted;
 }
@@ -82,7 +88,10 @@ std::vector<StancePhase> runs_of(const std::vector<bool>& flags, Foot foot, int 
     std::vector<StancePhase> phases;
     const int n = static_cast<int>(flags.size());
     for (int f = 0; f < n;) {
-        if (!flags[static_cast<size_t>(f)]) { ++f; continue; }
+        if (!flags[static_cast<size_t>(f)]) {
+            ++f;
+            continue;
+        }
         int last = f;
         while (last + 1 < n && flags[static_cast<size_t>(last + 1)]) ++last;
         if (last - f + 1 >= min_frames) phases.push_back({foot, f, last});
@@ -91,7 +100,8 @@ std::vector<StancePhase> runs_of(const std::vector<bool>& flags, Foot foot, int 
     return phases;
 }
 
-std::vector<StancePhase> phases_of_both_feet(const JointSequence& m, std::vector<bool> (*flags)(const JointSequence&, Foot)) {
+std::vector<StancePhase> phases_of_both_feet(const JointSequence& m,
+                                             std::vector<bool> (*flags)(const JointSequence&, Foot)) {
     std::vector<StancePhase> phases;
     const int min_frames = frames_of(kMinStanceSeconds, m.fps);
     for (Foot foot : {Foot::left, Foot::right}) {
@@ -107,6 +117,8 @@ std::vector<StancePhase> phases_of_both_feet(const JointSequence& m, std::vector
 
 std::vector<StancePhase> detect_stance_phases(const JointSequence& m) { return phases_of_both_feet(m, stance_frames); }
 
-std::vector<StancePhase> detect_planted_phases(const JointSequence& m) { return phases_of_both_feet(m, planted_frames); }
+std::vector<StancePhase> detect_planted_phases(const JointSequence& m) {
+    return phases_of_both_feet(m, planted_frames);
+}
 
 }  // namespace t2imu

@@ -18,10 +18,10 @@
 
 namespace t2imu {
 
-constexpr double kStanceHeight = 0.05;  // m above the joint's lowest height in the clip
-constexpr double kStanceSpeed = 0.5;    // m/s, horizontal
-constexpr double kMinStanceSeconds = 0.15;   // shortest stance kept
-constexpr double kMaxStanceGapSeconds = 0.05; // longest gap closed inside a stance (one frame at 20 fps)
+constexpr double kStanceHeight = 0.05;         // m above the joint's lowest height in the clip
+constexpr double kStanceSpeed = 0.5;           // m/s, horizontal
+constexpr double kMinStanceSeconds = 0.15;     // shortest stance kept
+constexpr double kMaxStanceGapSeconds = 0.05;  // longest gap closed inside a stance (one frame at 20 fps)
 
 enum class Foot : int { left = 0, right = 1 };
 

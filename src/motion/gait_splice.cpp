@@ -32,7 +32,9 @@ std::optional<int> mid_stance(const std::vector<StancePhase>& phases, int frames
 
 }  // namespace
 
-void validate(const GaitSpliceOptions& o) { check_option_range(o.blend_s, 0.05, 0.4, "gait splice options", "blend_s"); }
+void validate(const GaitSpliceOptions& o) {
+    check_option_range(o.blend_s, 0.05, 0.4, "gait splice options", "blend_s");
+}
 
 GaitSplice splice_at_stance(const JointSequence& first, const JointSequence& second, const GaitSpliceOptions& o) {
     validate(o);
@@ -40,16 +42,23 @@ GaitSplice splice_at_stance(const JointSequence& first, const JointSequence& sec
         if (m->num_joints != kNumJoints || m->fps != first.fps || m->num_frames < 3)
             throw Error("splice_at_stance", "motions", "SMPL-22 joints at one frame rate");
     const int half = std::max(1, frames_of(o.blend_s / 2, first.fps));
-    const std::vector<StancePhase> first_phases = detect_planted_phases(first), second_phases = detect_planted_phases(second);
+    const std::vector<StancePhase> first_phases = detect_planted_phases(first),
+                                   second_phases = detect_planted_phases(second);
     std::optional<int> a, b;
     Foot foot = Foot::left;
     for (Foot f : {Foot::left, Foot::right}) {  // the foot whose last stance in `first` comes later: less is cut
         const std::optional<int> fa = mid_stance(first_phases, first.num_frames, f, half, true),
                                  fb = mid_stance(second_phases, second.num_frames, f, half, false);
         if (!fa || !fb) continue;
-        if (!a || *fa > *a) { a = fa; b = fb; foot = f; }
+        if (!a || *fa > *a) {
+            a = fa;
+            b = fb;
+            foot = f;
+        }
     }
-    if (!a) throw Error("splice_at_stance", "motions", "a planted phase of one foot at the end of the first and the start of the second");
+    if (!a)
+        throw Error("splice_at_stance", "motions",
+                    "a planted phase of one foot at the end of the first and the start of the second");
     // `second` turned about its planted ankle and moved so that the ankle stands where it stands in `first`.
     const int ankle = kLegs[static_cast<size_t>(foot)].ankle;
     JointSequence next = turned_to_face(second, *b, body_facing(first, *a), second.at(*b, ankle), first.at(*a, ankle));
@@ -64,7 +73,8 @@ GaitSplice splice_at_stance(const JointSequence& first, const JointSequence& sec
         for (int j = 0; j < kNumJoints; ++j)
             out.motion.positions.push_back((1 - w) * first.at(*a - half + k, j) + w * next.at(*b - half + k, j));
     }
-    out.motion.positions.insert(out.motion.positions.end(), next.positions.begin() + (*b + half + 1) * kNumJoints, next.positions.end());
+    out.motion.positions.insert(out.motion.positions.end(), next.positions.begin() + (*b + half + 1) * kNumJoints,
+                                next.positions.end());
     out.motion.num_frames = static_cast<int>(out.motion.positions.size()) / kNumJoints;
     out.splice_frame = *a;
     restore_bone_lengths(out.motion, bone_lengths(first, 0));

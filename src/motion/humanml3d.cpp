@@ -56,7 +56,10 @@ Vec3f qrot_f32(const Quatf& q, const Vec3f& v) {
 }
 
 Quat to_quat(const Quatf& q) { return Quat(q[0], q[1], q[2], q[3]); }
-Quatf to_quatf(const Quat& q) { return Quatf(static_cast<float>(q.w()), static_cast<float>(q.x()), static_cast<float>(q.y()), static_cast<float>(q.z())); }
+Quatf to_quatf(const Quat& q) {
+    return Quatf(static_cast<float>(q.w()), static_cast<float>(q.x()), static_cast<float>(q.y()),
+                 static_cast<float>(q.z()));
+}
 Vec3f to_f32(const Vector3d& v) { return v.cast<float>(); }
 Vector3d f32(const Vector3d& v) { return v.cast<float>().cast<double>(); }
 
@@ -84,7 +87,9 @@ std::vector<Quat> root_facing_rotations(const JointSequence& joints, bool smooth
     }
     if (smooth_forward) forward = gaussian_filter1d_nearest(forward, 20.0).cast<float>().cast<double>();
     std::vector<Quat> root(static_cast<size_t>(n));
-    for (int f = 0; f < n; ++f) root[static_cast<size_t>(f)] = to_quat(qbetween_f32(to_f32(forward.row(f).transpose().normalized()), kFacing.cast<float>()));
+    for (int f = 0; f < n; ++f)
+        root[static_cast<size_t>(f)] =
+            to_quat(qbetween_f32(to_f32(forward.row(f).transpose().normalized()), kFacing.cast<float>()));
     // Official quirk (common/skeleton.py at the HumanML3D release): the first frame's root rotation is set to
     // the identity, whatever the body's facing. It shows in the features (frame 0 of ric and the first root
     // rotation velocity), so it is kept.
@@ -92,7 +97,8 @@ std::vector<Quat> root_facing_rotations(const JointSequence& joints, bool smooth
     return root;
 }
 
-template <class Fn> void for_each_chain_bone(Fn fn) {
+template <class Fn>
+void for_each_chain_bone(Fn fn) {
     for (int c = 0; c < 5; ++c)
         for (int k = 1; k < kKinematicChainLengths[static_cast<size_t>(c)]; ++k)
             fn(kKinematicChains[static_cast<size_t>(c)][static_cast<size_t>(k - 1)],
@@ -104,7 +110,8 @@ void foot_contacts(const JointSequence& p, double threshold, FeatureMatrix& feat
     const std::array<int, 4> feet = {kFootLeft[0], kFootLeft[1], kFootRight[0], kFootRight[1]};
     for (int f = 0; f + 1 < p.num_frames; ++f)
         for (int k = 0; k < 4; ++k) {
-            const double d2 = (p.at(f + 1, feet[static_cast<size_t>(k)]) - p.at(f, feet[static_cast<size_t>(k)])).squaredNorm();
+            const double d2 =
+                (p.at(f + 1, feet[static_cast<size_t>(k)]) - p.at(f, feet[static_cast<size_t>(k)])).squaredNorm();
             features(f, 259 + k) = d2 < threshold ? 1.0 : 0.0;
         }
 }
@@ -116,7 +123,8 @@ std::array<Vector3d, 22> offsets_from_joints(const JointSequence& joints, int fr
     off[0] = kRawOffsets[0];
     for (int j = 1; j < kNumJoints; ++j)
         off[static_cast<size_t>(j)] =
-            f32((joints.at(frame, j) - joints.at(frame, kParents[static_cast<size_t>(j)])).norm() * kRawOffsets[static_cast<size_t>(j)]);
+            f32((joints.at(frame, j) - joints.at(frame, kParents[static_cast<size_t>(j)])).norm() *
+                kRawOffsets[static_cast<size_t>(j)]);
     return off;
 }
 
@@ -310,7 +318,8 @@ JointSequence recover_from_rot(const FeatureMatrix& d, const std::array<Vector3d
         const size_t t = static_cast<size_t>(f);
         std::array<Eigen::Matrix3d, 22> local;
         local[0] = quaternion_to_matrix(rq[t]);
-        for (int j = 1; j < kNumJoints; ++j) local[static_cast<size_t>(j)] = cont6d_to_matrix(d.block<1, 6>(f, 67 + 6 * (j - 1)).transpose());
+        for (int j = 1; j < kNumJoints; ++j)
+            local[static_cast<size_t>(j)] = cont6d_to_matrix(d.block<1, 6>(f, 67 + 6 * (j - 1)).transpose());
         out.at(f, 0) = rp[t];
         Eigen::Matrix3d chain_rot;
         for_each_chain_bone([&](int parent, int child, bool chain_start) {

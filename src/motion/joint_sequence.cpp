@@ -9,11 +9,14 @@
 namespace t2imu {
 
 JointSequence::JointSequence(int frames, int joints, double fps_)
-    : num_frames(frames), num_joints(joints), fps(fps_),
+    : num_frames(frames),
+      num_joints(joints),
+      fps(fps_),
       positions(static_cast<size_t>(frames) * static_cast<size_t>(joints), Eigen::Vector3d::Zero()) {}
 
 void check_motion_fps(double fps, const std::string& option) {
-    if (!(fps > 0 && fps <= 1000)) throw Error(option, "frame rate", "above 0 and at most 1000 fps", std::to_string(fps));
+    if (!(fps > 0 && fps <= 1000))
+        throw Error(option, "frame rate", "above 0 and at most 1000 fps", std::to_string(fps));
 }
 
 double lowest_joint_height_at(const JointSequence& s, int frame) {
@@ -37,11 +40,13 @@ JointSequence slice_frames(const JointSequence& s, int begin, int end) {
 
 JointSequence concatenate_frames(const JointSequence& a, const JointSequence& b) {
     if (a.num_joints != b.num_joints || a.fps != b.fps)
-        throw Error("concatenate_frames", "b", std::to_string(a.num_joints) + " joints at " + std::to_string(a.fps) + " fps",
+        throw Error("concatenate_frames", "b",
+                    std::to_string(a.num_joints) + " joints at " + std::to_string(a.fps) + " fps",
                     std::to_string(b.num_joints) + " joints at " + std::to_string(b.fps) + " fps");
     JointSequence out(a.num_frames + b.num_frames, a.num_joints, a.fps);
     std::copy(a.positions.begin(), a.positions.end(), out.positions.begin());
-    std::copy(b.positions.begin(), b.positions.end(), out.positions.begin() + static_cast<std::ptrdiff_t>(a.positions.size()));
+    std::copy(b.positions.begin(), b.positions.end(),
+              out.positions.begin() + static_cast<std::ptrdiff_t>(a.positions.size()));
     return out;
 }
 
@@ -53,8 +58,7 @@ static void require_finite(const std::vector<double>& v, const std::string& sour
 
 JointSequence joint_sequence_from_array(const NdArray& a, const std::string& source, int joints, int min_frames,
                                         double fps) {
-    if (a.shape.size() != 3 || a.shape[2] != 3)
-        throw Error(source, "shape", "[frames, joints, 3]", a.shape_str());
+    if (a.shape.size() != 3 || a.shape[2] != 3) throw Error(source, "shape", "[frames, joints, 3]", a.shape_str());
     if (joints > 0 && a.shape[1] != joints)
         throw Error(source, "shape", std::to_string(joints) + " joints", a.shape_str());
     if (a.shape[0] < min_frames)

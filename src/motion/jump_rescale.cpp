@@ -24,7 +24,8 @@ constexpr double kMinJumpSeconds = 0.5;
 double standing_pelvis_height(const JointSequence& m, const std::array<std::vector<bool>, 2>& stance) {
     std::vector<double> heights;
     for (int f = 0; f < m.num_frames; ++f)
-        if (stance[0][static_cast<size_t>(f)] && stance[1][static_cast<size_t>(f)]) heights.push_back(m.at(f, pelvis).y());
+        if (stance[0][static_cast<size_t>(f)] && stance[1][static_cast<size_t>(f)])
+            heights.push_back(m.at(f, pelvis).y());
     if (heights.empty()) throw Error("rescale_jump", "jump", "a clip with both feet on the floor at some frame");
     std::nth_element(heights.begin(), heights.begin() + static_cast<long>(heights.size() / 2), heights.end());
     return heights[heights.size() / 2];
@@ -52,7 +53,9 @@ std::vector<double> airborne_weight(const std::vector<bool>& stance, double fps)
 
 }  // namespace
 
-void validate(const JumpRescaleOptions& o) { check_option_range(o.time_scale, 0.8, 1.25, "jump options", "time_scale"); }
+void validate(const JumpRescaleOptions& o) {
+    check_option_range(o.time_scale, 0.8, 1.25, "jump options", "time_scale");
+}
 
 JointSequence rescale_jump(const JointSequence& jump, const JumpRescaleOptions& o) {
     validate(o);
@@ -60,8 +63,10 @@ JointSequence rescale_jump(const JointSequence& jump, const JumpRescaleOptions& 
     if (jump.num_frames < kMinJumpSeconds * jump.fps) throw Error("rescale_jump", "jump", "a clip of at least 0.5 s");
     const double k = o.time_scale;
     const JointSequence source = retime(jump, 1.0 / k);  // k times slower; bones at the source's lengths
-    const std::array<std::vector<bool>, 2> stance = {stance_frames(source, Foot::left), stance_frames(source, Foot::right)};
-    const std::array<std::vector<double>, 2> airborne = {airborne_weight(stance[0], source.fps), airborne_weight(stance[1], source.fps)};
+    const std::array<std::vector<bool>, 2> stance = {stance_frames(source, Foot::left),
+                                                     stance_frames(source, Foot::right)};
+    const std::array<std::vector<double>, 2> airborne = {airborne_weight(stance[0], source.fps),
+                                                         airborne_weight(stance[1], source.fps)};
     const double standing = standing_pelvis_height(source, stance);
 
     JointSequence m = source;

@@ -1,7 +1,8 @@
 // A series of jumps made from single captured ones (SMPL-22 joints, metres, Y up, floor at y = 0). Open capture's
 // jumps are mostly single: HDM05's hopBothLegs1hops clips last 0.6-0.7 s, under the 2 s (40 frames at 20 fps) that
 // MDM's data rules (hml3d_dataset.hpp) keep, so of the 113 jumping-tagged clips of the mocap v5's training split
-// (mirrors aside) 70 never reached a training batch (36 captured hops, 34 rescaled from them), while a HAR data set's "jumping" is jumping over and over.
+// (mirrors aside) 70 never reached a training batch (36 captured hops, 34 rescaled from them), while a HAR data set's
+// "jumping" is jumping over and over.
 //
 // The series plays the jumps one after another. Each next jump is turned about the vertical through its first
 // pelvis position and moved horizontally so that it starts where, and facing the way, the previous one ends (its

@@ -39,10 +39,12 @@ void validate(const LyingOptions& o) {
 
 JointSequence lying_still(const JointSequence& lie_down, const LyingOptions& o) {
     validate(o);
-    if (lie_down.num_joints != kNumJoints || lie_down.num_frames < 1) throw Error("lying_still", "lie_down", "22 SMPL joints, at least one frame");
+    if (lie_down.num_joints != kNumJoints || lie_down.num_frames < 1)
+        throw Error("lying_still", "lie_down", "22 SMPL joints, at least one frame");
     const int last = lie_down.num_frames - 1;
     if (!is_lying(lie_down, last))
-        throw Error("lying_still", "lie_down", "a clip that ends lying (pelvis below 0.4 m, trunk more than 45 deg from vertical)");
+        throw Error("lying_still", "lie_down",
+                    "a clip that ends lying (pelvis below 0.4 m, trunk more than 45 deg from vertical)");
     const int n = frames_of(o.seconds, lie_down.fps) + 1;
     JointSequence m(n, kNumJoints, lie_down.fps);
     const Vector3d pivot = lie_down.at(last, spine2);
@@ -61,8 +63,9 @@ JointSequence lying_still(const JointSequence& lie_down, const LyingOptions& o) 
         for (const auto& [shoulder, elbow, wrist] : {std::array<int, 3>{left_shoulder, left_elbow, left_wrist},
                                                      std::array<int, 3>{right_shoulder, right_elbow, right_wrist}}) {
             const Vector3d& hand = lie_down.at(last, wrist);
-            const TwoBoneIkResult ik = solve_two_bone_ik(m.at(f, shoulder), hand, (lie_down.at(last, elbow) - lie_down.at(last, shoulder)).norm(),
-                                                         (hand - lie_down.at(last, elbow)).norm(), m.at(f, elbow));
+            const TwoBoneIkResult ik = solve_two_bone_ik(
+                m.at(f, shoulder), hand, (lie_down.at(last, elbow) - lie_down.at(last, shoulder)).norm(),
+                (hand - lie_down.at(last, elbow)).norm(), m.at(f, elbow));
             m.at(f, elbow) = ik.middle;
             m.at(f, wrist) = ik.end;
         }

@@ -18,9 +18,9 @@
 namespace t2imu {
 
 struct LyingOptions {
-    double seconds = 10.0;           // length of the derived clip, [1, 120]
-    double breaths_per_min = 14.0;   // [8, 25]
-    double chest_rad = 0.02;         // peak rib-cage turn, [0, 0.05]
+    double seconds = 10.0;          // length of the derived clip, [1, 120]
+    double breaths_per_min = 14.0;  // [8, 25]
+    double chest_rad = 0.02;        // peak rib-cage turn, [0, 0.05]
 };
 
 // Throws Error naming the field when an option is outside its range.

@@ -46,8 +46,11 @@ JointSequence lying_turn(const JointSequence& lying, const LyingTurnOptions& o) 
     if (lying.num_joints != kNumJoints) throw Error("lying_turn", "lying", "22 SMPL joints");
     const int n = lying_turn_frames(o, lying.fps);
     if (lying.num_frames < n)
-        throw Error("lying_turn", "lying", "at least " + std::to_string(n) + " frames", std::to_string(lying.num_frames));
-    if (!is_lying(lying, 0)) throw Error("lying_turn", "lying", "a clip lying at frame 0 (pelvis below 0.4 m, trunk more than 45 deg from vertical)");
+        throw Error("lying_turn", "lying", "at least " + std::to_string(n) + " frames",
+                    std::to_string(lying.num_frames));
+    if (!is_lying(lying, 0))
+        throw Error("lying_turn", "lying",
+                    "a clip lying at frame 0 (pelvis below 0.4 m, trunk more than 45 deg from vertical)");
     const Vector3d axis = horizontal_direction(lying.at(0, neck) - lying.at(0, pelvis));
     const Vector3d pivot = 0.5 * (lying.at(0, neck) + lying.at(0, pelvis));
     double floor = lying.at(0, 0).y();

@@ -13,19 +13,20 @@
 //
 // Timeline: before_s lying as the source lies, turn_s turning (minimum jerk, as every edit of motion_edit.hpp),
 // on_side_s on the side, back_s turning back, after_s lying again. The dataset builder draws the durations
-// (derived_clips.hpp); docs/realism.md#lying-turns-2026-12-03 measures the level they give against real lying recordings.
+// (derived_clips.hpp); docs/realism.md#lying-turns-2026-12-03 measures the level they give against real lying
+// recordings.
 #pragma once
 #include "motion/joint_sequence.hpp"
 
 namespace t2imu {
 
 struct LyingTurnOptions {
-    double before_s = 1.5;    // [0, 10]
-    double turn_s = 1.5;      // [0.8, 4]
-    double on_side_s = 2.0;   // [0, 20]
-    double back_s = 1.5;      // [0.8, 4]
-    double after_s = 1.5;     // [0, 10]
-    double angle_rad = 1.4;   // the turn about the head-ward long axis, right-handed; 0.5 <= |angle_rad| <= 1.7
+    double before_s = 1.5;   // [0, 10]
+    double turn_s = 1.5;     // [0.8, 4]
+    double on_side_s = 2.0;  // [0, 20]
+    double back_s = 1.5;     // [0.8, 4]
+    double after_s = 1.5;    // [0, 10]
+    double angle_rad = 1.4;  // the turn about the head-ward long axis, right-handed; 0.5 <= |angle_rad| <= 1.7
 };
 
 // Throws Error naming the field when an option is outside its range.

@@ -18,7 +18,8 @@ bool root_rotation_is_zero(const BvhMotion& m, int frame) {
     const BvhJoint& root = m.joints[0];
     const double* v = m.frame(frame);
     for (size_t c = 0; c < root.channels.size(); ++c)
-        if (root.channels[c] >= BvhChannel::x_rotation && v[root.first_channel + static_cast<int>(c)] != 0.0) return false;
+        if (root.channels[c] >= BvhChannel::x_rotation && v[root.first_channel + static_cast<int>(c)] != 0.0)
+            return false;
     return true;
 }
 
@@ -69,9 +70,11 @@ std::string find_asf_for(const std::string& amc) {
     for (const auto& e : fs::directory_iterator(p.has_parent_path() ? p.parent_path() : fs::path("."))) {
         if (e.path().extension() != ".asf" && e.path().extension() != ".ASF") continue;
         const std::string s = e.path().stem().string();
-        if (stem.compare(0, s.size(), s) == 0 && s.size() > fs::path(best).stem().string().size()) best = e.path().string();
+        if (stem.compare(0, s.size(), s) == 0 && s.size() > fs::path(best).stem().string().size())
+            best = e.path().string();
     }
-    if (best.empty()) throw Error(amc, "--asf", "an .asf beside the clip whose name is a prefix of the clip's name, or --asf");
+    if (best.empty())
+        throw Error(amc, "--asf", "an .asf beside the clip whose name is a prefix of the clip's name, or --asf");
     return best;
 }
 
@@ -79,7 +82,8 @@ JointSequence import_amc(const std::string& path, const ImportOptions& options) 
     const AsfSkeleton asf = read_asf(options.asf.empty() ? find_asf_for(path) : options.asf);
     const std::vector<BvhPose> poses = read_amc(path, asf);
     const SkeletonMap& map = find_skeleton_map(joint_names(asf.structure), path);
-    return smpl_joints_from_poses(asf.structure, map, asf.metres_per_unit, poses, 1.0 / options.source_fps, options.fps);
+    return smpl_joints_from_poses(asf.structure, map, asf.metres_per_unit, poses, 1.0 / options.source_fps,
+                                  options.fps);
 }
 
 std::string lower_extension(const std::string& path) {
@@ -87,7 +91,6 @@ std::string lower_extension(const std::string& path) {
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     return ext.empty() ? ext : ext.substr(1);
 }
-
 
 // A Z-up source turned to Y up by a rotation of -90 degrees about X: (x, y, z) -> (x, z, -y).
 JointSequence z_up_to_y_up(JointSequence s) {
@@ -99,7 +102,8 @@ JointSequence import_motion_as_captured(const std::string& path, const ImportOpt
     const std::string format = options.format.empty() ? lower_extension(path) : options.format;
     if (format == "bvh") return import_bvh(path, options);
     if (format == "amc") return import_amc(path, options);
-    if (format == "npy" && options.fps == 0) throw Error(path, "--fps", "the joints' frame rate (an .npy does not record it)", "0");
+    if (format == "npy" && options.fps == 0)
+        throw Error(path, "--fps", "the joints' frame rate (an .npy does not record it)", "0");
     if (format == "npy") return joint_sequence_from_array(read_npy(path), path, 22, 1, options.fps);
     throw Error(path, "format", "bvh, amc or npy (by extension, or --format)", format.empty() ? "none" : format);
 }
@@ -107,13 +111,15 @@ JointSequence import_motion_as_captured(const std::string& path, const ImportOpt
 }  // namespace
 
 double capture_fps_for(double capture_fps) {
-    if (!(capture_fps > 0 && std::isfinite(capture_fps))) throw Error("import", "capture rate", "a positive frame rate", std::to_string(capture_fps));
+    if (!(capture_fps > 0 && std::isfinite(capture_fps)))
+        throw Error("import", "capture rate", "a positive frame rate", std::to_string(capture_fps));
     // Rates are printed rounded (0.00833333 s for 1/120 s): a thousandth over a whole multiple still divides.
     return capture_fps / std::max(1.0, std::ceil(capture_fps / kMaxCaptureFps - 1e-3));
 }
 
 JointSequence import_motion(const std::string& path, const ImportOptions& options) {
-    if (!(options.fps >= 0) || options.fps > 1000) throw Error(path, "--fps", "a frame rate in (0, 1000], or 0 for the capture rate");
+    if (!(options.fps >= 0) || options.fps > 1000)
+        throw Error(path, "--fps", "a frame rate in (0, 1000], or 0 for the capture rate");
     if (options.up != 'y' && options.up != 'z') throw Error(path, "--up", "y or z", std::string(1, options.up));
     JointSequence s = import_motion_as_captured(path, options);
     return options.up == 'z' ? z_up_to_y_up(std::move(s)) : s;

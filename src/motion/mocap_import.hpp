@@ -7,11 +7,11 @@
 namespace t2imu {
 
 struct ImportOptions {
-    double fps = 20.0;    // output frame rate; 0 = the capture rate (capture_fps_for)
-    std::string format;   // "bvh", "amc" or "npy"; "" = from the file's extension
-    std::string asf;      // the ASF skeleton of an AMC clip; "" = the .asf beside it whose name is a prefix of the clip's
+    double fps = 20.0;   // output frame rate; 0 = the capture rate (capture_fps_for)
+    std::string format;  // "bvh", "amc" or "npy"; "" = from the file's extension
+    std::string asf;  // the ASF skeleton of an AMC clip; "" = the .asf beside it whose name is a prefix of the clip's
     double source_fps = 120.0;  // AMC files do not record their rate; CMU and HDM05 capture at 120 fps
-    char up = 'y';        // the source's up axis: 'y' (every built-in flavour) or 'z' (turned to Y up, right-handed)
+    char up = 'y';  // the source's up axis: 'y' (every built-in flavour) or 'z' (turned to Y up, right-handed)
 };
 
 // The rate a capture at `capture_fps` is kept at by ImportOptions::fps = 0: itself, or itself divided by the
@@ -23,8 +23,8 @@ constexpr double kMaxCaptureFps = 60.0;
 double capture_fps_for(double capture_fps);
 
 // BVH (any known skeleton flavour, see skeleton_map.hpp), ASF/AMC, or an .npy of [F,22,3] joints (taken as
-// already at options.fps, which must then be given). A leading T-pose frame is dropped where the flavour has one (SkeletonMap). Throws
-// Error for an unknown skeleton, a bad file or NaN.
+// already at options.fps, which must then be given). A leading T-pose frame is dropped where the flavour has one
+// (SkeletonMap). Throws Error for an unknown skeleton, a bad file or NaN.
 JointSequence import_motion(const std::string& path, const ImportOptions& options = {});
 
 }  // namespace t2imu

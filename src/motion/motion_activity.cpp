@@ -20,7 +20,8 @@ double ActivityScores::agreement(const std::string& expected) const {
     return d_expected > 0 ? b->second / d_expected : 1.0;
 }
 
-MotionActivityClassifier::MotionActivityClassifier(std::vector<ActivityExample> reference) : reference_(std::move(reference)) {
+MotionActivityClassifier::MotionActivityClassifier(std::vector<ActivityExample> reference)
+    : reference_(std::move(reference)) {
     std::set<std::string> classes;
     for (const ActivityExample& e : reference_) classes.insert(e.activity);
     if (classes.size() < 2) throw Error("activity reference", "activity", "clips of at least two activities");
@@ -39,7 +40,8 @@ MotionActivityClassifier MotionActivityClassifier::load(const std::string& path)
         ActivityExample e;
         e.activity = t.rows[r][t.column("activity")];
         e.subject = t.rows[r][t.column("subject")];
-        for (size_t i = 0; i < kNumMotionDescriptors; ++i) e.descriptors[i] = t.number(r, t.column(kMotionDescriptorNames[i]));
+        for (size_t i = 0; i < kNumMotionDescriptors; ++i)
+            e.descriptors[i] = t.number(r, t.column(kMotionDescriptorNames[i]));
         examples.push_back(e);
     }
     return MotionActivityClassifier(std::move(examples));
@@ -57,7 +59,8 @@ CsvTable MotionActivityClassifier::reference_table() const {
     return t;
 }
 
-ActivityScores MotionActivityClassifier::classify(const MotionDescriptors& d, const std::string& exclude_subject) const {
+ActivityScores MotionActivityClassifier::classify(const MotionDescriptors& d,
+                                                  const std::string& exclude_subject) const {
     std::map<std::string, std::vector<double>> per_class;
     for (const ActivityExample& e : reference_) {
         if (!exclude_subject.empty() && e.subject == exclude_subject) continue;
@@ -81,10 +84,13 @@ ActivityScores MotionActivityClassifier::classify(const MotionDescriptors& d, co
     return out;
 }
 
-std::vector<std::vector<long>> MotionActivityClassifier::leave_one_subject_out(std::vector<double>* own_agreement) const {
+std::vector<std::vector<long>> MotionActivityClassifier::leave_one_subject_out(
+    std::vector<double>* own_agreement) const {
     const size_t K = classes_.size();
     std::vector<std::vector<long>> confusion(K, std::vector<long>(K, 0));
-    const auto index = [&](const std::string& c) { return static_cast<size_t>(std::find(classes_.begin(), classes_.end(), c) - classes_.begin()); };
+    const auto index = [&](const std::string& c) {
+        return static_cast<size_t>(std::find(classes_.begin(), classes_.end(), c) - classes_.begin());
+    };
     for (const ActivityExample& e : reference_) {
         const ActivityScores s = classify(e.descriptors, e.subject);
         if (s.best.empty()) continue;  // no other subject's clips

@@ -119,7 +119,8 @@ struct Path {
 
 Path smoothed_pelvis_path(const JointSequence& m) {
     std::vector<double> x, z;
-    for (int f = 0; f < m.num_frames; ++f) x.push_back(m.at(f, smpl22::pelvis).x()), z.push_back(m.at(f, smpl22::pelvis).z());
+    for (int f = 0; f < m.num_frames; ++f)
+        x.push_back(m.at(f, smpl22::pelvis).x()), z.push_back(m.at(f, smpl22::pelvis).z());
     Path p;
     const int half = half_window(kSmoothingSeconds, m.fps);
     p.x = centred_average(x, half), p.z = centred_average(z, half);
@@ -171,9 +172,10 @@ Travel travel_of(const Path& p, const std::vector<double>& heading, double fps) 
         if (have) t.path_turn += wrap_angle(dir - last);
         last = dir, have = true, ++moving;
         const double rel = wrap_angle(dir - heading[f]) * kDegrees;
-        const TravelDirection d = std::abs(rel) <= 45 ? TravelDirection::forward
+        const TravelDirection d = std::abs(rel) <= 45    ? TravelDirection::forward
                                   : std::abs(rel) >= 135 ? TravelDirection::backward
-                                  : rel > 0 ? TravelDirection::left : TravelDirection::right;
+                                  : rel > 0              ? TravelDirection::left
+                                                         : TravelDirection::right;
         ++votes[static_cast<size_t>(d)];
     }
     if (moving >= std::max(2.0, kMinPostureSeconds * fps))
@@ -183,7 +185,8 @@ Travel travel_of(const Path& p, const std::vector<double>& heading, double fps) 
 
 double thigh_tilt_deg(const JointSequence& m, int f) {
     double sum = 0;
-    for (const auto& [hip, knee] : {std::pair{smpl22::left_hip, smpl22::left_knee}, std::pair{smpl22::right_hip, smpl22::right_knee}}) {
+    for (const auto& [hip, knee] :
+         {std::pair{smpl22::left_hip, smpl22::left_knee}, std::pair{smpl22::right_hip, smpl22::right_knee}}) {
         const Vector3d up = m.at(f, hip) - m.at(f, knee);
         sum += std::acos(std::clamp(up.y() / std::max(up.norm(), 1e-9), -1.0, 1.0)) * kDegrees;
     }
@@ -206,7 +209,8 @@ std::vector<Foothold> footholds(const JointSequence& m) {
     for (const StancePhase& s : detect_planted_phases(m)) {
         const auto& joints = s.foot == Foot::left ? smpl22::kFootLeft : smpl22::kFootRight;
         double h = 0;
-        for (int f = s.first_frame; f <= s.last_frame; ++f) h += std::min(m.at(f, joints[0]).y(), m.at(f, joints[1]).y());
+        for (int f = s.first_frame; f <= s.last_frame; ++f)
+            h += std::min(m.at(f, joints[0]).y(), m.at(f, joints[1]).y());
         out.push_back({(s.first_frame + s.last_frame) / 2, h / (s.last_frame - s.first_frame + 1)});
     }
     // In placing order: by the middle of each phase, since a clip cut mid-stance starts (or ends) both feet at once.
@@ -216,12 +220,15 @@ std::vector<Foothold> footholds(const JointSequence& m) {
 
 void measure_steps(const JointSequence& m, MotionAttributes& a, std::vector<std::pair<int, Transition>>& events) {
     const std::vector<Foothold> holds = footholds(m);
-    if (holds.size() >= 2) a.rise_m = holds.back().height - holds.front().height;
-    else a.rise_m = m.at(m.num_frames - 1, smpl22::pelvis).y() - m.at(0, smpl22::pelvis).y();
+    if (holds.size() >= 2)
+        a.rise_m = holds.back().height - holds.front().height;
+    else
+        a.rise_m = m.at(m.num_frames - 1, smpl22::pelvis).y() - m.at(0, smpl22::pelvis).y();
     double total = 0;
     int run_sign = 0, run_steps = 0, run_start = 0;
     auto close_run = [&]() {
-        if (run_sign != 0 && run_steps >= 2) events.push_back({run_start, run_sign > 0 ? Transition::climb_up : Transition::climb_down});
+        if (run_sign != 0 && run_steps >= 2)
+            events.push_back({run_start, run_sign > 0 ? Transition::climb_up : Transition::climb_down});
     };
     for (size_t i = 1; i < holds.size(); ++i) {
         const double d = holds[i].height - holds[i - 1].height;
@@ -248,14 +255,18 @@ void measure_jumps(const JointSequence& m, const std::vector<Posture>& posture, 
         for (int g = f + 1; g <= std::min(n - 1, f + window); ++g) after = std::min(after, low[static_cast<size_t>(g)]);
         floor[static_cast<size_t>(f)] = std::max(before, after);  // the floor a climbing foot stands on (descriptors)
         rise[static_cast<size_t>(f)] = m.at(f, smpl22::pelvis).y() - floor[static_cast<size_t>(f)];
-        if (posture[static_cast<size_t>(f)] == Posture::standing && low[static_cast<size_t>(f)] - floor[static_cast<size_t>(f)] <= kAirborneHeight)
+        if (posture[static_cast<size_t>(f)] == Posture::standing &&
+            low[static_cast<size_t>(f)] - floor[static_cast<size_t>(f)] <= kAirborneHeight)
             grounded.push_back(rise[static_cast<size_t>(f)]);
     }
     if (grounded.empty()) return;
     const double standing = median(grounded);
     double heights = 0;
     for (int f = 0; f < n;) {
-        if (low[static_cast<size_t>(f)] - floor[static_cast<size_t>(f)] <= kAirborneHeight) { ++f; continue; }
+        if (low[static_cast<size_t>(f)] - floor[static_cast<size_t>(f)] <= kAirborneHeight) {
+            ++f;
+            continue;
+        }
         double peak = -1e9;
         for (; f < n && low[static_cast<size_t>(f)] - floor[static_cast<size_t>(f)] > kAirborneHeight; ++f)
             peak = std::max(peak, rise[static_cast<size_t>(f)]);
@@ -290,8 +301,10 @@ std::vector<Posture> posture_per_frame(const JointSequence& m) {
     std::vector<Posture> p(static_cast<size_t>(n), Posture::standing);
     for (int f = 0; f < n; ++f) {
         const Vector3d& pelvis = m.at(f, smpl22::pelvis);
-        if (m.at(f, smpl22::head).y() - pelvis.y() < kLyingHeadAbovePelvis) p[static_cast<size_t>(f)] = Posture::lying;
-        else if (thigh_tilt_deg(m, f) > kSeatedThighTilt && pelvis.y() - lowest_joint_height_at(m, f) < kSeatedPelvisHeight)
+        if (m.at(f, smpl22::head).y() - pelvis.y() < kLyingHeadAbovePelvis)
+            p[static_cast<size_t>(f)] = Posture::lying;
+        else if (thigh_tilt_deg(m, f) > kSeatedThighTilt &&
+                 pelvis.y() - lowest_joint_height_at(m, f) < kSeatedPelvisHeight)
             p[static_cast<size_t>(f)] = Posture::seated;
     }
     // Short runs join the run before them (the first run the one after), so a stumble is not a sit.
@@ -320,7 +333,8 @@ std::vector<double> ground_speed_per_frame(const JointSequence& m) {
 }
 
 MotionAttributes measure_attributes(const JointSequence& m, const std::string& source) {
-    if (m.num_joints != smpl22::kNumJoints || m.num_frames < 3) throw Error(source, "joints", "22 joints and at least 3 frames");
+    if (m.num_joints != smpl22::kNumJoints || m.num_frames < 3)
+        throw Error(source, "joints", "22 joints and at least 3 frames");
     MotionAttributes a;
     const size_t n = static_cast<size_t>(m.num_frames);
     a.duration_s = (m.num_frames - 1) / m.fps;
@@ -363,9 +377,12 @@ MotionAttributes measure_attributes(const JointSequence& m, const std::string& s
         const Posture from = posture[f - 1], to = posture[f];
         if (from == to) continue;
         const int i = static_cast<int>(f);
-        if (to == Posture::lying) events.push_back({i, Transition::lie_down});
-        else if (from == Posture::lying) events.push_back({i, Transition::get_up});
-        else events.push_back({i, to == Posture::seated ? Transition::sit_down : Transition::stand_up});
+        if (to == Posture::lying)
+            events.push_back({i, Transition::lie_down});
+        else if (from == Posture::lying)
+            events.push_back({i, Transition::get_up});
+        else
+            events.push_back({i, to == Posture::seated ? Transition::sit_down : Transition::stand_up});
     }
     measure_steps(m, a, events);
     measure_jumps(m, posture, a);
@@ -377,7 +394,8 @@ MotionAttributes measure_attributes(const JointSequence& m, const std::string& s
 std::vector<std::pair<std::string, std::string>> attribute_fields(const MotionAttributes& a) {
     const auto num = [](double v, int decimals) { return fixed_text(v, decimals); };
     std::string transitions;
-    for (Transition t : a.transitions) transitions += (transitions.empty() ? "" : "+") + std::string(transition_name(t));
+    for (Transition t : a.transitions)
+        transitions += (transitions.empty() ? "" : "+") + std::string(transition_name(t));
     return {{"duration_s", num(a.duration_s, 2)},
             {"ground_speed_m_s", num(a.ground_speed_m_s, 3)},
             {"distance_m", num(a.distance_m, 2)},

@@ -23,28 +23,28 @@ enum class TravelDirection { none, forward, backward, left, right };  // relativ
 enum class LyingSide { none, back, front, left, right };              // the side the body lies on
 enum class Transition { sit_down, stand_up, lie_down, get_up, climb_up, climb_down };
 
-const char* posture_name(Posture p);            // "standing", "seated", "lying"
+const char* posture_name(Posture p);                   // "standing", "seated", "lying"
 const char* travel_direction_name(TravelDirection d);  // "none", "forward", "backward", "left", "right"
-const char* lying_side_name(LyingSide s);       // "none", "back", "front", "left", "right"
-const char* transition_name(Transition t);      // "sit_down", "stand_up", "lie_down", "get_up", "climb_up", "climb_down"
+const char* lying_side_name(LyingSide s);              // "none", "back", "front", "left", "right"
+const char* transition_name(Transition t);  // "sit_down", "stand_up", "lie_down", "get_up", "climb_up", "climb_down"
 
 struct MotionAttributes {
     double duration_s = 0;
-    double ground_speed_m_s = 0;     // median horizontal speed of the pelvis path smoothed over 1 s
-    double distance_m = 0;           // length of that smoothed path
-    double cadence_steps_min = 0;    // foot landings (foot_landings.hpp) per minute, both feet
-    double stride_length_m = 0;      // two steps: 2 x ground speed / step rate (0 without steps)
-    double heading_change_deg = 0;   // net change of the facing from the first half second to the last, + left
-    double turning_deg = 0;          // total absolute change of the facing (a turn there and back counts twice)
-    double path_turn_deg = 0;        // net change of the travel direction over the frames that travel, + left
+    double ground_speed_m_s = 0;    // median horizontal speed of the pelvis path smoothed over 1 s
+    double distance_m = 0;          // length of that smoothed path
+    double cadence_steps_min = 0;   // foot landings (foot_landings.hpp) per minute, both feet
+    double stride_length_m = 0;     // two steps: 2 x ground speed / step rate (0 without steps)
+    double heading_change_deg = 0;  // net change of the facing from the first half second to the last, + left
+    double turning_deg = 0;         // total absolute change of the facing (a turn there and back counts twice)
+    double path_turn_deg = 0;       // net change of the travel direction over the frames that travel, + left
     TravelDirection travel = TravelDirection::none;  // most frames' step direction while travelling
-    double arm_swing_m = 0;          // wrist range along the facing relative to the pelvis (5th-95th pct.), both arms
-    double trunk_lean_deg = 0;       // mean lean of pelvis -> neck towards the facing, upright frames; + forward
-    double rise_m = 0;               // height of the last foothold over the first (+ up)
+    double arm_swing_m = 0;            // wrist range along the facing relative to the pelvis (5th-95th pct.), both arms
+    double trunk_lean_deg = 0;         // mean lean of pelvis -> neck towards the facing, upright frames; + forward
+    double rise_m = 0;                 // height of the last foothold over the first (+ up)
     int steps_up = 0, steps_down = 0;  // footholds a tread higher / lower than the one before
-    double step_height_m = 0;        // mean height difference of those steps
-    int jumps = 0;                   // flights that lift the pelvis kJumpRise over its standing height
-    double jump_height_m = 0;        // mean pelvis rise of those flights over its standing height
+    double step_height_m = 0;          // mean height difference of those steps
+    int jumps = 0;                     // flights that lift the pelvis kJumpRise over its standing height
+    double jump_height_m = 0;          // mean pelvis rise of those flights over its standing height
     double seated_s = 0, lying_s = 0;
     LyingSide lying_side = LyingSide::none;  // over the lying frames (none if it never lies)
     std::vector<Transition> transitions;     // in time order

@@ -10,8 +10,9 @@
 namespace t2imu {
 
 const std::array<const char*, kNumMotionDescriptors> kMotionDescriptorNames = {
-    "pelvis_height_m", "pelvis_height_sd_m", "head_above_pelvis_m", "trunk_tilt_rad", "thigh_tilt_rad", "knee_flexion_rad",
-    "root_speed_m_s", "root_vertical_speed_sd_m_s", "climb_rate_m_s", "foot_speed_m_s", "wrist_speed_m_s", "airborne_fraction"};
+    "pelvis_height_m", "pelvis_height_sd_m", "head_above_pelvis_m", "trunk_tilt_rad",
+    "thigh_tilt_rad",  "knee_flexion_rad",   "root_speed_m_s",      "root_vertical_speed_sd_m_s",
+    "climb_rate_m_s",  "foot_speed_m_s",     "wrist_speed_m_s",     "airborne_fraction"};
 
 namespace {
 
@@ -71,8 +72,10 @@ double airborne_fraction(const std::vector<double>& lowest_foot, double fps) {
     int airborne = 0;
     for (int f = 0; f < n; ++f) {
         double before = lowest_foot[static_cast<size_t>(f)], after = before;
-        for (int g = std::max(0, f - window); g < f; ++g) before = std::min(before, lowest_foot[static_cast<size_t>(g)]);
-        for (int g = f + 1; g <= std::min(n - 1, f + window); ++g) after = std::min(after, lowest_foot[static_cast<size_t>(g)]);
+        for (int g = std::max(0, f - window); g < f; ++g)
+            before = std::min(before, lowest_foot[static_cast<size_t>(g)]);
+        for (int g = f + 1; g <= std::min(n - 1, f + window); ++g)
+            after = std::min(after, lowest_foot[static_cast<size_t>(g)]);
         airborne += lowest_foot[static_cast<size_t>(f)] - std::max(before, after) > kAirborneHeight;
     }
     return static_cast<double>(airborne) / n;
@@ -81,15 +84,17 @@ double airborne_fraction(const std::vector<double>& lowest_foot, double fps) {
 }  // namespace
 
 MotionDescriptors describe_motion(const JointSequence& m) {
-    if (m.num_joints != smpl22::kNumJoints || m.num_frames < 3) throw Error("motion descriptors", "joints", "22 joints and at least 3 frames");
+    if (m.num_joints != smpl22::kNumJoints || m.num_frames < 3)
+        throw Error("motion descriptors", "joints", "22 joints and at least 3 frames");
     std::vector<double> pelvis, head_above, trunk, thigh, knee, horizontal_speed, vertical_velocity, lowest_foot;
     for (int f = 0; f < m.num_frames; ++f) {
         const Eigen::Vector3d& p = m.at(f, smpl22::pelvis);
         pelvis.push_back(p.y());
         head_above.push_back(m.at(f, smpl22::head).y() - p.y());
         trunk.push_back(angle_from_vertical(m.at(f, smpl22::neck) - p));
-        for (const auto& [hip, knee_joint, ankle] : {std::array<Joint, 3>{smpl22::left_hip, smpl22::left_knee, smpl22::left_ankle},
-                                                     std::array<Joint, 3>{smpl22::right_hip, smpl22::right_knee, smpl22::right_ankle}}) {
+        for (const auto& [hip, knee_joint, ankle] :
+             {std::array<Joint, 3>{smpl22::left_hip, smpl22::left_knee, smpl22::left_ankle},
+              std::array<Joint, 3>{smpl22::right_hip, smpl22::right_knee, smpl22::right_ankle}}) {
             const Eigen::Vector3d up = m.at(f, hip) - m.at(f, knee_joint), down = m.at(f, ankle) - m.at(f, knee_joint);
             thigh.push_back(angle_from_vertical(up));
             knee.push_back(M_PI - angle_between(up, down));
@@ -104,9 +109,20 @@ MotionDescriptors describe_motion(const JointSequence& m) {
         }
     }
     const double feet = (mean_speed(m, smpl22::left_ankle) + mean_speed(m, smpl22::right_ankle)) / 2;
-    const double wrists = (mean_speed(m, smpl22::left_wrist, smpl22::pelvis) + mean_speed(m, smpl22::right_wrist, smpl22::pelvis)) / 2;
-    return {mean(pelvis), standard_deviation(pelvis), mean(head_above), mean(trunk), mean(thigh), mean(knee), mean(horizontal_speed),
-            standard_deviation(vertical_velocity), slope(lowest_foot, m.fps), feet, wrists, airborne_fraction(lowest_foot, m.fps)};
+    const double wrists =
+        (mean_speed(m, smpl22::left_wrist, smpl22::pelvis) + mean_speed(m, smpl22::right_wrist, smpl22::pelvis)) / 2;
+    return {mean(pelvis),
+            standard_deviation(pelvis),
+            mean(head_above),
+            mean(trunk),
+            mean(thigh),
+            mean(knee),
+            mean(horizontal_speed),
+            standard_deviation(vertical_velocity),
+            slope(lowest_foot, m.fps),
+            feet,
+            wrists,
+            airborne_fraction(lowest_foot, m.fps)};
 }
 
 }  // namespace t2imu

@@ -14,17 +14,19 @@ namespace t2imu {
 using Eigen::Vector3d;
 using namespace smpl22;
 
-const std::array<LegJoints, 2> kLegs = {{{left_hip, left_knee, left_ankle, left_foot},
-                                         {right_hip, right_knee, right_ankle, right_foot}}};
+const std::array<LegJoints, 2> kLegs = {
+    {{left_hip, left_knee, left_ankle, left_foot}, {right_hip, right_knee, right_ankle, right_foot}}};
 
 void check_option_range(double value, double lo, double hi, const char* options, const char* field) {
     if (!(value >= lo && value <= hi))
-        throw Error(options, field, "in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]", std::to_string(value));
+        throw Error(options, field, "in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]",
+                    std::to_string(value));
 }
 
 BoneLengths bone_lengths(const JointSequence& m, int frame) {
     BoneLengths l{};
-    for (int j = 1; j < kNumJoints; ++j) l[static_cast<size_t>(j)] = (m.at(frame, j) - m.at(frame, kParents[static_cast<size_t>(j)])).norm();
+    for (int j = 1; j < kNumJoints; ++j)
+        l[static_cast<size_t>(j)] = (m.at(frame, j) - m.at(frame, kParents[static_cast<size_t>(j)])).norm();
     return l;
 }
 
@@ -65,10 +67,12 @@ double monotone_slope(double before, double after) {
 
 // Cubic Hermite between p1 and p2 at u in [0, 1], slopes per sample step, per coordinate.
 Vector3d monotone_cubic(const Vector3d& p0, const Vector3d& p1, const Vector3d& p2, const Vector3d& p3, double u) {
-    const double h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u), h01 = u * u * (3 - 2 * u), h11 = u * u * (u - 1);
+    const double h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u), h01 = u * u * (3 - 2 * u),
+                 h11 = u * u * (u - 1);
     Vector3d out;
     for (int c = 0; c < 3; ++c) {
-        const double m1 = monotone_slope(p1[c] - p0[c], p2[c] - p1[c]), m2 = monotone_slope(p2[c] - p1[c], p3[c] - p2[c]);
+        const double m1 = monotone_slope(p1[c] - p0[c], p2[c] - p1[c]),
+                     m2 = monotone_slope(p2[c] - p1[c], p3[c] - p2[c]);
         out[c] = h00 * p1[c] + h10 * m1 + h01 * p2[c] + h11 * m2;
     }
     return out;
@@ -84,7 +88,8 @@ void restore_lengths_keeping_ankles(JointSequence& m, const BoneLengths& lengths
     for (int f = 0; f < m.num_frames; ++f)
         for (size_t k = 0; k < 2; ++k) {
             const LegJoints& leg = kLegs[k];
-            const TwoBoneIkResult ik = solve_two_bone_ik(m.at(f, leg.hip), ankles[static_cast<size_t>(2 * f) + k], lengths[static_cast<size_t>(leg.knee)],
+            const TwoBoneIkResult ik = solve_two_bone_ik(m.at(f, leg.hip), ankles[static_cast<size_t>(2 * f) + k],
+                                                         lengths[static_cast<size_t>(leg.knee)],
                                                          lengths[static_cast<size_t>(leg.ankle)], m.at(f, leg.knee));
             m.at(f, leg.knee) = ik.middle;
             m.at(f, leg.toe) += ik.end - m.at(f, leg.ankle);
@@ -104,7 +109,8 @@ JointSequence retime(const JointSequence& m, double speed) {
         const int i = std::min(static_cast<int>(std::floor(t)), m.num_frames - 1);
         const double u = t - i;
         for (int j = 0; j < m.num_joints; ++j)
-            out.at(g, j) = monotone_cubic(m.at(clamp_frame(i - 1), j), m.at(i, j), m.at(clamp_frame(i + 1), j), m.at(clamp_frame(i + 2), j), u);
+            out.at(g, j) = monotone_cubic(m.at(clamp_frame(i - 1), j), m.at(i, j), m.at(clamp_frame(i + 1), j),
+                                          m.at(clamp_frame(i + 2), j), u);
     }
     if (m.num_joints == kNumJoints) restore_lengths_keeping_ankles(out, bone_lengths(m, 0));
     return out;
@@ -122,13 +128,16 @@ Vector3d horizontal_direction(const Vector3d& v) {
 }
 
 Vector3d body_facing(const JointSequence& m, int frame) {
-    const Vector3d across = (m.at(frame, left_hip) - m.at(frame, right_hip)) + (m.at(frame, left_shoulder) - m.at(frame, right_shoulder));
+    const Vector3d across =
+        (m.at(frame, left_hip) - m.at(frame, right_hip)) + (m.at(frame, left_shoulder) - m.at(frame, right_shoulder));
     return horizontal_direction(across.cross(Vector3d::UnitY()));
 }
 
-JointSequence turned_to_face(const JointSequence& m, int frame, const Vector3d& facing, const Vector3d& pivot, const Vector3d& to) {
+JointSequence turned_to_face(const JointSequence& m, int frame, const Vector3d& facing, const Vector3d& pivot,
+                             const Vector3d& to) {
     const Vector3d from = body_facing(m, frame);
-    const double turn = std::atan2(facing.z(), facing.x()) - std::atan2(from.z(), from.x());  // in the x-z plane, x towards z
+    const double turn =
+        std::atan2(facing.z(), facing.x()) - std::atan2(from.z(), from.x());  // in the x-z plane, x towards z
     const double c = std::cos(turn), s = std::sin(turn);
     JointSequence out = m;
     for (Vector3d& p : out.positions) {
@@ -145,7 +154,8 @@ bool is_trunk_joint(int j) {
 }
 
 bool is_leg_joint(int j) {
-    return j == left_knee || j == right_knee || j == left_ankle || j == right_ankle || j == left_foot || j == right_foot;
+    return j == left_knee || j == right_knee || j == left_ankle || j == right_ankle || j == left_foot ||
+           j == right_foot;
 }
 
 void flex_trunk(JointSequence& m, int frame, const Vector3d& forward, double angle_rad) {
@@ -162,7 +172,8 @@ std::vector<double> upper_envelope(const std::vector<double>& x, int radius) {
     TimeSeries peak(n, 1);
     for (int i = 0; i < n; ++i) {
         double v = x[static_cast<size_t>(i)];
-        for (int k = std::max(0, i - radius); k <= std::min(n - 1, i + radius); ++k) v = std::max(v, x[static_cast<size_t>(k)]);
+        for (int k = std::max(0, i - radius); k <= std::min(n - 1, i + radius); ++k)
+            v = std::max(v, x[static_cast<size_t>(k)]);
         peak(i, 0) = v;
     }
     // radius = int(truncate * sigma + 0.5) with sigma = radius / 2 and truncate = 2.
@@ -178,7 +189,8 @@ std::array<double, 2> reach_limits(const JointSequence& source, const BoneLength
         for (size_t leg = 0; leg < 2; ++leg)
             reach[leg] = std::max(reach[leg], (source.at(f, kLegs[leg].hip) - source.at(f, kLegs[leg].ankle)).norm());
     for (size_t leg = 0; leg < 2; ++leg)
-        reach[leg] = std::min(reach[leg], 0.999 * (lengths[static_cast<size_t>(kLegs[leg].knee)] + lengths[static_cast<size_t>(kLegs[leg].ankle)]));
+        reach[leg] = std::min(reach[leg], 0.999 * (lengths[static_cast<size_t>(kLegs[leg].knee)] +
+                                                   lengths[static_cast<size_t>(kLegs[leg].ankle)]));
     return reach;
 }
 
@@ -200,8 +212,9 @@ double lower_to_reach(JointSequence& m, const std::array<double, 2>& reach_m) {
     std::vector<double> drop(static_cast<size_t>(m.num_frames), 0.0);
     for (int f = 0; f < m.num_frames; ++f)
         for (size_t leg = 0; leg < 2; ++leg)
-            drop[static_cast<size_t>(f)] = std::max(drop[static_cast<size_t>(f)],
-                                                    drop_to_reach(m.at(f, kLegs[leg].hip), m.at(f, kLegs[leg].ankle), reach_m[leg]));
+            drop[static_cast<size_t>(f)] =
+                std::max(drop[static_cast<size_t>(f)],
+                         drop_to_reach(m.at(f, kLegs[leg].hip), m.at(f, kLegs[leg].ankle), reach_m[leg]));
     // 0.4 s either side (8 frames at 20 fps): the body sinks into a deep step instead of jerking down.
     const std::vector<double> smooth = upper_envelope(drop, std::max(1, frames_of(0.4, m.fps)));
     double most = 0;
@@ -214,15 +227,19 @@ double lower_to_reach(JointSequence& m, const std::array<double, 2>& reach_m) {
     return most;
 }
 
-bool place_knees(JointSequence& m, const JointSequence& source, const std::vector<Vector3d>& forward, const BoneLengths& lengths) {
+bool place_knees(JointSequence& m, const JointSequence& source, const std::vector<Vector3d>& forward,
+                 const BoneLengths& lengths) {
     if (source.num_frames != m.num_frames) throw Error("place_knees", "source", "as many frames as the motion");
-    if (static_cast<int>(forward.size()) != m.num_frames) throw Error("place_knees", "forward", "one direction per frame");
+    if (static_cast<int>(forward.size()) != m.num_frames)
+        throw Error("place_knees", "forward", "one direction per frame");
     bool all = true;
     for (int f = 0; f < m.num_frames; ++f)
         for (const LegJoints& leg : kLegs) {
-            const Vector3d hint = m.at(f, leg.hip) + (source.at(f, leg.knee) - source.at(f, leg.hip)) + kKneeHintPush * forward[static_cast<size_t>(f)];
-            const TwoBoneIkResult ik = solve_two_bone_ik(m.at(f, leg.hip), m.at(f, leg.ankle), lengths[static_cast<size_t>(leg.knee)],
-                                                         lengths[static_cast<size_t>(leg.ankle)], hint);
+            const Vector3d hint = m.at(f, leg.hip) + (source.at(f, leg.knee) - source.at(f, leg.hip)) +
+                                  kKneeHintPush * forward[static_cast<size_t>(f)];
+            const TwoBoneIkResult ik =
+                solve_two_bone_ik(m.at(f, leg.hip), m.at(f, leg.ankle), lengths[static_cast<size_t>(leg.knee)],
+                                  lengths[static_cast<size_t>(leg.ankle)], hint);
             m.at(f, leg.knee) = ik.middle;
             m.at(f, leg.toe) += ik.end - m.at(f, leg.ankle);
             m.at(f, leg.ankle) = ik.end;

@@ -47,8 +47,8 @@ Eigen::Vector3d body_facing(const JointSequence& m, int frame);
 // `m` turned about the vertical through `pivot` so that the body faces `facing` (horizontal unit) at `frame`, and
 // moved horizontally so that the pivot stands at `to`; heights unchanged. How one clip is set to go on from where
 // and the way another ends (jump_series, gait_splice).
-JointSequence turned_to_face(const JointSequence& m, int frame, const Eigen::Vector3d& facing, const Eigen::Vector3d& pivot,
-                             const Eigen::Vector3d& to);
+JointSequence turned_to_face(const JointSequence& m, int frame, const Eigen::Vector3d& facing,
+                             const Eigen::Vector3d& pivot, const Eigen::Vector3d& to);
 
 // spine1 and everything above it (spine, neck, head, collars, arms): the trunk as it bends at the hips.
 bool is_trunk_joint(int joint);
@@ -78,9 +78,11 @@ std::array<double, 2> reach_limits(const JointSequence& source, const BoneLength
 // a knee raised high (seated, on a step) bends forward and up, the side the source's does not say. An ankle
 // out of reach moves to the end of the stretched leg, its toe with it. Returns whether every ankle was reached.
 constexpr double kKneeHintPush = 0.5;  // m
-bool place_knees(JointSequence& m, const JointSequence& source, const Eigen::Vector3d& forward, const BoneLengths& lengths);
+bool place_knees(JointSequence& m, const JointSequence& source, const Eigen::Vector3d& forward,
+                 const BoneLengths& lengths);
 // The same with a facing per frame (`forward` holds one horizontal unit per frame): for motions that turn.
-bool place_knees(JointSequence& m, const JointSequence& source, const std::vector<Eigen::Vector3d>& forward, const BoneLengths& lengths);
+bool place_knees(JointSequence& m, const JointSequence& source, const std::vector<Eigen::Vector3d>& forward,
+                 const BoneLengths& lengths);
 
 // Knee flexion of one leg at one frame (rad): the angle between thigh and shank, 0 when straight.
 double knee_flexion_rad(const JointSequence& m, int frame, int leg);

@@ -9,8 +9,8 @@
 
 namespace t2imu {
 
-const std::array<const char*, kNumQualityScores> kQualityScoreNames = {"foot_skate_m_s", "penetration_m", "hover_m",
-                                                                        "max_speed_m_s", "max_acc_m_s2", "pelvis_acc_m_s2"};
+const std::array<const char*, kNumQualityScores> kQualityScoreNames = {
+    "foot_skate_m_s", "penetration_m", "hover_m", "max_speed_m_s", "max_acc_m_s2", "pelvis_acc_m_s2"};
 
 std::array<double, kNumQualityScores> quality_scores(const MotionQuality& q) {
     return {q.foot_skate_m_s, q.penetration_m, q.hover_m, q.max_speed_m_s, q.max_acc_m_s2, q.pelvis_acc_m_s2};
@@ -20,9 +20,7 @@ std::array<double, kNumQualityScores> quality_limits(const MotionQualityThreshol
     return {t.foot_skate_m_s, t.penetration_m, t.hover_m, t.max_speed_m_s, t.max_acc_m_s2, t.pelvis_acc_m_s2};
 }
 
-MotionQualityThresholds default_quality_thresholds() {
-    return {1.3, 0.05, 0.30, 14.0, 350.0, 60.0};
-}
+MotionQualityThresholds default_quality_thresholds() { return {1.3, 0.05, 0.30, 14.0, 350.0, 60.0}; }
 
 namespace {
 
@@ -43,13 +41,15 @@ double foot_skate(const JointSequence& m, const GroundHeight& ground) {
 }  // namespace
 
 MotionQuality score_motion(const JointSequence& m) {
-    if (m.num_joints != smpl22::kNumJoints || m.num_frames < 3) throw Error("motion quality", "joints", "22 joints and at least 3 frames");
+    if (m.num_joints != smpl22::kNumJoints || m.num_frames < 3)
+        throw Error("motion quality", "joints", "22 joints and at least 3 frames");
     const SupportGround ground(m);
     return score_motion_on_ground(m, [&](const Eigen::Vector3d& p, int frame) { return ground.height_at(p, frame); });
 }
 
 MotionQuality score_motion_on_ground(const JointSequence& m, const GroundHeight& ground) {
-    if (m.num_joints != smpl22::kNumJoints || m.num_frames < 3) throw Error("motion quality", "joints", "22 joints and at least 3 frames");
+    if (m.num_joints != smpl22::kNumJoints || m.num_frames < 3)
+        throw Error("motion quality", "joints", "22 joints and at least 3 frames");
     MotionQuality q;
     q.foot_skate_m_s = foot_skate(m, ground);
     std::vector<double> lowest(static_cast<size_t>(m.num_frames));
@@ -57,7 +57,8 @@ MotionQuality score_motion_on_ground(const JointSequence& m, const GroundHeight&
         double low = m.at(f, 0).y() - ground(m.at(f, 0), f);
         for (int j = 0; j < m.num_joints; ++j) {
             low = std::min(low, m.at(f, j).y() - ground(m.at(f, j), f));
-            if (f + 1 < m.num_frames) q.max_speed_m_s = std::max(q.max_speed_m_s, (m.at(f + 1, j) - m.at(f, j)).norm() * m.fps);
+            if (f + 1 < m.num_frames)
+                q.max_speed_m_s = std::max(q.max_speed_m_s, (m.at(f + 1, j) - m.at(f, j)).norm() * m.fps);
             if (f < 1 || f + 1 >= m.num_frames) continue;
             const double acc = (m.at(f + 1, j) - 2 * m.at(f, j) + m.at(f - 1, j)).norm() * m.fps * m.fps;
             q.max_acc_m_s2 = std::max(q.max_acc_m_s2, acc);
@@ -80,7 +81,8 @@ double place_on_floor(JointSequence& m) {
 }
 
 std::vector<std::string> quality_failures(const MotionQuality& q, const MotionQualityThresholds& t) {
-    static const std::array<const char*, kNumQualityScores> failure = {"foot_skate", "penetration", "hover", "max_speed", "max_acc", "pelvis_acc"};
+    static const std::array<const char*, kNumQualityScores> failure = {"foot_skate", "penetration", "hover",
+                                                                       "max_speed",  "max_acc",     "pelvis_acc"};
     const auto score = quality_scores(q), limit = quality_limits(t);
     std::vector<std::string> out;
     for (size_t i = 0; i < kNumQualityScores; ++i)

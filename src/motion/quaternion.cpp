@@ -23,9 +23,8 @@ Eigen::Matrix3d quaternion_to_matrix(const Quat& q) {
     const double r = q.w(), i = q.x(), j = q.y(), k = q.z();
     const double s = 2.0 / q.coeffs().squaredNorm();
     Eigen::Matrix3d m;
-    m << 1 - s * (j * j + k * k), s * (i * j - k * r), s * (i * k + j * r),
-         s * (i * j + k * r), 1 - s * (i * i + k * k), s * (j * k - i * r),
-         s * (i * k - j * r), s * (j * k + i * r), 1 - s * (i * i + j * j);
+    m << 1 - s * (j * j + k * k), s * (i * j - k * r), s * (i * k + j * r), s * (i * j + k * r),
+        1 - s * (i * i + k * k), s * (j * k - i * r), s * (i * k - j * r), s * (j * k + i * r), 1 - s * (i * i + j * j);
     return m;
 }
 
@@ -48,7 +47,10 @@ Eigen::Matrix3d cont6d_to_matrix(const Cont6d& c) {
 Quat slerp(const Quat& q0, const Quat& q1, double t) {
     Quat b = q1;
     double d = q0.coeffs().dot(q1.coeffs());
-    if (d < 0) { b.coeffs() = -b.coeffs(); d = -d; }
+    if (d < 0) {
+        b.coeffs() = -b.coeffs();
+        d = -d;
+    }
     if (d > 1.0 - 1e-12) {  // nearly equal: the linear blend is exact to rounding and avoids 0/0
         Quat q;
         q.coeffs() = ((1 - t) * q0.coeffs() + t * b.coeffs()).normalized();

@@ -30,7 +30,8 @@ Quat slerp(const Quat& q0, const Quat& q1, double t);
 // Flips signs over time so that consecutive quaternions of each joint have a non-negative dot product
 // (qfix): a rotation and its negative are the same rotation, but interpolation and finite differences need
 // one continuous branch. frames[f][j].
-template <size_t N> void qfix(std::vector<std::array<Quat, N>>& frames) {
+template <size_t N>
+void qfix(std::vector<std::array<Quat, N>>& frames) {
     for (size_t f = 1; f < frames.size(); ++f)
         for (size_t j = 0; j < N; ++j)
             if (frames[f][j].coeffs().dot(frames[f - 1][j].coeffs()) < 0) frames[f][j].coeffs() *= -1.0;

@@ -45,7 +45,8 @@ void interpolate_frame(const JointSequence& m, double s, JointSequence& out, int
     auto at = [&](int f, int j) { return m.at(std::clamp(f, 0, m.num_frames - 1), j); };
     for (int j = 0; j < m.num_joints; ++j) {
         const Eigen::Vector3d p0 = at(i - 1, j), p1 = at(i, j), p2 = at(i + 1, j), p3 = at(i + 2, j);
-        out.at(frame, j) = 0.5 * ((2 * p1) + (p2 - p0) * t + (2 * p0 - 5 * p1 + 4 * p2 - p3) * t * t + (3 * p1 - p0 - 3 * p2 + p3) * t * t * t);
+        out.at(frame, j) = 0.5 * ((2 * p1) + (p2 - p0) * t + (2 * p0 - 5 * p1 + 4 * p2 - p3) * t * t +
+                                  (3 * p1 - p0 - 3 * p2 + p3) * t * t * t);
     }
 }
 

@@ -41,7 +41,8 @@ Posture posture_at(int f, const ChairOptions& o, double fps) {
     const int up_from = seated_from + frames_of(o.seated_s, fps);
     const int standing_from = up_from + frames_of(o.stand_up_s, fps);
     if (f < down_from || f >= standing_from) return {};
-    if (f < seated_from) return sitting_down(static_cast<double>(f - down_from) / (seated_from - down_from), o.trunk_flexion_peak_rad);
+    if (f < seated_from)
+        return sitting_down(static_cast<double>(f - down_from) / (seated_from - down_from), o.trunk_flexion_peak_rad);
     if (f < up_from) return {1, 1, 0};
     return standing_up(static_cast<double>(f - up_from) / (standing_from - up_from), o.trunk_flexion_peak_rad);
 }
@@ -54,7 +55,8 @@ Vector3d seated_pelvis(const JointSequence& s, const ChairOptions& o, const Vect
     const double thigh = 0.5 * (len[left_knee] + len[right_knee]), shank = 0.5 * (len[left_ankle] + len[right_ankle]);
     const double pelvis_height = o.seat_height_m + o.pelvis_above_seat_m;
     const double rise = pelvis_height + hips.y() - (ankles.y() + shank);  // hip above knee
-    if (std::abs(rise) >= thigh) throw Error("stand_sit_stand", "seat_height_m", "a seat the thighs reach with the shanks vertical");
+    if (std::abs(rise) >= thigh)
+        throw Error("stand_sit_stand", "seat_height_m", "a seat the thighs reach with the shanks vertical");
     const double behind = std::sqrt(thigh * thigh - rise * rise) + hips.dot(forward);
     const Vector3d p0 = s.at(0, pelvis);
     const double shift = (ankles - p0).dot(forward) - behind;  // along forward, from the standing pelvis
@@ -86,12 +88,14 @@ JointSequence stand_sit_stand(const JointSequence& standing, const ChairOptions&
     if (standing.num_joints != kNumJoints) throw Error("stand_sit_stand", "standing", "22 SMPL joints");
     const int n = stand_sit_stand_frames(o, standing.fps);
     if (standing.num_frames < n)
-        throw Error("stand_sit_stand", "standing", "at least " + std::to_string(n) + " frames", std::to_string(standing.num_frames));
+        throw Error("stand_sit_stand", "standing", "at least " + std::to_string(n) + " frames",
+                    std::to_string(standing.num_frames));
     for (int f = 1; f < n; ++f) {
         const Vector3d drift = standing.at(f, pelvis) - standing.at(0, pelvis);
         if (std::hypot(drift.x(), drift.z()) > kMaxStandingDriftM) {
             char expected[96];
-            std::snprintf(expected, sizeof expected, "a pelvis within %.2f m of where it stands at frame 0, horizontally", kMaxStandingDriftM);
+            std::snprintf(expected, sizeof expected,
+                          "a pelvis within %.2f m of where it stands at frame 0, horizontally", kMaxStandingDriftM);
             throw Error("stand_sit_stand", "standing", expected, "moves away at frame " + std::to_string(f));
         }
     }
@@ -100,7 +104,8 @@ JointSequence stand_sit_stand(const JointSequence& standing, const ChairOptions&
     const Vector3d seat = seated_pelvis(standing, o, forward, lengths);
 
     JointSequence source(n, kNumJoints, standing.fps);
-    std::copy(standing.positions.begin(), standing.positions.begin() + static_cast<std::ptrdiff_t>(n) * kNumJoints, source.positions.begin());
+    std::copy(standing.positions.begin(), standing.positions.begin() + static_cast<std::ptrdiff_t>(n) * kNumJoints,
+              source.positions.begin());
     JointSequence m = source;
     for (int f = 0; f < n; ++f) {
         const Posture p = posture_at(f, o, standing.fps);

@@ -18,7 +18,8 @@
 //     than rising and moves the pelvis back and down in one sweep, with the trunk's peak flexion late, as the
 //     seat is reached (Kralj, Jaeger & Munih 1990, J Biomech 23:1123; Roebroeck et al. 1994, Clin Biomech
 //     9:235). Here (fractions of sit_down_s): sitting down moves the pelvis back over 0-0.75 and down over
-//     0.1-0.95, the trunk flexes from 0.05 to its peak at 0.55 and is upright when seated. Defaults: 2.2 s down, 1.8 s up, 40 deg.
+//     0.1-0.95, the trunk flexes from 0.05 to its peak at 0.55 and is upright when seated. Defaults: 2.2 s down, 1.8 s
+//     up, 40 deg.
 //   - Seated, the pelvis joint (between the hip joint centres) sits about 10 cm above the seat, on the ischial
 //     tuberosities: pelvis_above_seat_m. The chair stands where the thighs reach it with the shanks vertical
 //     (knees at about 90 deg), which fixes how far behind the ankles the seated pelvis is.
@@ -32,14 +33,14 @@
 namespace t2imu {
 
 struct ChairOptions {
-    double seat_height_m = 0.45;          // seat surface above the floor, [0.25, 0.60] (scaled to the rig's size)
-    double pelvis_above_seat_m = 0.10;    // seated pelvis joint above the seat surface, [0.05, 0.15]
-    double stand_before_s = 1.0;          // [0, 10]
-    double sit_down_s = 2.2;              // [1, 4]
-    double seated_s = 3.0;                // [0.5, 60]
-    double stand_up_s = 1.8;              // [1, 4]
-    double stand_after_s = 1.0;           // [0, 10]
-    double trunk_flexion_peak_rad = 0.70; // forward trunk bend at its peak, beyond the standing posture, [0.2, 1.0]
+    double seat_height_m = 0.45;           // seat surface above the floor, [0.25, 0.60] (scaled to the rig's size)
+    double pelvis_above_seat_m = 0.10;     // seated pelvis joint above the seat surface, [0.05, 0.15]
+    double stand_before_s = 1.0;           // [0, 10]
+    double sit_down_s = 2.2;               // [1, 4]
+    double seated_s = 3.0;                 // [0.5, 60]
+    double stand_up_s = 1.8;               // [1, 4]
+    double stand_after_s = 1.0;            // [0, 10]
+    double trunk_flexion_peak_rad = 0.70;  // forward trunk bend at its peak, beyond the standing posture, [0.2, 1.0]
 };
 
 // Throws Error naming the field when an option is outside its range.

@@ -13,13 +13,32 @@ constexpr int kNumJoints = 22;
 constexpr double kFps = 20.0;  // HumanML3D's frame rate
 
 enum Joint : int {
-    pelvis = 0, left_hip, right_hip, spine1, left_knee, right_knee, spine2, left_ankle, right_ankle, spine3,
-    left_foot, right_foot, neck, left_collar, right_collar, head, left_shoulder, right_shoulder, left_elbow,
-    right_elbow, left_wrist, right_wrist
+    pelvis = 0,
+    left_hip,
+    right_hip,
+    spine1,
+    left_knee,
+    right_knee,
+    spine2,
+    left_ankle,
+    right_ankle,
+    spine3,
+    left_foot,
+    right_foot,
+    neck,
+    left_collar,
+    right_collar,
+    head,
+    left_shoulder,
+    right_shoulder,
+    left_elbow,
+    right_elbow,
+    left_wrist,
+    right_wrist
 };
 
 extern const std::array<const char*, kNumJoints> kJointNames;  // "pelvis", "left_hip", ...
-extern const std::array<int, kNumJoints> kParents;               // -1 for the pelvis
+extern const std::array<int, kNumJoints> kParents;             // -1 for the pelvis
 // Unit rest directions of each joint's bone from its parent (t2m_raw_offsets); the pelvis has zero.
 extern const std::array<Eigen::Vector3d, kNumJoints> kRawOffsets;
 // The five chains (right leg, left leg, spine to head, right arm, left arm), as in t2m_kinematic_chain.
@@ -32,7 +51,7 @@ extern const std::array<Eigen::Vector3d, kNumJoints> kTargetOffsets;
 
 // face_joint_indx = [2, 1, 17, 16]: right hip, left hip, right shoulder, left shoulder.
 constexpr std::array<int, 4> kFaceJoints = {right_hip, left_hip, right_shoulder, left_shoulder};
-constexpr std::array<int, 2> kFootLeft = {left_ankle, left_foot};    // fid_l
+constexpr std::array<int, 2> kFootLeft = {left_ankle, left_foot};     // fid_l
 constexpr std::array<int, 2> kFootRight = {right_ankle, right_foot};  // fid_r
 constexpr double kFootContactThreshold = 0.002;  // squared per-frame displacement, metres^2 (feet_thre)
 // Mirror partner of each joint (left <-> right), for left-right mirroring.

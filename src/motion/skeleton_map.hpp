@@ -18,8 +18,8 @@ struct JointSource {
 };
 
 struct SkeletonMap {
-    std::string flavour;                 // "cgspeed_daz", "iclone_cc_base", "bandai_namco", "hdm05_asf_amc", "reactidle_rigify"
-    double metres_per_unit;              // the flavour's length unit
+    std::string flavour;     // "cgspeed_daz", "iclone_cc_base", "bandai_namco", "hdm05_asf_amc", "reactidle_rigify"
+    double metres_per_unit;  // the flavour's length unit
     PositionChannels positions = PositionChannels::replace_offset;  // see bvh.hpp
     // The converter prepended a T-pose frame: the first frame has a root rotation of exactly (0, 0, 0)
     // (cgspeed's CMU conversions; two of the 20 fps files still carry such a frame, with the root far below the

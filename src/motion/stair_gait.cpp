@@ -40,14 +40,16 @@ std::vector<Hold> place_footholds(const JointSequence& w, Staircase& stairs) {
         h.along /= p.last_frame - p.first_frame + 1;
         holds.push_back(h);
     }
-    if (holds.size() < 4) throw Error("walk_to_stairs", "walk", "at least four stance phases", std::to_string(holds.size()));
+    if (holds.size() < 4)
+        throw Error("walk_to_stairs", "walk", "at least four stance phases", std::to_string(holds.size()));
     std::stable_sort(holds.begin(), holds.end(), [](const Hold& a, const Hold& b) { return a.along < b.along; });
     for (size_t i = 1; i < holds.size(); ++i) {
         const bool next_tread = holds[i].along - holds[i - 1].along >= kSideBySide;
         // By middle frame: a stance cut by the clip's start or end still orders right.
         const StancePhase &a = holds[i - 1].phase, &b = holds[i].phase;
         if (next_tread && b.first_frame + b.last_frame <= a.first_frame + a.last_frame)
-            throw Error("walk_to_stairs", "walk", "footholds that advance along the walking direction in time order (no turns)");
+            throw Error("walk_to_stairs", "walk",
+                        "footholds that advance along the walking direction in time order (no turns)");
         holds[i].tread = holds[i - 1].tread + (next_tread ? 1 : 0);
     }
     stairs.steps = holds.back().tread;
@@ -56,7 +58,8 @@ std::vector<Hold> place_footholds(const JointSequence& w, Staircase& stairs) {
         h.shift = stairs.start_m + (h.tread + 0.5) * stairs.going_m - h.along;
         h.height = stairs.tread_height(h.tread);
     }
-    std::stable_sort(holds.begin(), holds.end(), [](const Hold& a, const Hold& b) { return a.phase.first_frame < b.phase.first_frame; });
+    std::stable_sort(holds.begin(), holds.end(),
+                     [](const Hold& a, const Hold& b) { return a.phase.first_frame < b.phase.first_frame; });
     return holds;
 }
 
@@ -81,7 +84,8 @@ double vertical_blend(double tau, double from_height, double to_height) {
     return 0.0;
 }
 
-void plan_swing(const JointSequence& w, const Staircase& s, Foot foot, const Hold& a, const Hold& b, double clearance, FootPath& path) {
+void plan_swing(const JointSequence& w, const Staircase& s, Foot foot, const Hold& a, const Hold& b, double clearance,
+                FootPath& path) {
     const LegJoints& leg = kLegs[static_cast<size_t>(foot)];
     const int from = a.phase.last_frame, to = b.phase.first_frame;
     double lift = 0;  // smallest lift so that y >= surface + clearance * sin(pi tau) for ankle and toe
@@ -95,10 +99,12 @@ void plan_swing(const JointSequence& w, const Staircase& s, Foot foot, const Hol
             lift = std::max(lift, clearance + (s.height_at(moved) - moved.y() - path.height[i]) / bump);
         }
     }
-    for (int f = from + 1; f < to; ++f) path.lift[static_cast<size_t>(f)] = lift * std::sin(kPi * (f - from) / (to - from));
+    for (int f = from + 1; f < to; ++f)
+        path.lift[static_cast<size_t>(f)] = lift * std::sin(kPi * (f - from) / (to - from));
 }
 
-FootPath plan_foot(const JointSequence& w, const Staircase& s, const std::vector<Hold>& holds, Foot foot, double clearance) {
+FootPath plan_foot(const JointSequence& w, const Staircase& s, const std::vector<Hold>& holds, Foot foot,
+                   double clearance) {
     const size_t n = static_cast<size_t>(w.num_frames);
     FootPath path{std::vector<double>(n, 0.0), std::vector<double>(n, 0.0), std::vector<double>(n, 0.0)};
     const Hold* previous = nullptr;
@@ -115,8 +121,10 @@ FootPath plan_foot(const JointSequence& w, const Staircase& s, const std::vector
     // height) the foot stays where they put it.
     const auto it = std::find_if(holds.begin(), holds.end(), [&](const Hold& h) { return h.phase.foot == foot; });
     if (it == holds.end()) return path;
-    for (int f = 0; f < it->phase.first_frame; ++f) path.shift[static_cast<size_t>(f)] = it->shift, path.height[static_cast<size_t>(f)] = it->height;
-    for (size_t f = static_cast<size_t>(previous->phase.last_frame) + 1; f < n; ++f) path.shift[f] = previous->shift, path.height[f] = previous->height;
+    for (int f = 0; f < it->phase.first_frame; ++f)
+        path.shift[static_cast<size_t>(f)] = it->shift, path.height[static_cast<size_t>(f)] = it->height;
+    for (size_t f = static_cast<size_t>(previous->phase.last_frame) + 1; f < n; ++f)
+        path.shift[f] = previous->shift, path.height[f] = previous->height;
     return path;
 }
 
@@ -138,7 +146,8 @@ std::pair<double, double> progress_map(const std::vector<Hold>& holds) {
     for (const Hold& h : holds) mx += h.along, my += h.along + h.shift;
     mx /= holds.size(), my /= holds.size();
     double sxx = 0, sxy = 0;
-    for (const Hold& h : holds) sxx += (h.along - mx) * (h.along - mx), sxy += (h.along - mx) * (h.along + h.shift - my);
+    for (const Hold& h : holds)
+        sxx += (h.along - mx) * (h.along - mx), sxy += (h.along - mx) * (h.along + h.shift - my);
     const double c = sxy / sxx;
     return {my - c * mx, c};
 }
@@ -154,7 +163,8 @@ Vector3d mean_facing(const JointSequence& w) {
 Staircase flight_along(const JointSequence& w, const StairOptions& o) {
     const Vector3d travel = w.at(w.num_frames - 1, smpl22::pelvis) - w.at(0, smpl22::pelvis);
     if (std::hypot(travel.x(), travel.z()) < kMinTravel)
-        throw Error("walk_to_stairs", "walk", "a walk travelling at least 1.5 m", std::to_string(std::hypot(travel.x(), travel.z())) + " m");
+        throw Error("walk_to_stairs", "walk", "a walk travelling at least 1.5 m",
+                    std::to_string(std::hypot(travel.x(), travel.z())) + " m");
     Staircase stairs;
     stairs.origin = Vector3d(w.at(0, smpl22::pelvis).x(), 0, w.at(0, smpl22::pelvis).z());
     stairs.direction = horizontal_direction(travel);
@@ -169,7 +179,8 @@ Staircase flight_along(const JointSequence& w, const StairOptions& o) {
 TimeSeries body_heights(const std::array<FootPath, 2>& feet, double fps) {
     const Eigen::Index n = static_cast<Eigen::Index>(feet[0].height.size());
     TimeSeries h(n, 1);
-    for (Eigen::Index f = 0; f < n; ++f) h(f, 0) = 0.5 * (feet[0].height[static_cast<size_t>(f)] + feet[1].height[static_cast<size_t>(f)]);
+    for (Eigen::Index f = 0; f < n; ++f)
+        h(f, 0) = 0.5 * (feet[0].height[static_cast<size_t>(f)] + feet[1].height[static_cast<size_t>(f)]);
     return gaussian_filter1d_nearest(h, 0.3 * fps);
 }
 
@@ -233,11 +244,13 @@ StairMotion derive_stairs(const JointSequence& walk, const StairOptions& o) {
         const int f = g + first;
         const size_t i = static_cast<size_t>(f);
         const double pelvis_along = stairs.along(w.at(f, smpl22::pelvis));
-        const Vector3d body_move = (offset + (scale - 1) * pelvis_along) * stairs.direction + body_height(f, 0) * Vector3d::UnitY();
+        const Vector3d body_move =
+            (offset + (scale - 1) * pelvis_along) * stairs.direction + body_height(f, 0) * Vector3d::UnitY();
         for (int j = 0; j < m.num_joints; ++j)
             if (!is_leg_joint(j)) m.at(g, j) += body_move;
         for (size_t k = 0; k < 2; ++k) {
-            const Vector3d foot_move = feet[k].shift[i] * stairs.direction + (feet[k].height[i] + feet[k].lift[i]) * Vector3d::UnitY();
+            const Vector3d foot_move =
+                feet[k].shift[i] * stairs.direction + (feet[k].height[i] + feet[k].lift[i]) * Vector3d::UnitY();
             m.at(g, kLegs[k].ankle) += foot_move;
             m.at(g, kLegs[k].toe) += foot_move;
         }

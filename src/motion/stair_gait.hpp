@@ -29,7 +29,8 @@
 //     Set on the shared SisFall subjects' stair trials, whose waist step frequency (median per recording 1.38 Hz)
 //     is 0.76 of their level walking's (1.82 Hz); at 0.80 / 0.85 the derived stairs stepped at 1.56 Hz. That
 //     median hides two paces, D05 "slowly" at 1.25 Hz and D06 "quickly" at 2.80 Hz; stairs from walks played
-//     1.3-1.5 times as fast for the quick one took real walking into the stairs class (docs/realism.md#quick-stairs-2026-12-03).
+//     1.3-1.5 times as fast for the quick one took real walking into the stairs class
+//     (docs/realism.md#quick-stairs-2026-12-03).
 //   - The trunk leans further forward than on the level when ascending, less so descending (McFadyen & Winter
 //     1988; Riener et al. 2002): trunk_lean_rad 0.12 (7 deg) ascent, 0.05 descent by default.
 //   - The swinging foot clears the nosing by a few centimetres (Hamel, Okita, Higginson & Cavanagh 2005, on
@@ -52,12 +53,12 @@
 namespace t2imu {
 
 struct StairOptions {
-    double rise_m = 0.17;            // riser height, [0, 0.22]
-    double going_m = 0.28;           // tread depth along the walk, [0.22, 0.35]
-    bool ascend = true;              // false: descend (the flight goes down along the walk)
-    double trunk_lean_rad = 0.12;    // extra forward trunk lean about the pelvis, [0, 0.35]
-    double cadence_factor = 0.72;    // pace relative to the source walk, [0.5, 1]
-    double swing_clearance_m = 0.04; // toe and ankle above the surface under them at mid-swing, [0.01, 0.10]
+    double rise_m = 0.17;             // riser height, [0, 0.22]
+    double going_m = 0.28;            // tread depth along the walk, [0.22, 0.35]
+    bool ascend = true;               // false: descend (the flight goes down along the walk)
+    double trunk_lean_rad = 0.12;     // extra forward trunk lean about the pelvis, [0, 0.35]
+    double cadence_factor = 0.72;     // pace relative to the source walk, [0.5, 1]
+    double swing_clearance_m = 0.04;  // toe and ankle above the surface under them at mid-swing, [0.01, 0.10]
 };
 
 // Defaults by direction (see above): the caller samples around them.
@@ -71,16 +72,16 @@ void validate(const StairOptions& o);
 // Tread k stands k * rise_m above the floor when ascending, (steps - k) * rise_m when descending. The floor of
 // the lowest tread is y = 0. Treads extend sideways without end.
 struct Staircase {
-    Eigen::Vector3d origin = Eigen::Vector3d::Zero();     // y ignored
-    Eigen::Vector3d direction = Eigen::Vector3d::UnitZ(); // horizontal unit vector, the walking direction
+    Eigen::Vector3d origin = Eigen::Vector3d::Zero();      // y ignored
+    Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  // horizontal unit vector, the walking direction
     double start_m = 0, rise_m = 0, going_m = 0.28;
     int steps = 0;
     bool ascend = true;
 
-    int tread_at(const Eigen::Vector3d& p) const;           // the tread under horizontal point p (y ignored)
-    double tread_height(int tread) const;                    // m
+    int tread_at(const Eigen::Vector3d& p) const;  // the tread under horizontal point p (y ignored)
+    double tread_height(int tread) const;          // m
     double height_at(const Eigen::Vector3d& p) const { return tread_height(tread_at(p)); }
-    double along(const Eigen::Vector3d& p) const;            // distance of p from origin along direction (m)
+    double along(const Eigen::Vector3d& p) const;  // distance of p from origin along direction (m)
 };
 
 struct StairFoothold {

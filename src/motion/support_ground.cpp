@@ -12,7 +12,13 @@ namespace {
 
 Foothold foothold_of(const JointSequence& m, const StancePhase& phase) {
     const std::array<int, 2>& joints = phase.foot == Foot::left ? smpl22::kFootLeft : smpl22::kFootRight;
-    Foothold h{phase, std::numeric_limits<double>::infinity(), Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), m.num_frames, false, false};
+    Foothold h{phase,
+               std::numeric_limits<double>::infinity(),
+               Eigen::Vector2d::Zero(),
+               Eigen::Vector2d::Zero(),
+               m.num_frames,
+               false,
+               false};
     for (int f = phase.first_frame; f <= phase.last_frame; ++f) {
         const Eigen::Vector3d& ankle = m.at(f, joints[0]);
         const Eigen::Vector3d& toe = m.at(f, joints[1]);
@@ -32,11 +38,14 @@ bool on_floor(const Foothold& h) { return std::abs(h.height) <= kFloorBand; }
 bool carries_body(const JointSequence& m, const Foothold& h) {
     const std::array<int, 2>& foot = h.phase.foot == Foot::left ? smpl22::kFootLeft : smpl22::kFootRight;
     for (int f = h.phase.first_frame; f <= h.phase.last_frame; ++f)
-        if (std::min(m.at(f, foot[0]).y(), m.at(f, foot[1]).y()) <= lowest_joint_height_at(m, f) + kFloorBand) return true;
+        if (std::min(m.at(f, foot[0]).y(), m.at(f, foot[1]).y()) <= lowest_joint_height_at(m, f) + kFloorBand)
+            return true;
     return false;
 }
 
-double horizontal_distance(const Foothold& a, const Foothold& b) { return ((a.ankle + a.toe) - (b.ankle + b.toe)).norm() / 2; }
+double horizontal_distance(const Foothold& a, const Foothold& b) {
+    return ((a.ankle + a.toe) - (b.ankle + b.toe)).norm() / 2;
+}
 
 // Whether a person standing on `from` can step onto `to`.
 bool a_step(const Foothold& from, const Foothold& to) {
@@ -80,7 +89,8 @@ std::vector<Foothold> infer_footholds(const JointSequence& m) {
     for (const StancePhase& p : detect_planted_phases(m)) holds.push_back(foothold_of(m, p));
     const int min_frames = frames_of(kMinRaisedStanceSeconds, m.fps);
     for (Foothold& h : holds) {
-        h.raised = h.height > kFloorBand && h.phase.last_frame - h.phase.first_frame + 1 >= min_frames && carries_body(m, h);
+        h.raised =
+            h.height > kFloorBand && h.phase.last_frame - h.phase.first_frame + 1 >= min_frames && carries_body(m, h);
         for (const Foothold& next : holds)
             if (next.phase.foot == h.phase.foot && next.phase.first_frame > h.phase.first_frame) {
                 h.until_frame = next.phase.first_frame;

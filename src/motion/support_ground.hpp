@@ -49,25 +49,25 @@ constexpr double kFootprintReach = 0.10;   // m, horizontal, around a footprint'
 
 struct Foothold {
     StancePhase phase;
-    double height = 0;                 // m: the lowest its ankle or toe joint reaches in the phase
-    Eigen::Vector2d ankle, toe;        // horizontal (x, z), means over the phase: the footprint
-    int until_frame = 0;               // exclusive: the same foot's next foothold's first frame, or the clip's end
-    bool raised = false;               // above the band and carrying the body
-    bool grounded = false;             // on the floor, or raised and linked to it by steps
+    double height = 0;           // m: the lowest its ankle or toe joint reaches in the phase
+    Eigen::Vector2d ankle, toe;  // horizontal (x, z), means over the phase: the footprint
+    int until_frame = 0;         // exclusive: the same foot's next foothold's first frame, or the clip's end
+    bool raised = false;         // above the band and carrying the body
+    bool grounded = false;       // on the floor, or raised and linked to it by steps
 };
 
 // The footholds of a motion in time order (detect_planted_phases) with the rules above applied.
 std::vector<Foothold> infer_footholds(const JointSequence& motion);
 
 class SupportGround {
-  public:
+public:
     explicit SupportGround(const JointSequence& motion);
     // m: the ground under p (its y ignored) at `frame`: the nearest raised grounded footprint in effect then
     // within kFootprintReach, else 0 (the floor).
     double height_at(const Eigen::Vector3d& p, int frame) const;
     const std::vector<Foothold>& raised_footholds() const { return footholds_; }  // raised and grounded
 
-  private:
+private:
     std::vector<Foothold> footholds_;
 };
 

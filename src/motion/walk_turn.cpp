@@ -44,7 +44,8 @@ Vector3d foot_point(const JointSequence& m, int f, Foot foot) {
 }  // namespace
 
 JointSequence turn_walk(const JointSequence& walk, const WalkTurnOptions& o) {
-    if (walk.num_joints != smpl22::kNumJoints || walk.num_frames < 3) throw Error("walk turn", "joints", "22 joints and at least 3 frames");
+    if (walk.num_joints != smpl22::kNumJoints || walk.num_frames < 3)
+        throw Error("walk turn", "joints", "22 joints and at least 3 frames");
     const double length = (walk.num_frames - 1) / walk.fps;
     if (!(std::abs(o.turn_rad) <= M_PI)) throw Error("walk turn", "turn_rad", "-pi to pi", std::to_string(o.turn_rad));
     if (!(o.duration_s > 0 && o.start_s >= 0 && o.start_s + o.duration_s <= length))
@@ -62,8 +63,10 @@ JointSequence turn_walk(const JointSequence& walk, const WalkTurnOptions& o) {
         if (f > 0) {
             // In double support the foot that landed last carries the turn; the other is about to push off.
             Vector3d pivot = walk.at(f, smpl22::pelvis);
-            if (left[i] && (!right[i] || landed[0] >= landed[1])) pivot = foot_point(walk, f, Foot::left);
-            else if (right[i]) pivot = foot_point(walk, f, Foot::right);
+            if (left[i] && (!right[i] || landed[0] >= landed[1]))
+                pivot = foot_point(walk, f, Foot::left);
+            else if (right[i])
+                pivot = foot_point(walk, f, Foot::right);
             t = t.then_turn(heading(f) - heading(f - 1), t.apply(pivot));
         }
         for (int k = 0; k < walk.num_joints; ++k) out.at(f, k) = t.apply(walk.at(f, k));

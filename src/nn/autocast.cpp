@@ -31,7 +31,9 @@ void set_autocast(bool cuda, bool enabled, at::ScalarType dtype) {
 #else
 namespace {
 bool autocast_enabled(bool cuda) { return cuda ? at::autocast::is_enabled() : at::autocast::is_cpu_enabled(); }
-at::ScalarType autocast_dtype(bool cuda) { return cuda ? at::autocast::get_autocast_gpu_dtype() : at::autocast::get_autocast_cpu_dtype(); }
+at::ScalarType autocast_dtype(bool cuda) {
+    return cuda ? at::autocast::get_autocast_gpu_dtype() : at::autocast::get_autocast_cpu_dtype();
+}
 void set_autocast(bool cuda, bool enabled, at::ScalarType dtype) {
     if (cuda) {
         at::autocast::set_autocast_gpu_dtype(dtype);

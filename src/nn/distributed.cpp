@@ -4,9 +4,9 @@
 #ifndef USE_C10D_GLOO
 #error "this libtorch has no c10d Gloo backend (USE_C10D_GLOO), which data-parallel training on the CPU needs"
 #endif
+#include <torch/version.h>
 #include <torch/csrc/distributed/c10d/ProcessGroupGloo.hpp>
 #include <torch/csrc/distributed/c10d/TCPStore.hpp>
-#include <torch/version.h>
 #ifdef USE_C10D_NCCL
 #include <torch/csrc/distributed/c10d/ProcessGroupNCCL.hpp>
 #endif
@@ -35,19 +35,24 @@ ProcessGroupEnv read_process_group_env(const std::function<const char*(const cha
     e.world_size = env_int(getenv, "WORLD_SIZE", 1, 1, 1 << 20);
     e.rank = env_int(getenv, "RANK", 0, 0, e.world_size - 1);
     e.local_rank = env_int(getenv, "LOCAL_RANK", 0, 0, 1 << 20);
-    if (e.world_size > 1 && !getenv("RANK")) throw Error("environment", "RANK", "this process's rank, as WORLD_SIZE is " + std::to_string(e.world_size));
+    if (e.world_size > 1 && !getenv("RANK"))
+        throw Error("environment", "RANK", "this process's rank, as WORLD_SIZE is " + std::to_string(e.world_size));
     if (const char* addr = getenv("MASTER_ADDR")) e.master_addr = addr;
     e.master_port = env_int(getenv, "MASTER_PORT", 0, 1, 65535);
     if (e.world_size > 1 && (e.master_addr.empty() || e.master_port == 0))
-        throw Error("environment", "MASTER_ADDR, MASTER_PORT", "the address and port of rank 0's rendezvous, as WORLD_SIZE is " + std::to_string(e.world_size));
+        throw Error("environment", "MASTER_ADDR, MASTER_PORT",
+                    "the address and port of rank 0's rendezvous, as WORLD_SIZE is " + std::to_string(e.world_size));
     return e;
 }
 
 BatchShare batch_share(int global_batch, int rank, int world_size) {
-    if (world_size < 1 || rank < 0 || rank >= world_size) throw Error("environment", "RANK", "a rank in [0, WORLD_SIZE)", std::to_string(rank));
+    if (world_size < 1 || rank < 0 || rank >= world_size)
+        throw Error("environment", "RANK", "a rank in [0, WORLD_SIZE)", std::to_string(rank));
     if (global_batch % world_size != 0)
-        throw Error("training configuration", "train.batch", "a multiple of WORLD_SIZE = " + std::to_string(world_size) + " (every process takes an equal share)",
-                    std::to_string(global_batch));
+        throw Error(
+            "training configuration", "train.batch",
+            "a multiple of WORLD_SIZE = " + std::to_string(world_size) + " (every process takes an equal share)",
+            std::to_string(global_batch));
     const int size = global_batch / world_size;
     return {rank * size, size};
 }
@@ -79,7 +84,8 @@ struct DataParallel::Group {
     }
 };
 
-DataParallel::DataParallel(const ProcessGroupEnv& env, const torch::Device& device, std::chrono::milliseconds timeout) : env_(env) {
+DataParallel::DataParallel(const ProcessGroupEnv& env, const torch::Device& device, std::chrono::milliseconds timeout)
+    : env_(env) {
     if (env.world_size <= 1) return;
     const std::string where = env.master_addr + ":" + std::to_string(env.master_port);
     group_ = std::make_unique<Group>();
@@ -139,7 +145,8 @@ void DataParallel::broadcast_from_main(const std::vector<torch::Tensor>& tensors
     }
 }
 
-torch::Tensor DataParallel::average_gradients(const std::vector<torch::Tensor>& parameters, const torch::Tensor& riders) const {
+torch::Tensor DataParallel::average_gradients(const std::vector<torch::Tensor>& parameters,
+                                              const torch::Tensor& riders) const {
     if (!group_) return riders;
     torch::NoGradGuard no_grad;
     // Layout: every gradient flattened (zeros where undefined), one "defined" flag per parameter, the riders.
@@ -147,7 +154,8 @@ torch::Tensor DataParallel::average_gradients(const std::vector<torch::Tensor>& 
     std::vector<float> defined;
     for (const torch::Tensor& p : parameters) {
         const torch::Tensor& g = p.grad();
-        parts.push_back(g.defined() ? g.reshape({-1}).to(torch::kFloat32) : torch::zeros({p.numel()}, p.options().dtype(torch::kFloat32)));
+        parts.push_back(g.defined() ? g.reshape({-1}).to(torch::kFloat32)
+                                    : torch::zeros({p.numel()}, p.options().dtype(torch::kFloat32)));
         defined.push_back(g.defined() ? 1.0f : 0.0f);
     }
     const torch::Device device = parts.empty() ? riders.device() : parts.front().device();

@@ -47,7 +47,8 @@ public:
     // Joins the group: blocks until all WORLD_SIZE ranks have reached MASTER_ADDR:MASTER_PORT, at most `timeout`
     // (then throws).
     // `device` is where the tensors handed to the collectives live.
-    DataParallel(const ProcessGroupEnv& env, const torch::Device& device, std::chrono::milliseconds timeout = std::chrono::minutes(5));
+    DataParallel(const ProcessGroupEnv& env, const torch::Device& device,
+                 std::chrono::milliseconds timeout = std::chrono::minutes(5));
     ~DataParallel();
     DataParallel(DataParallel&&) noexcept;
     DataParallel& operator=(DataParallel&&) noexcept;

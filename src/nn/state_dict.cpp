@@ -8,7 +8,9 @@ namespace t2imu {
 
 namespace {
 
-std::vector<int64_t> sizes_of(const torch::Tensor& t) { return std::vector<int64_t>(t.sizes().begin(), t.sizes().end()); }
+std::vector<int64_t> sizes_of(const torch::Tensor& t) {
+    return std::vector<int64_t>(t.sizes().begin(), t.sizes().end());
+}
 
 std::string shape_str(const std::vector<int64_t>& s) { return c10::str(c10::IntArrayRef(s)); }
 
@@ -24,7 +26,8 @@ std::vector<int64_t> part_shape(std::vector<int64_t> want, size_t n, bool transp
 StateDictLayout prefixed_layout(const std::string& prefix, bool only_prefixed) {
     StateDictLayout layout;
     layout.source = [prefix](const std::string& name) { return TensorSource{{prefix + name}, false}; };
-    if (only_prefixed) layout.foreign = [prefix](const std::string& key) { return key.compare(0, prefix.size(), prefix) != 0; };
+    if (only_prefixed)
+        layout.foreign = [prefix](const std::string& key) { return key.compare(0, prefix.size(), prefix) != 0; };
     return layout;
 }
 
@@ -33,7 +36,8 @@ torch::Tensor tensor_of(const NdArray& a) {
     return torch::from_blob(v.data(), a.shape, torch::kFloat).clone();
 }
 
-void load_state_dict(torch::nn::Module& module, const SafeTensors& weights, const std::string& path, const StateDictLayout& layout) {
+void load_state_dict(torch::nn::Module& module, const SafeTensors& weights, const std::string& path,
+                     const StateDictLayout& layout) {
     std::set<std::string> used;
     torch::NoGradGuard no_grad;
     for (auto& p : module.named_parameters()) {
@@ -52,7 +56,8 @@ void load_state_dict(torch::nn::Module& module, const SafeTensors& weights, cons
         p.value().copy_(value);
     }
     for (const auto& [key, a] : weights.tensors)
-        if (!used.count(key) && !(layout.foreign && layout.foreign(key))) throw Error(path, key, layout.owner, "an unexpected tensor " + a.shape_str());
+        if (!used.count(key) && !(layout.foreign && layout.foreign(key)))
+            throw Error(path, key, layout.owner, "an unexpected tensor " + a.shape_str());
 }
 
 void load_state_dict(torch::nn::Module& module, const std::string& path, const StateDictLayout& layout) {

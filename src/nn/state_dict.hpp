@@ -37,8 +37,10 @@ struct StateDictLayout {
 // not start with the prefix are foreign when `only_prefixed`, unexpected otherwise.
 StateDictLayout prefixed_layout(const std::string& prefix, bool only_prefixed = false);
 
-void load_state_dict(torch::nn::Module& module, const SafeTensors& weights, const std::string& path, const StateDictLayout& layout = {});
-void load_state_dict(torch::nn::Module& module, const std::string& safetensors_path, const StateDictLayout& layout = {});
+void load_state_dict(torch::nn::Module& module, const SafeTensors& weights, const std::string& path,
+                     const StateDictLayout& layout = {});
+void load_state_dict(torch::nn::Module& module, const std::string& safetensors_path,
+                     const StateDictLayout& layout = {});
 
 // Every parameter under its own name, float32, contiguous, through a temporary file (atomic).
 void save_state_dict(const torch::nn::Module& module, const std::string& safetensors_path);
@@ -50,7 +52,8 @@ torch::Tensor tensor_of(const NdArray& a);
 // These register `module` (or a parameter) at a dotted path below `root`, creating empty holder modules on the
 // way, so that named_parameters() gives the reference's key names.
 torch::nn::Module& holder_at(torch::nn::Module& root, const std::string& dotted_parent);
-template <class M> M register_module_at(torch::nn::Module& root, const std::string& path, M module) {
+template <class M>
+M register_module_at(torch::nn::Module& root, const std::string& path, M module) {
     const size_t dot = path.rfind('.');
     if (dot == std::string::npos) return root.register_module(path, module);
     return holder_at(root, path.substr(0, dot)).register_module(path.substr(dot + 1), module);

@@ -33,14 +33,16 @@ torch::Tensor EncoderLayerImpl::attention(const torch::Tensor& x, const torch::T
     const std::vector<torch::Tensor> qkv = F::linear(x, in_proj_weight_, in_proj_bias_).chunk(3, -1);
     // [S, B, E] -> [B * H, S, hd], the query scaled by 1 / sqrt(hd) before the product (as PyTorch does).
     const auto heads = [&](const torch::Tensor& t) { return t.contiguous().view({s, b * h, hd}).transpose(0, 1); };
-    const torch::Tensor q = heads(qkv[0] * (1.0 / std::sqrt(static_cast<double>(hd)))), k = heads(qkv[1]), v = heads(qkv[2]);
+    const torch::Tensor q = heads(qkv[0] * (1.0 / std::sqrt(static_cast<double>(hd)))), k = heads(qkv[1]),
+                        v = heads(qkv[2]);
     torch::Tensor weights = torch::bmm(q, k.transpose(1, 2));  // [B * H, S, S]: bf16 under autocast, else fp32
     {
         // The map stays in the products' precision: the softmax accumulates in fp32 internally, and its output
         // would be rounded to bf16 for the next product anyway. Kept out of autocast's fp32 list on purpose: an
         // fp32 copy of a batch-64 map is 40 MB, above glibc's largest reusable block (a fresh mmap each time).
         const c10::impl::ExcludeDispatchKeyGuard keep_dtype(c10::DispatchKey::AutocastCPU);
-        if (additive_mask.defined()) weights = (weights.view({b, h, s, s}) + additive_mask.to(weights.scalar_type())).view({b * h, s, s});
+        if (additive_mask.defined())
+            weights = (weights.view({b, h, s, s}) + additive_mask.to(weights.scalar_type())).view({b * h, s, s});
         weights = torch::softmax(weights, -1);
     }
     weights = hashed_dropout(weights, o_.dropout, is_training());
@@ -58,11 +60,14 @@ torch::Tensor EncoderLayerImpl::forward(const torch::Tensor& x, const torch::Ten
 }
 
 torch::Tensor EncoderLayerImpl::forward_fused(const torch::Tensor& x, const torch::Tensor& key_padding) {
-    const c10::optional<torch::Tensor> mask = key_padding.defined() ? c10::optional<torch::Tensor>(key_padding) : c10::nullopt;
-    const c10::optional<int64_t> mask_type = key_padding.defined() ? c10::optional<int64_t>(1) : c10::nullopt;  // 1: key padding
-    return at::_transformer_encoder_layer_fwd(x, o_.d_model, o_.nhead, in_proj_weight_, in_proj_bias_, out_proj_->weight, out_proj_->bias, o_.gelu,
-                                              /*norm_first=*/false, o_.eps, norm1_->weight, norm1_->bias, norm2_->weight, norm2_->bias,
-                                              linear1_->weight, linear1_->bias, linear2_->weight, linear2_->bias, mask, mask_type);
+    const c10::optional<torch::Tensor> mask =
+        key_padding.defined() ? c10::optional<torch::Tensor>(key_padding) : c10::nullopt;
+    const c10::optional<int64_t> mask_type =
+        key_padding.defined() ? c10::optional<int64_t>(1) : c10::nullopt;  // 1: key padding
+    return at::_transformer_encoder_layer_fwd(
+        x, o_.d_model, o_.nhead, in_proj_weight_, in_proj_bias_, out_proj_->weight, out_proj_->bias, o_.gelu,
+        /*norm_first=*/false, o_.eps, norm1_->weight, norm1_->bias, norm2_->weight, norm2_->bias, linear1_->weight,
+        linear1_->bias, linear2_->weight, linear2_->bias, mask, mask_type);
 }
 
 TransformerEncoderImpl::TransformerEncoderImpl(const EncoderOptions& o) {

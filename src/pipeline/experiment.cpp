@@ -69,10 +69,16 @@ public:
             write_file_atomic(path("summary.json"), experiment_summary_json(summary).dump(2) + "\n");
             write_file_atomic(path("summary.md"), experiment_summary_markdown(summary));
             write_report(out_, path("report"));
-            say("round " + std::to_string(k + 1) + "/" + std::to_string(c_.har.repeats) + " of HAR trainings done: " + path("summary.md"));
+            say("round " + std::to_string(k + 1) + "/" + std::to_string(c_.har.repeats) +
+                " of HAR trainings done: " + path("summary.md"));
         }
         if (!c_.low_data.train_subjects.empty()) {
-            run_low_data(c_, out_, [this](const std::string& dataset, const ExperimentRealSet& set) -> const WindowSet& { return windows(dataset, set); }, log_);
+            run_low_data(
+                c_, out_,
+                [this](const std::string& dataset, const ExperimentRealSet& set) -> const WindowSet& {
+                    return windows(dataset, set);
+                },
+                log_);
             write_report(out_, path("report"));
             say("low-data curves done: " + path("low-data/summary.md"));
         }
@@ -94,7 +100,8 @@ private:
     // Windows of a dataset folder, read once per run (the HAR rounds reuse them).
     const WindowSet& windows(const std::string& dataset, const ExperimentRealSet& set) {
         auto it = windows_.find(dataset);
-        if (it == windows_.end()) it = windows_.emplace(dataset, make_windows(read_imu_dataset(dataset), windows_for(set))).first;
+        if (it == windows_.end())
+            it = windows_.emplace(dataset, make_windows(read_imu_dataset(dataset), windows_for(set))).first;
         return it->second;
     }
 
@@ -106,7 +113,8 @@ private:
         if (!r.set->realism.empty()) o.realism = r.set->realism;
         o.out = path("synth/" + r.id());
         const SynthReport report = run_synth(o);
-        say("synth " + r.id() + ": " + std::to_string(report.motions_kept) + " motions kept, " + std::to_string(report.recordings) + " recordings");
+        say("synth " + r.id() + ": " + std::to_string(report.motions_kept) + " motions kept, " +
+            std::to_string(report.recordings) + " recordings");
     }
 
     void features(const std::string& file, const std::string& dataset, const ExperimentRealSet& set) {
@@ -141,7 +149,8 @@ private:
             SignalStatisticsOptions o;
             o.position = position;
             o.rate_hz = c_.windows.rate_hz;
-            const SignalStatisticsComparison stats = compare_signal_statistics(real_recordings(r.set->dataset), read_imu_dataset(path("synth/" + r.id())), o);
+            const SignalStatisticsComparison stats = compare_signal_statistics(
+                real_recordings(r.set->dataset), read_imu_dataset(path("synth/" + r.id())), o);
             write_file_atomic(file, signal_statistics_comparison_json(stats).dump(2) + "\n");
             say("signal statistics " + r.id() + " at " + position + ": " + file);
         }
@@ -158,7 +167,8 @@ private:
             if (all.header.empty()) {
                 all.header = {"source"};
                 all.header.insert(all.header.end(), t.header.begin(), t.header.end());
-            } else if (!std::equal(t.header.begin(), t.header.end(), all.header.begin() + 1) || t.header.size() + 1 != all.header.size()) {
+            } else if (!std::equal(t.header.begin(), t.header.end(), all.header.begin() + 1) ||
+                       t.header.size() + 1 != all.header.size()) {
                 throw Error(features_file, "header", "the columns of the other feature tables of " + set.name);
             }
             std::vector<size_t> order(t.rows.size());
@@ -205,8 +215,9 @@ private:
         if (fs::exists(change)) return;
         const WordVectors vectors = WordVectors::load(l.vocab);
         const SifEncoder sif(vectors, kCategorySifWeight);
-        const LaccAnalysis a = analyse_lacc(read_lacc_csv(path("lacc/" + l.before + ".csv")), read_lacc_csv(path("lacc/" + l.after + ".csv")),
-                                            ActivityCategorizer(sif, l.tau));
+        const LaccAnalysis a =
+            analyse_lacc(read_lacc_csv(path("lacc/" + l.before + ".csv")),
+                         read_lacc_csv(path("lacc/" + l.after + ".csv")), ActivityCategorizer(sif, l.tau));
         write_file_atomic(change, lacc_analysis_csv(a));
         say("L_acc change " + std::to_string(a.all.change_percent()) + " %: " + change);
     }
@@ -219,22 +230,28 @@ private:
     }
 
     void har_run(const Row& r, int k) {
-        const std::string file = path("runs/" + r.id() + "/seed-" + std::to_string(c_.har.seed + static_cast<uint64_t>(k)) + ".jsonl");
+        const std::string file =
+            path("runs/" + r.id() + "/seed-" + std::to_string(c_.har.seed + static_cast<uint64_t>(k)) + ".jsonl");
         if (!fs::exists(file)) {
-            const HarResult result = train_and_test(windows(path("synth/" + r.id()), *r.set), windows(r.set->dataset, *r.set),
-                                                    one_training(c_.har.seed + static_cast<uint64_t>(k)));
+            const HarResult result =
+                train_and_test(windows(path("synth/" + r.id()), *r.set), windows(r.set->dataset, *r.set),
+                               one_training(c_.har.seed + static_cast<uint64_t>(k)));
             write_file_atomic(file, nlohmann::json::parse(har_result_json(result, "")).dump() + "\n");
-            say("HAR " + r.id() + " seed " + std::to_string(c_.har.seed + static_cast<uint64_t>(k)) + ": balanced accuracy " +
-                std::to_string(result.runs[0].balanced_accuracy));
+            say("HAR " + r.id() + " seed " + std::to_string(c_.har.seed + static_cast<uint64_t>(k)) +
+                ": balanced accuracy " + std::to_string(result.runs[0].balanced_accuracy));
         }
         std::vector<HarResult> parts;
-        for (int j = 0; j <= k; ++j) parts.push_back(read_har_result(path("runs/" + r.id() + "/seed-" + std::to_string(c_.har.seed + static_cast<uint64_t>(j)) + ".jsonl")));
+        for (int j = 0; j <= k; ++j)
+            parts.push_back(read_har_result(
+                path("runs/" + r.id() + "/seed-" + std::to_string(c_.har.seed + static_cast<uint64_t>(j)) + ".jsonl")));
         write_file_atomic(path("har/" + r.id() + ".json"),
-                          har_result_json(merge_har_results(parts), "trained on " + r.source->name + "'s synthetic " + r.set->name + ", tested on " + r.set->dataset));
+                          har_result_json(merge_har_results(parts), "trained on " + r.source->name + "'s synthetic " +
+                                                                        r.set->name + ", tested on " + r.set->dataset));
     }
 
     static std::string ceiling_description(const ExperimentRealSet& set) {
-        const std::string how = set.ceiling_folds > 0 ? std::to_string(set.ceiling_folds) + "-fold leave-subjects-out" : "leave-one-subject-out";
+        const std::string how = set.ceiling_folds > 0 ? std::to_string(set.ceiling_folds) + "-fold leave-subjects-out"
+                                                      : "leave-one-subject-out";
         return how + " on " + set.dataset + " (real-to-real ceiling)";
     }
 
@@ -257,22 +274,25 @@ private:
         for (const Row& r : rows_) {
             const HarResult har = read_har_result(path("har/" + r.id() + ".json"));
             const std::string gap = path("gap/" + r.id() + ".json");
-            s.rows.push_back({r.source->name, r.source->model, r.set->name, har.classes, 1.0 / static_cast<double>(har.classes.size()),
-                              score_summary(har, &HarRun::balanced_accuracy), score_summary(har, &HarRun::macro_f1), har.train_windows,
-                              har.test_windows, read_domain_gap(gap).overall.balanced_accuracy});
+            s.rows.push_back({r.source->name, r.source->model, r.set->name, har.classes,
+                              1.0 / static_cast<double>(har.classes.size()),
+                              score_summary(har, &HarRun::balanced_accuracy), score_summary(har, &HarRun::macro_f1),
+                              har.train_windows, har.test_windows, read_domain_gap(gap).overall.balanced_accuracy});
         }
         for (const ExperimentRealSet& set : c_.real_sets) {
             const std::string file = path("har/ceiling-" + set.name + ".json");
             if (!fs::exists(file)) continue;
             const HarResult har = read_har_result(file);
-            s.ceilings.push_back({set.name, ceiling_description(set), har.classes, score_summary(har, &HarRun::balanced_accuracy)});
+            s.ceilings.push_back(
+                {set.name, ceiling_description(set), har.classes, score_summary(har, &HarRun::balanced_accuracy)});
         }
         const std::string change = path("lacc/change.csv");
         if (fs::exists(change)) {
             const CsvTable t = read_csv(change);
             s.lacc_before = c_.lacc.before, s.lacc_after = c_.lacc.after;
             for (size_t i = 0; i < t.rows.size(); ++i)
-                s.lacc_groups[t.rows[i][t.column("group")]] = {t.number(i, t.column("samples")), t.number(i, t.column("change_percent"))};
+                s.lacc_groups[t.rows[i][t.column("group")]] = {t.number(i, t.column("samples")),
+                                                               t.number(i, t.column("change_percent"))};
         }
         return s;
     }
@@ -287,7 +307,8 @@ private:
 
 }  // namespace
 
-ExperimentSummary run_experiment(const ExperimentConfig& config, const std::string& out, const std::function<void(const std::string&)>& log) {
+ExperimentSummary run_experiment(const ExperimentConfig& config, const std::string& out,
+                                 const std::function<void(const std::string&)>& log) {
     claim_output_folder(out);  // marked as t2imu's: a rerun continues in it (core/output_path.hpp)
     return Experiment(config, out, log).run();
 }

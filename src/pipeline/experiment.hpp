@@ -5,9 +5,9 @@
 //     catch22 of every real and synthetic window                            -> features/{real,<source>}-<set>.csv
 //     real vs synthetic: classifier two-sample test, per-feature distances  -> gap/<source>-<set>.json
 //     level and texture statistics per activity, real beside synthetic,
-//     at each of the set's positions (analysis/signal_statistics.hpp)       -> signal-stats/<source>-<set>-<position>.json
-//     DeepConvLSTM trained only on the synthetic set, tested on the real one,
-//     one training per seed (har.repeats of them)                           -> runs/<source>-<set>/seed-<k>.jsonl
+//     at each of the set's positions (analysis/signal_statistics.hpp)       ->
+//     signal-stats/<source>-<set>-<position>.json DeepConvLSTM trained only on the synthetic set, tested on the real
+//     one, one training per seed (har.repeats of them)                           -> runs/<source>-<set>/seed-<k>.jsonl
 //                                                                              merged: har/<source>-<set>.json
 //   per real set: t-SNE of real and every source's windows (a seeded draw of
 //     at most features.tsne_points windows per group)                      -> tsne/<set>.csv
@@ -44,10 +44,10 @@ struct ExperimentSource {
 };
 
 struct ExperimentRealSet {
-    std::string name;     // column name in tables and file names
-    std::string dataset;  // IMU dataset folder (imu/imu_dataset.hpp layout)
-    std::string prompts;  // prompt set in this data set's class names
-    std::string sensors;  // placement set the synthetic recordings are made at
+    std::string name;                    // column name in tables and file names
+    std::string dataset;                 // IMU dataset folder (imu/imu_dataset.hpp layout)
+    std::string prompts;                 // prompt set in this data set's class names
+    std::string sensors;                 // placement set the synthetic recordings are made at
     std::vector<std::string> positions;  // positions compared (windowing.hpp names)
     int ceiling_folds = 0;  // real-to-real ceiling: subjects dealt into this many folds (0: one per subject; -1: none)
     std::string realism;    // realism model of this set's synthetic recordings ("" = [synth]'s realism)
@@ -67,10 +67,10 @@ struct ExperimentLacc {
 struct ExperimentLowData {
     std::vector<int> train_subjects;  // K; kAllSubjects: every subject but all_test_subjects. Empty: no curve
     static constexpr int kAllSubjects = -1;
-    int all_test_subjects = 4;        // at K = all, drawn per draw
+    int all_test_subjects = 4;  // at K = all, drawn per draw
     int draws = 5;
     std::vector<HarProtocol> protocols = {HarProtocol::mix, HarProtocol::finetune};
-    double synthetic_share = 0.5;     // mix: the synthetic set's share of each batch (0: in proportion to windows)
+    double synthetic_share = 0.5;  // mix: the synthetic set's share of each batch (0: in proportion to windows)
     int finetune_epochs = 20;
     double finetune_learning_rate = 3e-4;
 };
@@ -97,9 +97,10 @@ ExperimentLowData read_experiment_low_data(TomlSection section, const std::strin
 
 // The low-data curves of every real set, each step skipped when its file exists; `windows` gives a dataset folder's
 // windows for a real set (read once by the experiment). Writes low-data/curves.json and low-data/summary.md.
-std::vector<LowDataCurve> run_low_data(const ExperimentConfig& config, const std::string& out,
-                                       const std::function<const WindowSet&(const std::string&, const ExperimentRealSet&)>& windows,
-                                       const std::function<void(const std::string&)>& log);
+std::vector<LowDataCurve> run_low_data(
+    const ExperimentConfig& config, const std::string& out,
+    const std::function<const WindowSet&(const std::string&, const ExperimentRealSet&)>& windows,
+    const std::function<void(const std::string&)>& log);
 // low-data/summary.md: per real set, balanced accuracy per K and arm (mean ± sd over the draws, each draw), and the
 // best synthetic arm's gain over real only.
 std::string low_data_markdown(const std::vector<LowDataCurve>& curves);

@@ -37,7 +37,8 @@ void read_synth(TomlSection s, SynthOptions& o, const std::string& path) {
     if (s.has("caption_anchor")) {  // absent: each model folder's own weight
         double anchor = 0;
         s.read("caption_anchor", anchor);
-        if (!(anchor >= 0 && anchor <= 1)) throw Error(path, "synth.caption_anchor", "a weight from 0 to 1", std::to_string(anchor));
+        if (!(anchor >= 0 && anchor <= 1))
+            throw Error(path, "synth.caption_anchor", "a weight from 0 to 1", std::to_string(anchor));
         o.sampling.caption_anchor = anchor;
     }
     s.read("batch", o.sampling.batch);
@@ -84,9 +85,11 @@ void check_names(const ExperimentConfig& c, const std::string& path) {
         if (s.name.empty() || s.name.find_first_of("/ -") != std::string::npos || !sources.insert(s.name).second)
             throw Error(path, "source.name", "unique names without '/', ' ' or '-'", s.name);
     for (const ExperimentRealSet& r : c.real_sets)
-        if (r.name.empty() || r.name.find_first_of("/ -") != std::string::npos || !sets.insert(r.name).second || r.name == "real")
+        if (r.name.empty() || r.name.find_first_of("/ -") != std::string::npos || !sets.insert(r.name).second ||
+            r.name == "real")
             throw Error(path, "real.name", "unique names without '/', ' ' or '-', other than 'real'", r.name);
-    if (c.sources.empty() || c.real_sets.empty()) throw Error(path, "source, real", "at least one [[source]] and one [[real]]");
+    if (c.sources.empty() || c.real_sets.empty())
+        throw Error(path, "source, real", "at least one [[source]] and one [[real]]");
     for (const std::string& name : {c.lacc.before, c.lacc.after})
         if (!name.empty() && !sources.count(name)) throw Error(path, "lacc", "before/after naming a [[source]]", name);
     if (c.lacc.before.empty() != c.lacc.after.empty()) throw Error(path, "lacc", "both before and after, or neither");

@@ -2,8 +2,8 @@
 // its table.
 #include <algorithm>
 #include <cstdio>
-#include <map>
 #include <filesystem>
+#include <map>
 #include <set>
 
 #include "core/atomic_file.hpp"
@@ -21,7 +21,9 @@ ExperimentLowData read_experiment_low_data(TomlSection s, const std::string& pat
     std::vector<std::string> ks, protocols;
     s.read("train_subjects", ks);
     for (const std::string& k : ks)
-        l.train_subjects.push_back(k == "all" ? ExperimentLowData::kAllSubjects : static_cast<int>(integer_in(k, 0, 100000, path, "low_data.train_subjects")));
+        l.train_subjects.push_back(k == "all"
+                                       ? ExperimentLowData::kAllSubjects
+                                       : static_cast<int>(integer_in(k, 0, 100000, path, "low_data.train_subjects")));
     s.read("all_test_subjects", l.all_test_subjects);
     s.read("draws", l.draws);
     if (s.has("protocols")) {
@@ -36,12 +38,16 @@ ExperimentLowData read_experiment_low_data(TomlSection s, const std::string& pat
     s.read("finetune_epochs", l.finetune_epochs);
     s.read("finetune_learning_rate", l.finetune_learning_rate);
     s.refuse_unknown_keys();
-    if (l.all_test_subjects < 1) throw Error(path, "low_data.all_test_subjects", "at least 1 subject", std::to_string(l.all_test_subjects));
+    if (l.all_test_subjects < 1)
+        throw Error(path, "low_data.all_test_subjects", "at least 1 subject", std::to_string(l.all_test_subjects));
     if (l.draws < 1) throw Error(path, "low_data.draws", "at least 1 draw", std::to_string(l.draws));
-    if (!(l.synthetic_share >= 0 && l.synthetic_share < 1)) throw Error(path, "low_data.synthetic_share", "0 (by windows) to below 1", std::to_string(l.synthetic_share));
-    if (l.finetune_epochs < 0) throw Error(path, "low_data.finetune_epochs", "0 or more epochs", std::to_string(l.finetune_epochs));
+    if (!(l.synthetic_share >= 0 && l.synthetic_share < 1))
+        throw Error(path, "low_data.synthetic_share", "0 (by windows) to below 1", std::to_string(l.synthetic_share));
+    if (l.finetune_epochs < 0)
+        throw Error(path, "low_data.finetune_epochs", "0 or more epochs", std::to_string(l.finetune_epochs));
     if (!(l.finetune_learning_rate > 0 && l.finetune_learning_rate < 1))
-        throw Error(path, "low_data.finetune_learning_rate", "a learning rate above 0, below 1", std::to_string(l.finetune_learning_rate));
+        throw Error(path, "low_data.finetune_learning_rate", "a learning rate above 0, below 1",
+                    std::to_string(l.finetune_learning_rate));
     return l;
 }
 
@@ -51,7 +57,8 @@ std::string label_of(int k) { return k == ExperimentLowData::kAllSubjects ? "all
 
 class LowDataRun {
 public:
-    LowDataRun(const ExperimentConfig& c, std::string out, const std::function<const WindowSet&(const std::string&, const ExperimentRealSet&)>& windows,
+    LowDataRun(const ExperimentConfig& c, std::string out,
+               const std::function<const WindowSet&(const std::string&, const ExperimentRealSet&)>& windows,
                const std::function<void(const std::string&)>& log)
         : c_(c), out_(std::move(out)), windows_(windows), log_(log) {}
 
@@ -61,17 +68,20 @@ public:
         // Real only and every synthetic arm score the classes of the first source's synthetic-only row.
         std::map<std::string, std::string> keep;
         for (const std::string& cls : curve.classes) keep[cls] = cls;
-        const WindowSet& real = real_windows_.emplace(set.name, relabel(windows_(set.dataset, set), keep)).first->second;
+        const WindowSet& real =
+            real_windows_.emplace(set.name, relabel(windows_(set.dataset, set), keep)).first->second;
         const size_t subjects = std::set<std::string>(real.subjects.begin(), real.subjects.end()).size();
         for (int k : c_.low_data.train_subjects) curve.labels.push_back(label_of(k));
         LowDataArm real_only{"real only", {}};
         for (int k : c_.low_data.train_subjects) {
             if (k == 0) continue;
             const int n = count(k, subjects, set);
-            real_only.points.push_back(step(path("low-data/real-" + set.name + "/real-k" + label_of(k) + ".json"), label_of(k), [&] {
-                return har_result_json(train_on_sets({{&real, set.dataset}}, real, draws(), sets(HarProtocol::mix, 0, n)),
-                                       "real only: " + std::to_string(n) + " drawn subjects of " + set.dataset);
-            }));
+            real_only.points.push_back(
+                step(path("low-data/real-" + set.name + "/real-k" + label_of(k) + ".json"), label_of(k), [&] {
+                    return har_result_json(
+                        train_on_sets({{&real, set.dataset}}, real, draws(), sets(HarProtocol::mix, 0, n)),
+                        "real only: " + std::to_string(n) + " drawn subjects of " + set.dataset);
+                }));
         }
         curve.arms.push_back(real_only);
         for (const ExperimentSource& source : c_.sources) {
@@ -86,12 +96,14 @@ public:
                         continue;
                     }
                     const int n = count(k, subjects, set);
-                    const std::string file = path("low-data/" + row + "/" + har_protocol_name(protocol) + "-k" + label_of(k) + ".json");
+                    const std::string file =
+                        path("low-data/" + row + "/" + har_protocol_name(protocol) + "-k" + label_of(k) + ".json");
                     arm.points.push_back(step(file, label_of(k), [&] {
-                        return har_result_json(train_on_sets({{&synthetic, path("synth/" + row)}, {&real, set.dataset}}, real, draws(),
-                                                             sets(protocol, 1, n), &pretrained),
-                                               std::string(har_protocol_name(protocol)) + ": " + source.name + "'s synthetic " + set.name + " and " +
-                                                   std::to_string(n) + " drawn subjects of " + set.dataset);
+                        return har_result_json(train_on_sets({{&synthetic, path("synth/" + row)}, {&real, set.dataset}},
+                                                             real, draws(), sets(protocol, 1, n), &pretrained),
+                                               std::string(har_protocol_name(protocol)) + ": " + source.name +
+                                                   "'s synthetic " + set.name + " and " + std::to_string(n) +
+                                                   " drawn subjects of " + set.dataset);
                     }));
                 }
                 curve.arms.push_back(arm);
@@ -104,9 +116,11 @@ private:
     std::string path(const std::string& relative) const { return (fs::path(out_) / relative).string(); }
 
     int count(int k, size_t subjects, const ExperimentRealSet& set) const {
-        const int n = k == ExperimentLowData::kAllSubjects ? static_cast<int>(subjects) - c_.low_data.all_test_subjects : k;
+        const int n =
+            k == ExperimentLowData::kAllSubjects ? static_cast<int>(subjects) - c_.low_data.all_test_subjects : k;
         if (n < 1 || static_cast<size_t>(n) >= subjects)
-            throw Error("experiment", "low_data.train_subjects", "K from 1 to " + std::to_string(subjects - 1) + " for " + set.name, label_of(k));
+            throw Error("experiment", "low_data.train_subjects",
+                        "K from 1 to " + std::to_string(subjects - 1) + " for " + set.name, label_of(k));
         return n;
     }
 
@@ -154,9 +168,10 @@ std::string percent(const LowDataPoint* p) {
 
 }  // namespace
 
-std::vector<LowDataCurve> run_low_data(const ExperimentConfig& c, const std::string& out,
-                                       const std::function<const WindowSet&(const std::string&, const ExperimentRealSet&)>& windows,
-                                       const std::function<void(const std::string&)>& log) {
+std::vector<LowDataCurve> run_low_data(
+    const ExperimentConfig& c, const std::string& out,
+    const std::function<const WindowSet&(const std::string&, const ExperimentRealSet&)>& windows,
+    const std::function<void(const std::string&)>& log) {
     LowDataRun run(c, out, windows, log);
     std::vector<LowDataCurve> curves;
     for (const ExperimentRealSet& set : c.real_sets) curves.push_back(run.curve(set));
@@ -169,8 +184,10 @@ std::string low_data_markdown(const std::vector<LowDataCurve>& curves) {
     std::string md;
     for (const LowDataCurve& c : curves) {
         md += "## " + c.real_set + ": balanced accuracy (%) against K real training subjects\n\n";
-        md += "mean ± sd over the draws of subjects (their number in brackets), tested on the subjects not drawn; K = 0 is "
-              "synthetic only.\n\n| K |";
+        md +=
+            "mean ± sd over the draws of subjects (their number in brackets), tested on the subjects not drawn; K = 0 "
+            "is "
+            "synthetic only.\n\n| K |";
         std::string rule = "|---|";
         for (const LowDataArm& a : c.arms) md += " " + a.name + " |", rule += "---|";
         md += " best synthetic arm − real only |\n" + rule + "---|\n";
@@ -183,7 +200,8 @@ std::string low_data_markdown(const std::vector<LowDataCurve>& curves) {
             }
             const LowDataPoint* real = c.arms.front().at(label);
             char gain[32] = "";
-            if (real && best >= 0) std::snprintf(gain, sizeof gain, "%+.1f", 100 * (best - real->balanced_accuracy().mean));
+            if (real && best >= 0)
+                std::snprintf(gain, sizeof gain, "%+.1f", 100 * (best - real->balanced_accuracy().mean));
             md += " " + std::string(gain) + " |\n";
         }
         md += "\nEach draw (balanced accuracy, %):\n\n";

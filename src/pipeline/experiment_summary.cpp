@@ -1,4 +1,5 @@
-// summary.json and summary.md of the experiment (pipeline/experiment.hpp): the tables docs/results.md and the model cards quote.
+// summary.json and summary.md of the experiment (pipeline/experiment.hpp): the tables docs/results.md and the model
+// cards quote.
 #include <algorithm>
 #include <cstdio>
 #include <map>
@@ -33,7 +34,8 @@ std::vector<std::string> real_sets(const ExperimentSummary& s) {
     return sets;
 }
 
-std::string table_head(const std::string& first, const std::vector<std::string>& sets, const ExperimentSummary& s, bool classes) {
+std::string table_head(const std::string& first, const std::vector<std::string>& sets, const ExperimentSummary& s,
+                       bool classes) {
     std::string head = "| " + first + " |", rule = "|---|";
     for (const std::string& set : sets) {
         std::string label = set;
@@ -48,19 +50,30 @@ std::string table_head(const std::string& first, const std::vector<std::string>&
 }  // namespace
 
 nlohmann::json experiment_summary_json(const ExperimentSummary& s) {
-    nlohmann::json j = {{"har_repeats", s.har_repeats}, {"har_rounds_done", s.har_rounds_done}, {"rows", nlohmann::json::array()},
+    nlohmann::json j = {{"har_repeats", s.har_repeats},
+                        {"har_rounds_done", s.har_rounds_done},
+                        {"rows", nlohmann::json::array()},
                         {"ceilings", nlohmann::json::array()}};
     for (const ExperimentRow& r : s.rows)
-        j["rows"].push_back({{"source", r.source}, {"model", r.model}, {"real_set", r.real_set}, {"classes", r.classes}, {"chance", r.chance},
-                             {"balanced_accuracy", score_summary_json(r.balanced_accuracy)}, {"macro_f1", score_summary_json(r.macro_f1)},
-                             {"train_windows", r.train_windows}, {"test_windows", r.test_windows},
+        j["rows"].push_back({{"source", r.source},
+                             {"model", r.model},
+                             {"real_set", r.real_set},
+                             {"classes", r.classes},
+                             {"chance", r.chance},
+                             {"balanced_accuracy", score_summary_json(r.balanced_accuracy)},
+                             {"macro_f1", score_summary_json(r.macro_f1)},
+                             {"train_windows", r.train_windows},
+                             {"test_windows", r.test_windows},
                              {"two_sample_balanced_accuracy", r.two_sample_balanced_accuracy}});
     for (const ExperimentCeiling& c : s.ceilings)
-        j["ceilings"].push_back({{"real_set", c.real_set}, {"description", c.description}, {"classes", c.classes},
+        j["ceilings"].push_back({{"real_set", c.real_set},
+                                 {"description", c.description},
+                                 {"classes", c.classes},
                                  {"balanced_accuracy", score_summary_json(c.balanced_accuracy)}});
     if (!s.lacc_before.empty()) {
         nlohmann::json groups = nlohmann::json::object();
-        for (const auto& [group, g] : s.lacc_groups) groups[group] = {{"samples", g.samples}, {"change_percent", g.change_percent}};
+        for (const auto& [group, g] : s.lacc_groups)
+            groups[group] = {{"samples", g.samples}, {"change_percent", g.change_percent}};
         j["lacc"] = {{"before", s.lacc_before}, {"after", s.lacc_after}, {"groups", groups}};
     }
     return j;
@@ -74,13 +87,15 @@ std::string experiment_summary_markdown(const ExperimentSummary& s) {
         if (!cell.count(r.source)) sources.push_back(r.source);
         cell[r.source][r.real_set] = &r;
     }
-    std::string md = "## Synthetic-to-real HAR: DeepConvLSTM trained only on synthetic data, balanced accuracy on the real set\n\n";
+    std::string md =
+        "## Synthetic-to-real HAR: DeepConvLSTM trained only on synthetic data, balanced accuracy on the real set\n\n";
     md += "mean ± sd over the trainings (their number in brackets); " + std::to_string(s.har_rounds_done) + " of " +
           std::to_string(s.har_repeats) + " repeats done.\n\n";
     md += table_head("training data", sets, s, true);
     for (const std::string& source : sources) {
         md += "| " + source + " (" + cell[source].begin()->second->model + ") |";
-        for (const std::string& set : sets) md += " " + (cell[source].count(set) ? percent(cell[source][set]->balanced_accuracy) : "") + " |";
+        for (const std::string& set : sets)
+            md += " " + (cell[source].count(set) ? percent(cell[source][set]->balanced_accuracy) : "") + " |";
         md += "\n";
     }
     md += "| real-to-real ceiling (real training data) |";
@@ -95,19 +110,24 @@ std::string experiment_summary_markdown(const ExperimentSummary& s) {
     md += "\n\nPaper (RealWorld, 8 classes, 10 repeats): MDM " + number(kPaperHarMdm, "%.1f %%") + ", MDM + L_acc " +
           number(kPaperHarMdmLacc, "%.1f %%") + ".\n\n";
 
-    md += "## Real vs synthetic: classifier two-sample test on catch22 features (balanced accuracy; 0.5 = indistinguishable)\n\n";
+    md +=
+        "## Real vs synthetic: classifier two-sample test on catch22 features (balanced accuracy; 0.5 = "
+        "indistinguishable)\n\n";
     md += table_head("training data", sets, s, false);
     for (const std::string& source : sources) {
         md += "| " + source + " |";
         for (const std::string& set : sets)
-            md += " " + (cell[source].count(set) ? number(cell[source][set]->two_sample_balanced_accuracy, "%.3f") : "") + " |";
+            md += " " +
+                  (cell[source].count(set) ? number(cell[source][set]->two_sample_balanced_accuracy, "%.3f") : "") +
+                  " |";
         md += "\n";
     }
     if (!s.lacc_before.empty()) {
         md += "\n## L_acc of " + s.lacc_after + " against " + s.lacc_before +
               " on the same clips and draws, per activity category\n\n| category | samples | change |\n|---|---|---|\n";
         for (const auto& [group, g] : s.lacc_groups)
-            md += "| " + group + " | " + number(g.samples, "%.0f") + " | " + number(g.change_percent, "%+.1f %%") + " |\n";
+            md += "| " + group + " | " + number(g.samples, "%.0f") + " | " + number(g.change_percent, "%+.1f %%") +
+                  " |\n";
         md += "\nPaper (HumanML3D test set): L_acc " + number(kPaperLaccChange, "%.1f %%") + ".\n";
     }
     return md;

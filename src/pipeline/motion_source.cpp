@@ -34,20 +34,24 @@ public:
         model_->caption_anchor_weight(sampling_.caption_anchor);  // refused here, before a synthesis writes anything
     }
 
-    std::vector<JointSequence> generate(const std::vector<std::string>& prompts, const std::vector<std::string>& activities,
-                                        const std::vector<uint64_t>& seeds, int frames) override {
+    std::vector<JointSequence> generate(const std::vector<std::string>& prompts,
+                                        const std::vector<std::string>& activities, const std::vector<uint64_t>& seeds,
+                                        int frames) override {
         return generate_from(prompts, activities, seeds, frames, {}, 1.0);
     }
 
     // From noised start motions (the hybrid), or from pure noise when `starts` is empty. The activity asked
     // (the label, else the prompt's words) chooses the captions of the model's caption anchor.
-    std::vector<JointSequence> generate_from(const std::vector<std::string>& prompts, const std::vector<std::string>& activities,
-                                             const std::vector<uint64_t>& seeds, int frames, std::vector<FeatureMatrix> starts, double strength) {
+    std::vector<JointSequence> generate_from(const std::vector<std::string>& prompts,
+                                             const std::vector<std::string>& activities,
+                                             const std::vector<uint64_t>& seeds, int frames,
+                                             std::vector<FeatureMatrix> starts, double strength) {
         SampleOptions o = sampling_;
         o.frames = frames;
         o.seeds = seeds;
         o.activities.clear();
-        for (size_t i = 0; i < prompts.size(); ++i) o.activities.push_back(activity_asked(activities.empty() ? "" : activities[i], prompts[i]));
+        for (size_t i = 0; i < prompts.size(); ++i)
+            o.activities.push_back(activity_asked(activities.empty() ? "" : activities[i], prompts[i]));
         o.start_motions = std::move(starts);
         o.strength = strength;
         std::vector<JointSequence> out;
@@ -56,9 +60,14 @@ public:
     }
 
     nlohmann::json describe() const override {
-        return {{"kind", "diffusion"}, {"model", dir_}, {"training_step", model_->meta.value("training", nlohmann::json::object()).value("step", 0)},
-                {"sampler", sampler_name(sampling_.sampler)}, {"steps", denoiser_calls(sampling_.sampler, sampling_.steps, model_->schedule.steps)},
-                {"guidance", sampling_.guidance}, {"eta", sampling_.eta}, {"caption_anchor", model_->caption_anchor_weight(sampling_.caption_anchor)},
+        return {{"kind", "diffusion"},
+                {"model", dir_},
+                {"training_step", model_->meta.value("training", nlohmann::json::object()).value("step", 0)},
+                {"sampler", sampler_name(sampling_.sampler)},
+                {"steps", denoiser_calls(sampling_.sampler, sampling_.steps, model_->schedule.steps)},
+                {"guidance", sampling_.guidance},
+                {"eta", sampling_.eta},
+                {"caption_anchor", model_->caption_anchor_weight(sampling_.caption_anchor)},
                 {"caption_anchor_neighbours", model_->anchor.neighbours}};
     }
 
@@ -102,8 +111,8 @@ bool has_measured_captions(const std::string& dataset) {
     const std::string path = dataset + "/summary.json";
     if (!std::filesystem::exists(path)) return false;
     const nlohmann::json summary = read_json_file(path);
-    return summary.is_object() && summary.contains("measured_captions") && summary.at("measured_captions").is_number() &&
-           summary.at("measured_captions").get<double>() > 0;
+    return summary.is_object() && summary.contains("measured_captions") &&
+           summary.at("measured_captions").is_number() && summary.at("measured_captions").get<double>() > 0;
 }
 
 // Every copy clips.csv names, checked before any draw: its rate positive, its start within one capture frame
@@ -121,9 +130,11 @@ std::map<std::string, CaptureCopy> capture_copies(const std::string& dataset) {
         const std::string row = path + " row " + t.rows[r][id];
         if (!(c.fps > 0 && c.fps <= 1000)) throw Error(row, "capture_fps", "a frame rate in (0, 1000]", t.rows[r][fps]);
         if (!(c.start_s > -1 / c.fps - 1e-9 && c.start_s <= 1e-9))
-            throw Error(row, "capture_start_s", "within one capture frame before the clip's start, in (-1/capture_fps, 0]", t.rows[r][start]);
+            throw Error(row, "capture_start_s",
+                        "within one capture frame before the clip's start, in (-1/capture_fps, 0]", t.rows[r][start]);
         const std::string file = dataset + "/capture_joints/" + t.rows[r][id] + ".npy";
-        if (!std::filesystem::exists(file)) throw Error(file, "capture_joints", "the capture-rate copy clips.csv names (t2imu data build)");
+        if (!std::filesystem::exists(file))
+            throw Error(file, "capture_joints", "the capture-rate copy clips.csv names (t2imu data build)");
         out[t.rows[r][id]] = c;
     }
     return out;
@@ -134,7 +145,8 @@ std::map<std::string, CaptureCopy> capture_copies(const std::string& dataset) {
 // shows the clip at (a + (start + g 20 / fps) factor) / 20 s. The last frame is at or after the draw's last, less
 // than a capture frame later, so the recordings are not shorter than the 20 fps ones; where that passes the copy's
 // end (at or after the clip's, dataset_builder.hpp), it holds the copy's last frame.
-JointSequence capture_rate_crop(const JointSequence& copy, const CaptureCopy& c, int a, double factor, int start, int frames) {
+JointSequence capture_rate_crop(const JointSequence& copy, const CaptureCopy& c, int a, double factor, int start,
+                                int frames) {
     const int n = static_cast<int>(std::ceil((frames - 1) * c.fps / 20.0 - 1e-6)) + 1;
     JointSequence out(n, copy.num_joints, c.fps);
     for (int g = 0; g < n; ++g) {
@@ -149,17 +161,25 @@ int span_start(const std::string& id) {
     const size_t hash = id.find('#');
     if (hash == std::string::npos) return 0;
     const size_t dash = id.find('-', hash);  // "40-120": the span's first frame before the dash
-    return static_cast<int>(integer_in(id.substr(hash + 1, dash == std::string::npos ? std::string::npos : dash - hash - 1), 0, 1000000, id, "span start"));
+    return static_cast<int>(
+        integer_in(id.substr(hash + 1, dash == std::string::npos ? std::string::npos : dash - hash - 1), 0, 1000000, id,
+                   "span start"));
 }
 
 enum class Tier { tags_and_classifier, tags, any };
-const char* tier_name(Tier t) { return t == Tier::tags_and_classifier ? "tags+classifier" : t == Tier::tags ? "tags" : "any"; }
+const char* tier_name(Tier t) {
+    return t == Tier::tags_and_classifier ? "tags+classifier" : t == Tier::tags ? "tags" : "any";
+}
 
 class RetrievalSource : public MotionSource {
 public:
     RetrievalSource(const std::string& dataset, const std::string& vocab, const std::string& activity_reference)
-        : dataset_(dataset), vocab_(WordVectors::load(vocab.empty() ? default_vocab() : vocab)), sif_(vocab_, 1e-4),
-          clips_(Hml3dDataset(dataset, "train").clips()), capture_(capture_copies(dataset)), match_attributes_(has_measured_captions(dataset)) {
+        : dataset_(dataset),
+          vocab_(WordVectors::load(vocab.empty() ? default_vocab() : vocab)),
+          sif_(vocab_, 1e-4),
+          clips_(Hml3dDataset(dataset, "train").clips()),
+          capture_(capture_copies(dataset)),
+          match_attributes_(has_measured_captions(dataset)) {
         if (clips_.empty()) throw Error(dataset, "train split", "at least one clip to retrieve");
         const auto tags = read_clip_activities(dataset);
         std::optional<MotionActivityClassifier> classifier;
@@ -167,25 +187,29 @@ public:
         for (const MotionClip& c : clips_) {
             std::vector<Eigen::VectorXd> e;
             std::vector<std::vector<std::string>> named;
-            for (const CaptionLine& l : c.captions) e.push_back(sif_.embed(l.caption)), named.push_back(attributes_asked(l.caption));
+            for (const CaptionLine& l : c.captions)
+                e.push_back(sif_.embed(l.caption)), named.push_back(attributes_asked(l.caption));
             caption_embeddings_.push_back(std::move(e));
             caption_attributes_.push_back(std::move(named));
             const auto t = tags.find(clip_file_id(c.id));
             tags_.push_back(t == tags.end() ? std::vector<std::string>{} : t->second);
-            shown_.push_back(classifier ? classifier->classify(describe_motion(recover_from_ric(c.features))).best : "");
+            shown_.push_back(classifier ? classifier->classify(describe_motion(recover_from_ric(c.features))).best
+                                        : "");
         }
         if (classifier) classes_ = classifier->classes();
         std::vector<Prompt> captions;  // each caption under each of its clip's activities, for coverage
         for (size_t i = 0; i < clips_.size(); ++i)
             for (const CaptionLine& l : clips_[i].captions)
-                for (const std::string& tag : tags_[i].empty() ? std::vector<std::string>{"other"} : tags_[i]) captions.push_back({tag, l.caption});
+                for (const std::string& tag : tags_[i].empty() ? std::vector<std::string>{"other"} : tags_[i])
+                    captions.push_back({tag, l.caption});
         index_ = std::make_unique<CaptionIndex>(vocab_, captions, dataset);
     }
 
     const CaptionIndex* caption_index() const override { return index_.get(); }
 
-    std::vector<JointSequence> generate(const std::vector<std::string>& prompts, const std::vector<std::string>& activities,
-                                        const std::vector<uint64_t>& seeds, int frames) override {
+    std::vector<JointSequence> generate(const std::vector<std::string>& prompts,
+                                        const std::vector<std::string>& activities, const std::vector<uint64_t>& seeds,
+                                        int frames) override {
         if (seeds.size() != prompts.size() || activities.size() != prompts.size())
             throw Error("retrieval", "seeds, activities", "one per prompt");
         std::vector<JointSequence> out;
@@ -203,15 +227,24 @@ public:
             const int start = std::uniform_int_distribution<int>(0, warped.num_frames - n)(rng);
             out.push_back(slice_frames(warped, start, start + n));
             capture_rate_.push_back(capture_rate_draw(clips_[pick].id, factor, start, n));
-            records_.push_back({{"clip", clips_[pick].id}, {"tags", tags_[pick]}, {"classifier", shown_[pick]},
-                                {"activity_asked", asked}, {"tier", tier_name(tier)}, {"tags_show_activity", tagged(pick, asked)}});
+            records_.push_back({{"clip", clips_[pick].id},
+                                {"tags", tags_[pick]},
+                                {"classifier", shown_[pick]},
+                                {"activity_asked", asked},
+                                {"tier", tier_name(tier)},
+                                {"tags_show_activity", tagged(pick, asked)}});
         }
         return out;
     }
 
     nlohmann::json describe() const override {
-        return {{"kind", "retrieval"}, {"dataset", dataset_}, {"split", "train"}, {"clips", clips_.size()},
-                {"top_k", kRetrievalTopK}, {"time_warp", kRetrievalWarp}, {"activity_classifier", !classes_.empty()},
+        return {{"kind", "retrieval"},
+                {"dataset", dataset_},
+                {"split", "train"},
+                {"clips", clips_.size()},
+                {"top_k", kRetrievalTopK},
+                {"time_warp", kRetrievalWarp},
+                {"activity_classifier", !classes_.empty()},
                 {"match_attributes", match_attributes_}};
     }
 
@@ -253,8 +286,14 @@ private:
             tags_only.push_back(c);
             if (judged && shows_activity(shown_[c], asked)) both.push_back(c);
         }
-        if (!both.empty()) { *tier = Tier::tags_and_classifier; return both; }
-        if (!tags_only.empty()) { *tier = Tier::tags; return tags_only; }
+        if (!both.empty()) {
+            *tier = Tier::tags_and_classifier;
+            return both;
+        }
+        if (!tags_only.empty()) {
+            *tier = Tier::tags;
+            return tags_only;
+        }
         *tier = Tier::any;
         return all;
     }
@@ -263,13 +302,19 @@ private:
     // anchor ranks, text/caption_index.hpp).
     std::vector<size_t> nearest_clips(const std::string& prompt, const std::vector<size_t>& candidates) const {
         const Eigen::VectorXd p = sif_.embed(prompt);
-        const std::vector<std::string> asked = match_attributes_ ? attributes_asked(prompt) : std::vector<std::string>{};
-        struct Scored { size_t shared; double similarity; size_t clip; };
+        const std::vector<std::string> asked =
+            match_attributes_ ? attributes_asked(prompt) : std::vector<std::string>{};
+        struct Scored {
+            size_t shared;
+            double similarity;
+            size_t clip;
+        };
         std::vector<Scored> scored;
         for (size_t c : candidates) {
             Scored best{0, -2, c};
             for (size_t j = 0; j < caption_embeddings_[c].size(); ++j) {
-                const Scored s{attributes_shared(asked, caption_attributes_[c][j]), cosine_similarity(p, caption_embeddings_[c][j]), c};
+                const Scored s{attributes_shared(asked, caption_attributes_[c][j]),
+                               cosine_similarity(p, caption_embeddings_[c][j]), c};
                 if (s.shared > best.shared || (s.shared == best.shared && s.similarity > best.similarity)) best = s;
             }
             scored.push_back(best);
@@ -281,7 +326,9 @@ private:
         std::sort(scored.begin(), scored.end(), better);
         // The k best and every clip as good as the k-th (identical captions embed identically).
         size_t k = std::min<size_t>(kRetrievalTopK, scored.size());
-        while (k < scored.size() && scored[k].shared == scored[k - 1].shared && scored[k].similarity >= scored[k - 1].similarity - 1e-9) ++k;
+        while (k < scored.size() && scored[k].shared == scored[k - 1].shared &&
+               scored[k].similarity >= scored[k - 1].similarity - 1e-9)
+            ++k;
         std::vector<size_t> out;
         for (size_t i = 0; i < k; ++i) out.push_back(scored[i].clip);
         return out;
@@ -292,14 +339,15 @@ private:
     SifEncoder sif_;
     std::vector<MotionClip> clips_;
     std::vector<std::vector<Eigen::VectorXd>> caption_embeddings_;
-    std::vector<std::vector<std::vector<std::string>>> caption_attributes_;  // per clip, per caption: the attributes it names
-    std::vector<std::vector<std::string>> tags_;  // canonical activity names per clip
-    std::vector<std::string> shown_;              // the classifier's class per clip ("" without one)
-    std::vector<std::string> classes_;            // the classifier's classes (empty without one)
-    std::unique_ptr<CaptionIndex> index_;         // every caption under its clip's activities
-    std::map<std::string, CaptureCopy> capture_;   // by clip file id: the clips with a capture-rate copy
-    bool match_attributes_ = false;                // rank by attribute words first (has_measured_captions)
-    std::vector<nlohmann::json> records_;         // per motion of the last generate()
+    std::vector<std::vector<std::vector<std::string>>>
+        caption_attributes_;                                  // per clip, per caption: the attributes it names
+    std::vector<std::vector<std::string>> tags_;              // canonical activity names per clip
+    std::vector<std::string> shown_;                          // the classifier's class per clip ("" without one)
+    std::vector<std::string> classes_;                        // the classifier's classes (empty without one)
+    std::unique_ptr<CaptionIndex> index_;                     // every caption under its clip's activities
+    std::map<std::string, CaptureCopy> capture_;              // by clip file id: the clips with a capture-rate copy
+    bool match_attributes_ = false;                           // rank by attribute words first (has_measured_captions)
+    std::vector<nlohmann::json> records_;                     // per motion of the last generate()
     std::vector<std::optional<JointSequence>> capture_rate_;  // likewise
 };
 
@@ -307,12 +355,13 @@ private:
 // holds its last frame) noised to strength s and denoised with the prompt (SampleOptions::start_motions).
 class HybridSource : public MotionSource {
 public:
-    HybridSource(const std::string& model, const std::string& dataset, double strength, const SampleOptions& sampling, const std::string& device,
-                 const std::string& vocab, const std::string& activity_reference)
+    HybridSource(const std::string& model, const std::string& dataset, double strength, const SampleOptions& sampling,
+                 const std::string& device, const std::string& vocab, const std::string& activity_reference)
         : retrieval_(dataset, vocab, activity_reference), diffusion_(model, sampling, device), strength_(strength) {}
 
-    std::vector<JointSequence> generate(const std::vector<std::string>& prompts, const std::vector<std::string>& activities,
-                                        const std::vector<uint64_t>& seeds, int frames) override {
+    std::vector<JointSequence> generate(const std::vector<std::string>& prompts,
+                                        const std::vector<std::string>& activities, const std::vector<uint64_t>& seeds,
+                                        int frames) override {
         std::vector<FeatureMatrix> starts;
         for (const JointSequence& clip : retrieval_.generate(prompts, activities, seeds, frames + 1)) {
             const FeatureMatrix f = joints_to_features(clip);  // one row fewer than the joints
@@ -344,18 +393,22 @@ private:
 std::tuple<std::string, std::string, double> parse_hybrid(const std::string& rest) {
     const size_t a = rest.find(','), b = a == std::string::npos ? a : rest.find(',', a + 1);
     const std::string expected = "hybrid:MODEL_FOLDER,DATASET,STRENGTH with STRENGTH above 0 and at most 1";
-    if (b == std::string::npos || rest.find(',', b + 1) != std::string::npos) throw Error("--model", "hybrid", expected, "hybrid:" + rest);
+    if (b == std::string::npos || rest.find(',', b + 1) != std::string::npos)
+        throw Error("--model", "hybrid", expected, "hybrid:" + rest);
     const std::optional<double> strength = parse_number(rest.substr(b + 1));
-    if (!strength || !(*strength > 0 && *strength <= 1)) throw Error("--model", "hybrid strength", expected, rest.substr(b + 1));
+    if (!strength || !(*strength > 0 && *strength <= 1))
+        throw Error("--model", "hybrid strength", expected, rest.substr(b + 1));
     return {rest.substr(0, a), rest.substr(a + 1, b - a - 1), *strength};
 }
 
 }  // namespace
 
-std::unique_ptr<MotionSource> open_motion_source(const std::string& spec, const SampleOptions& sampling, const std::string& device,
-                                                 const std::string& vocab, const std::string& activity_reference) {
+std::unique_ptr<MotionSource> open_motion_source(const std::string& spec, const SampleOptions& sampling,
+                                                 const std::string& device, const std::string& vocab,
+                                                 const std::string& activity_reference) {
     const std::string prefix = "retrieval:", hybrid = "hybrid:";
-    if (spec.rfind(prefix, 0) == 0) return std::make_unique<RetrievalSource>(spec.substr(prefix.size()), vocab, activity_reference);
+    if (spec.rfind(prefix, 0) == 0)
+        return std::make_unique<RetrievalSource>(spec.substr(prefix.size()), vocab, activity_reference);
     if (spec.rfind(hybrid, 0) == 0) {
         const auto [model, dataset, strength] = parse_hybrid(spec.substr(hybrid.size()));
         return std::make_unique<HybridSource>(model, dataset, strength, sampling, device, vocab, activity_reference);

@@ -8,17 +8,18 @@
 // (activity_names.hpp's canonical name: SisFall's "jogging" asks for running), else the one the prompt's words
 // name ("sprints" -> running, "goes upstairs" -> stairs_up). Candidates come in tiers, the first non-empty one
 // used: clips whose activity tags (DATASET/clips.csv) name the activity and whose motion the activity classifier
-// places in that activity (when a classifier is given and has a class for the activity); clips whose tags name it; every clip (no activity asked or none tagged).
-// Within the tier each clip scores by its best caption: the SIF similarity (GloVe, a = 1e-4, as the activity
-// categoriser), and over a build with measured captions first the most of the prompt's attributes it names
-// (slowly, left, then: data/measured_captions.hpp); a sample takes one of the kRetrievalTopK best at random (with every clip
-// tied with the k-th: derived clips share their captions, hundreds to a sentence, and a tie broken by clip order
-// drew every stairs motion from the first-listed recordings' acted walks), time-warps it by
-// a factor in [1 - kRetrievalWarp, 1 + kRetrievalWarp] (the dataset holds the left-right mirrors already) and
-// crops a random window of the asked length (a shorter clip is used whole). Nothing is invented: every frame is
-// captured (or, for clips.csv's source_dataset "edited", derived) motion, resampled. A clip with a capture-rate
-// copy (captured, or derived from a capture at that rate) gives that copy's same span too (capture_rate_motion;
-// Catmull-Rom between its frames), so the virtual sensors can see the motion between 20 fps frames.
+// places in that activity (when a classifier is given and has a class for the activity); clips whose tags name it;
+// every clip (no activity asked or none tagged). Within the tier each clip scores by its best caption: the SIF
+// similarity (GloVe, a = 1e-4, as the activity categoriser), and over a build with measured captions first the most of
+// the prompt's attributes it names (slowly, left, then: data/measured_captions.hpp); a sample takes one of the
+// kRetrievalTopK best at random (with every clip tied with the k-th: derived clips share their captions, hundreds to a
+// sentence, and a tie broken by clip order drew every stairs motion from the first-listed recordings' acted walks),
+// time-warps it by a factor in [1 - kRetrievalWarp, 1 + kRetrievalWarp] (the dataset holds the left-right mirrors
+// already) and crops a random window of the asked length (a shorter clip is used whole). Nothing is invented: every
+// frame is captured (or, for clips.csv's source_dataset "edited", derived) motion, resampled. A clip with a
+// capture-rate copy (captured, or derived from a capture at that rate) gives that copy's same span too
+// (capture_rate_motion; Catmull-Rom between its frames), so the virtual sensors can see the motion between 20 fps
+// frames.
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -42,7 +43,8 @@ public:
     // most). Prompt i draws only from seeds[i], so a motion does not depend on the other prompts of the call.
     // activities[i]: the prompt set's label of prompt i ("" = unknown): the activity retrieval asks for, and the one
     // whose captions a model's caption anchor blends in (text_to_motion.hpp).
-    virtual std::vector<JointSequence> generate(const std::vector<std::string>& prompts, const std::vector<std::string>& activities,
+    virtual std::vector<JointSequence> generate(const std::vector<std::string>& prompts,
+                                                const std::vector<std::string>& activities,
                                                 const std::vector<uint64_t>& seeds, int frames) = 0;
     // What produced the motions, for the synthesis record (model folder, training step, sampler...).
     virtual nlohmann::json describe() const = 0;
@@ -60,11 +62,13 @@ public:
 
 // `spec`: a model folder, retrieval:DATASET, or hybrid:MODEL_FOLDER,DATASET,STRENGTH: the clip retrieval would
 // give, noised to round(STRENGTH (T-1)) and finished by the model with the prompt (SDEdit; STRENGTH in (0, 1],
-// 1 = the model alone from noise, small = the captured clip barely changed; draw records are retrieval's). `sampling` holds the sampler settings of a model (its seed
-// fields are ignored: generate() takes the seeds). `vocab`: the GloVe vocabulary for retrieval ("" = the
-// default: $T2IMU_VOCAB, else cache/text/glove-100k.safetensors). `activity_reference`: the motion activity
-// classifier's reference CSV that retrieval checks candidates with ("" = activity tags alone).
-std::unique_ptr<MotionSource> open_motion_source(const std::string& spec, const SampleOptions& sampling, const std::string& device,
-                                                 const std::string& vocab = "", const std::string& activity_reference = "");
+// 1 = the model alone from noise, small = the captured clip barely changed; draw records are retrieval's). `sampling`
+// holds the sampler settings of a model (its seed fields are ignored: generate() takes the seeds). `vocab`: the GloVe
+// vocabulary for retrieval ("" = the default: $T2IMU_VOCAB, else cache/text/glove-100k.safetensors).
+// `activity_reference`: the motion activity classifier's reference CSV that retrieval checks candidates with ("" =
+// activity tags alone).
+std::unique_ptr<MotionSource> open_motion_source(const std::string& spec, const SampleOptions& sampling,
+                                                 const std::string& device, const std::string& vocab = "",
+                                                 const std::string& activity_reference = "");
 
 }  // namespace t2imu

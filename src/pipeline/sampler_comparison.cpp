@@ -29,7 +29,8 @@ std::vector<SamplerConfig> parse_sampler_configs(const std::string& text) {
         c.sampler = parse_sampler(item.substr(0, colon), "--samplers");
         if (colon != std::string::npos) {
             const std::optional<long long> steps = parse_integer(item.substr(colon + 1));
-            if (!steps || *steps < 2 || *steps > 10000) throw Error("--samplers", "entry", "NAME:STEPS with STEPS from 2 to 10000", item);
+            if (!steps || *steps < 2 || *steps > 10000)
+                throw Error("--samplers", "entry", "NAME:STEPS with STEPS from 2 to 10000", item);
             c.steps = static_cast<int>(*steps);
         }
         const bool ddpm = c.sampler == Sampler::ddpm;
@@ -61,7 +62,8 @@ double mean_joint_acceleration_squared(const JointSequence& m) {
     double s = 0;
     const double fps2 = m.fps * m.fps;
     for (int f = 1; f + 1 < m.num_frames; ++f)
-        for (int j = 0; j < m.num_joints; ++j) s += ((m.at(f + 1, j) - 2 * m.at(f, j) + m.at(f - 1, j)) * fps2).squaredNorm();
+        for (int j = 0; j < m.num_joints; ++j)
+            s += ((m.at(f + 1, j) - 2 * m.at(f, j) + m.at(f - 1, j)) * fps2).squaredNorm();
     return s / static_cast<double>((m.num_frames - 2) * m.num_joints);
 }
 
@@ -77,14 +79,16 @@ double diagonal_frechet(const std::vector<MotionDescriptors>& a, const std::vect
     double s = 0;
     for (size_t i = 0; i < kNumMotionDescriptors; ++i) {
         if (sd_ref[i] <= 0) continue;  // constant over the reference: no scale to measure a shift in
-        s += ((mu[i] - mu_ref[i]) * (mu[i] - mu_ref[i]) + (sd[i] - sd_ref[i]) * (sd[i] - sd_ref[i])) / (sd_ref[i] * sd_ref[i]);
+        s += ((mu[i] - mu_ref[i]) * (mu[i] - mu_ref[i]) + (sd[i] - sd_ref[i]) * (sd[i] - sd_ref[i])) /
+             (sd_ref[i] * sd_ref[i]);
     }
     return s;
 }
 
 // The statistics of motions (de-normalised features); `expected[i]` is motion i's activity class ("" = unchecked).
-SamplerMotions measure(const std::vector<FeatureMatrix>& motions, const FeatureStats& stats, const std::vector<std::string>& expected,
-                       const MotionActivityClassifier* classifier, double min_agreement) {
+SamplerMotions measure(const std::vector<FeatureMatrix>& motions, const FeatureStats& stats,
+                       const std::vector<std::string>& expected, const MotionActivityClassifier* classifier,
+                       double min_agreement) {
     SamplerMotions out;
     const MotionQualityThresholds limits = default_quality_thresholds();
     for (size_t i = 0; i < motions.size(); ++i) {
@@ -153,28 +157,41 @@ void SamplerComparisonOptions::validate() const {
 }
 
 CsvTable compare_samplers(const SamplerComparisonOptions& o, const std::vector<SamplerConfig>& configs) {
-    if (configs.empty() || o.prompts.empty() || o.samples_per_prompt < 1) throw Error("sampler comparison", "input", "samplers and prompts");
+    if (configs.empty() || o.prompts.empty() || o.samples_per_prompt < 1)
+        throw Error("sampler comparison", "input", "samplers and prompts");
     std::unique_ptr<MotionModel> model = load_motion_model(o.model, o.device);
     std::optional<MotionActivityClassifier> classifier;
     if (!o.activity_reference.empty()) classifier = MotionActivityClassifier::load(o.activity_reference);
     CsvTable t;
-    t.header = {"sampler", "denoiser_calls", "motions", "seconds", "motions_per_s", "feature_acc_energy", "feature_acc_energy_ratio",
-                "joint_acc_rms_m_s2", "joint_acc_rms_ratio", "descriptor_distance", "quality_failure_rate", "activity_pass_rate"};
+    t.header = {"sampler",
+                "denoiser_calls",
+                "motions",
+                "seconds",
+                "motions_per_s",
+                "feature_acc_energy",
+                "feature_acc_energy_ratio",
+                "joint_acc_rms_m_s2",
+                "joint_acc_rms_ratio",
+                "descriptor_distance",
+                "quality_failure_rate",
+                "activity_pass_rate"};
     std::optional<SamplerMotions> reference;
     const auto add_row = [&](const std::string& name, const std::string& calls, const SamplerMotions& m) {
         if (!reference) reference = m;
         const double n = static_cast<double>(m.descriptors.size());
         const double energy = mean(m.feature_acc_energy), rms = std::sqrt(mean(m.joint_acc_sq));
-        t.rows.push_back({name, calls, std::to_string(m.descriptors.size()), number(m.seconds), number(n / m.seconds),
-                          number(energy), number(energy / mean(reference->feature_acc_energy)), number(rms),
-                          number(rms / std::sqrt(mean(reference->joint_acc_sq))), number(diagonal_frechet(m.descriptors, reference->descriptors)),
-                          number(m.quality_failures / n),
-                          number(m.activity_checked > 0 ? static_cast<double>(m.activity_passed) / m.activity_checked : NAN)});
+        t.rows.push_back(
+            {name, calls, std::to_string(m.descriptors.size()), number(m.seconds), number(n / m.seconds),
+             number(energy), number(energy / mean(reference->feature_acc_energy)), number(rms),
+             number(rms / std::sqrt(mean(reference->joint_acc_sq))),
+             number(diagonal_frechet(m.descriptors, reference->descriptors)), number(m.quality_failures / n),
+             number(m.activity_checked > 0 ? static_cast<double>(m.activity_passed) / m.activity_checked : NAN)});
     };
     for (const SamplerConfig& c : configs)
         add_row(c.name(), std::to_string(denoiser_calls(c.sampler, c.steps, model->schedule.steps)),
                 draw(*model, o, c, classifier ? &*classifier : nullptr));
-    if (!o.captured_dataset.empty()) add_row("captured:" + o.captured_split, "", captured(o.captured_dataset, o.captured_split, model->stats));
+    if (!o.captured_dataset.empty())
+        add_row("captured:" + o.captured_split, "", captured(o.captured_dataset, o.captured_split, model->stats));
     return t;
 }
 

@@ -37,17 +37,17 @@ struct SamplerConfig {
 std::vector<SamplerConfig> parse_sampler_configs(const std::string& text);
 
 struct SamplerComparisonOptions {
-    std::string model;                     // model folder
+    std::string model;  // model folder
     std::vector<Prompt> prompts;
-    int samples_per_prompt = 1;            // sample s of prompt p draws from seed + p * samples_per_prompt + s
+    int samples_per_prompt = 1;  // sample s of prompt p draws from seed + p * samples_per_prompt + s
     uint64_t seed = 0;
     int frames = 120;
     double guidance = 2.5;
     int batch = 16;
     std::string device = "cpu";
-    std::string activity_reference;        // "" = no activity column
+    std::string activity_reference;  // "" = no activity column
     double min_activity_agreement = 0.55;
-    std::string captured_dataset;          // "" = no captured row
+    std::string captured_dataset;  // "" = no captured row
     std::string captured_split = "test";
 
     // Throws Error naming the option (--seconds, --guidance, --batch, --samples-per-prompt...) of a value out of

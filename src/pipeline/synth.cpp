@@ -16,13 +16,13 @@
 #include "core/parallel.hpp"
 #include "core/progress.hpp"
 #include "imu/imu_dataset.hpp"
+#include "imu/synth_folder.hpp"
 #include "imu/virtual_imu.hpp"
-#include "motion/bvh_export.hpp"
 #include "motion/activity_names.hpp"
+#include "motion/bvh_export.hpp"
 #include "motion/motion_activity.hpp"
 #include "motion/normalization.hpp"
 #include "pipeline/motion_source.hpp"
-#include "imu/synth_folder.hpp"
 #include "text/prompt_coverage.hpp"
 #include "text/prompt_set.hpp"
 
@@ -46,7 +46,7 @@ struct Drawn {
     std::string activity_shown;         // the activity classifier's answer ("" without a check)
     double activity_agreement = 1;
     std::vector<MarkerAttempt> attempts;  // seed and failures of every attempt
-    json source;                        // the source's record of the draw (retrieval: the clip), or null
+    json source;                          // the source's record of the draw (retrieval: the clip), or null
     bool kept = true;
 };
 
@@ -55,7 +55,8 @@ uint64_t attempt_seed(const SynthOptions& o, int job, int attempt) {
 }
 
 // The activity check of a drawn motion: a failure when the motion shows something far from the prompt's activity.
-void check_activity(const MotionActivityClassifier& classifier, const std::string& expected, double min_agreement, Drawn& d) {
+void check_activity(const MotionActivityClassifier& classifier, const std::string& expected, double min_agreement,
+                    Drawn& d) {
     const ActivityScores s = classifier.classify(describe_motion(d.joints));
     d.activity_shown = s.best;
     d.activity_agreement = s.agreement(expected);
@@ -76,9 +77,9 @@ void keep_best_activity_draw(Drawn& d, std::optional<Drawn>& best) {
 
 // Draws every job of the batch, then again with the next seed those the filter rejects. `expected`: per job, the
 // activity classifier's class for its prompt ("" = not checked).
-std::vector<Drawn> draw_filtered(MotionSource& source, const std::vector<int>& jobs, const std::vector<std::string>& texts,
-                                 const std::vector<std::string>& labels, const std::vector<std::string>& expected,
-                                 const MotionActivityClassifier* classifier,
+std::vector<Drawn> draw_filtered(MotionSource& source, const std::vector<int>& jobs,
+                                 const std::vector<std::string>& texts, const std::vector<std::string>& labels,
+                                 const std::vector<std::string>& expected, const MotionActivityClassifier* classifier,
                                  const SynthOptions& o, double* generate_s, double* score_s) {
     const int frames = frames_for_seconds(o.seconds, "--seconds");
     std::vector<Drawn> out(jobs.size());
@@ -109,12 +110,16 @@ std::vector<Drawn> draw_filtered(MotionSource& source, const std::vector<int>& j
             d.quality = score_motion(d.joints);
             d.failures = quality_failures(d.quality, o.thresholds);
             if (classifier) check_activity(*classifier, expected[pending[p]], o.min_activity_agreement, d);
-            d.attempts.push_back({d.seed, d.failures, classifier ? std::optional<double>(d.activity_agreement) : std::nullopt});
+            d.attempts.push_back(
+                {d.seed, d.failures, classifier ? std::optional<double>(d.activity_agreement) : std::nullopt});
             d.kept = !o.filter || d.failures.empty();
             std::optional<Drawn>& best = best_activity[pending[p]];
-            if (!d.kept && fails_only_activity(d) && (!best || d.activity_agreement > best->activity_agreement)) best = d;
-            if (!d.kept && attempt < o.max_retries) again.push_back(pending[p]);
-            else if (!d.kept && !o.drop_activity_failures) keep_best_activity_draw(d, best);
+            if (!d.kept && fails_only_activity(d) && (!best || d.activity_agreement > best->activity_agreement))
+                best = d;
+            if (!d.kept && attempt < o.max_retries)
+                again.push_back(pending[p]);
+            else if (!d.kept && !o.drop_activity_failures)
+                keep_best_activity_draw(d, best);
         }
         *score_s += since(t0);
         pending = again;
@@ -160,8 +165,8 @@ void clear_job_outputs(const std::string& out, const std::string& name) {
         if (e.path().filename().string().rfind("." + name, 0) == 0) fs::remove(e.path(), ignored);
 }
 
-void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt& prompt, const std::optional<MarkerCoverage>& coverage, int sample,
-               const Drawn& d) {
+void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt& prompt,
+               const std::optional<MarkerCoverage>& coverage, int sample, const Drawn& d) {
     const std::string name = job_name(job);
     clear_job_outputs(o.out, name);
     JobMarker marker;
@@ -172,7 +177,8 @@ void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt&
     if (d.sensor_joints) marker.sensor_motion_fps = d.sensor_joints->fps;
     marker.source_draw = d.source;
     if (!d.activity_shown.empty())
-        marker.activity_check = ActivityCheck{d.activity_shown, d.activity_agreement, d.activity_agreement >= o.min_activity_agreement};
+        marker.activity_check =
+            ActivityCheck{d.activity_shown, d.activity_agreement, d.activity_agreement >= o.min_activity_agreement};
     if (d.kept) {
         write_npy(o.out + "/" + job_joints_file(name), joint_sequence_to_array(d.joints));
         write_bvh(o.out + "/" + job_bvh_file(name), smpl22_to_bvh(d.joints));
@@ -187,7 +193,8 @@ void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt&
             for (size_t s = 0; s < r.mounts.size(); ++s) {
                 const std::string path = job_recordings_dir(name) + "/" + files[s];
                 marker.recordings.push_back({path, r.body.name, r.mounts[s].placement.position, r.signals[s].t.size(),
-                                             static_cast<int64_t>(fs::file_size(o.out + "/" + path)), r.tempo, r.mount_tilts_deg[s]});
+                                             static_cast<int64_t>(fs::file_size(o.out + "/" + path)), r.tempo,
+                                             r.mount_tilts_deg[s]});
             }
         }
     }
@@ -226,19 +233,31 @@ bool job_intact(const std::string& out, int job) {
     return file_whole(out, job_joints_file(name), -1) && file_whole(out, job_bvh_file(name), -1);
 }
 
-json settings_json(const SynthOptions& o, const std::vector<Prompt>& prompts, const json& source, const RealismModel& realism) {
+json settings_json(const SynthOptions& o, const std::vector<Prompt>& prompts, const json& source,
+                   const RealismModel& realism) {
     json p = json::array();
     for (const Prompt& x : prompts) p.push_back({x.activity, x.text});
-    json s = {{"prompts_file", o.prompts}, {"prompts", p}, {"samples_per_prompt", o.samples_per_prompt}, {"source", source},
-            {"seed", o.sampling.seed}, {"seconds", o.seconds}, {"bodies", o.bodies}, {"sensors", o.sensors}, {"noise", o.noise},
-            {"rate_hz", o.rate_hz}, {"placed_on_floor", true}, {"filter", o.filter}, {"max_retries", o.max_retries},
-            {"thresholds", quality_limits(o.thresholds)}};
+    json s = {{"prompts_file", o.prompts},
+              {"prompts", p},
+              {"samples_per_prompt", o.samples_per_prompt},
+              {"source", source},
+              {"seed", o.sampling.seed},
+              {"seconds", o.seconds},
+              {"bodies", o.bodies},
+              {"sensors", o.sensors},
+              {"noise", o.noise},
+              {"rate_hz", o.rate_hz},
+              {"placed_on_floor", true},
+              {"filter", o.filter},
+              {"max_retries", o.max_retries},
+              {"thresholds", quality_limits(o.thresholds)}};
     if (o.realism != "none") s["realism"] = realism.to_json();  // absent: folders from before it stay valid
     if (o.capture_rate) s["capture_rate"] = true;               // likewise
     // placed_on_floor is always true: it makes a resume refuse folders drawn before floor placement existed.
     // activity_check is absent without a check, so folders made before the check existed stay valid.
     if (!o.activity_reference.empty())
-        s["activity_check"] = {{"reference", o.activity_reference}, {"min_agreement", o.min_activity_agreement},
+        s["activity_check"] = {{"reference", o.activity_reference},
+                               {"min_agreement", o.min_activity_agreement},
                                {"on_failure", o.drop_activity_failures ? "drop" : "keep_best"}};
     return s;
 }
@@ -258,11 +277,15 @@ void check_or_write_settings(const std::string& out, const json& settings) {
         for (const auto& [key, value] : settings.items()) {
             const json recorded = recorded_setting(before, key);
             if (recorded != value)
-                throw Error(path, key, value.dump() + " as this run asks (a folder holds one synthesis; use another --out)", recorded.dump());
+                throw Error(path, key,
+                            value.dump() + " as this run asks (a folder holds one synthesis; use another --out)",
+                            recorded.dump());
         }
         for (const auto& [key, value] : before.items())  // a switch on then, off now (realism, capture_rate)
             if (!settings.contains(key))
-                throw Error(path, key, "absent (off) as this run asks (a folder holds one synthesis; use another --out)", value.dump());
+                throw Error(path, key,
+                            "absent (off) as this run asks (a folder holds one synthesis; use another --out)",
+                            value.dump());
         return;
     }
     write_file_atomic(path, settings.dump(1) + "\n");
@@ -278,7 +301,8 @@ SampleOptions synth_sampling_defaults() {
 }
 
 void SynthOptions::validate() const {
-    if (samples_per_prompt < 1) throw Error("synth", "--samples-per-prompt", "at least 1", std::to_string(samples_per_prompt));
+    if (samples_per_prompt < 1)
+        throw Error("synth", "--samples-per-prompt", "at least 1", std::to_string(samples_per_prompt));
     frames_for_seconds(seconds, "--seconds");
     if (shards < 1 || shard < 0 || shard >= shards) throw Error("synth", "--shard", "I/N with 1 <= I <= N");
     if (max_retries < 0) throw Error("synth", "--retries", "0 or more", std::to_string(max_retries));
@@ -309,7 +333,11 @@ void write_manifest(const SynthOptions& o, const std::vector<JobMarker>& markers
             row.position = r.position;
             row.rate_hz = o.rate_hz;
             row.n_samples = r.n_samples;
-            row.extra = {{"source", o.model}, {"prompt", j.prompt}, {"body", r.body}, {"seed", std::to_string(j.seed)}, {"job", j.job}};
+            row.extra = {{"source", o.model},
+                         {"prompt", j.prompt},
+                         {"body", r.body},
+                         {"seed", std::to_string(j.seed)},
+                         {"job", j.job}};
             rows.push_back(std::move(row));
         }
     write_imu_manifest(o.out, rows, {"source", "prompt", "body", "seed", "job"});
@@ -333,7 +361,8 @@ SynthReport synth_report(const std::vector<JobMarker>& markers, int total_jobs, 
                                              shows_activity(j.activity_check->shown, canonical_activity(j.activity));
         }
         if (!j.source_draw.is_null())  // retrieval: whether the retrieved clip's tags name the activity
-            a.shows_activity_by_tags = a.shows_activity_by_tags.value_or(0) + j.source_draw.value("tags_show_activity", false);
+            a.shows_activity_by_tags =
+                a.shows_activity_by_tags.value_or(0) + j.source_draw.value("tags_show_activity", false);
         const bool below = j.kept && j.activity_check && !j.activity_check->passed;
         a.kept_below_activity_agreement += below;
         r.motions_kept += j.kept;
@@ -345,18 +374,23 @@ SynthReport synth_report(const std::vector<JobMarker>& markers, int total_jobs, 
         for (const auto& [name, v] : j.quality) scores[name].push_back(v);
     }
     for (const auto& [name, v] : scores) r.quality_median[name] = median(v);
-    r.jobs = total_jobs, r.jobs_done = static_cast<int>(markers.size()), r.motions_dropped = r.jobs_done - r.motions_kept;
+    r.jobs = total_jobs, r.jobs_done = static_cast<int>(markers.size()),
+    r.motions_dropped = r.jobs_done - r.motions_kept;
     r.this_run = timing;
     return r;
 }
 
 // Per prompt, how the source's captions cover it (text/prompt_coverage.hpp), checked before any output; none for a
 // source without captions.
-std::vector<std::optional<MarkerCoverage>> check_coverage(const MotionSource& source, const std::vector<Prompt>& prompts, const SynthOptions& o) {
+std::vector<std::optional<MarkerCoverage>> check_coverage(const MotionSource& source,
+                                                          const std::vector<Prompt>& prompts, const SynthOptions& o) {
     std::vector<std::optional<MarkerCoverage>> out(prompts.size());
     if (source.caption_index() == nullptr) return out;
-    const std::vector<PromptCoverage> c = check_prompts_covered(*source.caption_index(), prompts, o.prompts, o.require_coverage);
-    for (size_t i = 0; i < prompts.size(); ++i) out[i] = MarkerCoverage{c[i].covered(), c[i].summary(), c[i].nearest, c[i].similarity, c[i].attributes_uncovered};
+    const std::vector<PromptCoverage> c =
+        check_prompts_covered(*source.caption_index(), prompts, o.prompts, o.require_coverage);
+    for (size_t i = 0; i < prompts.size(); ++i)
+        out[i] =
+            MarkerCoverage{c[i].covered(), c[i].summary(), c[i].nearest, c[i].similarity, c[i].attributes_uncovered};
     return out;
 }
 
@@ -372,7 +406,8 @@ SynthReport run_synth(const SynthOptions& o) {
     fold_noise_option(o.noise, &stage.imu.realism);
     stage.imu.seed = o.sampling.seed;
     auto t0 = Clock::now();
-    std::unique_ptr<MotionSource> source = open_motion_source(o.model, o.sampling, o.device, o.vocab, o.activity_reference);
+    std::unique_ptr<MotionSource> source =
+        open_motion_source(o.model, o.sampling, o.device, o.vocab, o.activity_reference);
     std::optional<MotionActivityClassifier> classifier;
     if (!o.activity_reference.empty()) classifier = MotionActivityClassifier::load(o.activity_reference);
     const double load_s = since(t0);
@@ -391,7 +426,8 @@ SynthReport run_synth(const SynthOptions& o) {
     Progress progress("synth", static_cast<size_t>(jobs_to_run), "jobs");
     double generate_s = 0, score_s = 0, imu_s = 0;
     for (const std::vector<int>& jobs : job_groups(first, last, o.sampling.batch)) {
-        if (std::none_of(jobs.begin(), jobs.end(), [&](int k) { return todo[static_cast<size_t>(k - first)]; })) continue;
+        if (std::none_of(jobs.begin(), jobs.end(), [&](int k) { return todo[static_cast<size_t>(k - first)]; }))
+            continue;
         std::vector<std::string> texts, labels, expected;
         for (int k : jobs) {
             const Prompt& prompt = prompts[static_cast<size_t>(k / o.samples_per_prompt)];
@@ -399,7 +435,8 @@ SynthReport run_synth(const SynthOptions& o) {
             labels.push_back(prompt.activity);
             expected.push_back(classifier ? reference_activity(prompt.activity, classifier->classes()) : "");
         }
-        const std::vector<Drawn> drawn = draw_filtered(*source, jobs, texts, labels, expected, classifier ? &*classifier : nullptr, o, &generate_s, &score_s);
+        const std::vector<Drawn> drawn = draw_filtered(*source, jobs, texts, labels, expected,
+                                                       classifier ? &*classifier : nullptr, o, &generate_s, &score_s);
         t0 = Clock::now();
         parallel_for(jobs.size(), o.threads, [&](size_t i) {
             const int k = jobs[i];
@@ -414,8 +451,11 @@ SynthReport run_synth(const SynthOptions& o) {
     t0 = Clock::now();
     const std::vector<JobMarker> markers = read_job_markers(o.out);
     write_manifest(o, markers);
-    SynthReport report = synth_report(markers, total, {jobs_to_run, o.threads, load_s, generate_s, score_s, imu_s, since(t0), since(start), o.device});
-    report.realism = stage.imu.realism.to_json();  // the model in effect; each recording's draws are in its job's marker
+    SynthReport report =
+        synth_report(markers, total,
+                     {jobs_to_run, o.threads, load_s, generate_s, score_s, imu_s, since(t0), since(start), o.device});
+    report.realism =
+        stage.imu.realism.to_json();  // the model in effect; each recording's draws are in its job's marker
     write_synth_report(o.out, report);
     return report;
 }

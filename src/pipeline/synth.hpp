@@ -20,9 +20,9 @@
 // together) are merged by running once more without --shard: every job is done, the manifest is rebuilt.
 //
 // Each drawn motion is first placed on the floor (motion/motion_quality.hpp: place_on_floor), as captured clips are.
-// Quality filter (motion/motion_quality.hpp, and the activity check below): a motion over any threshold is drawn again with the next seed,
-// up to max_retries times; one still failing then is dropped (recorded in its marker and the report), except
-// that one failing only the activity check keeps its best-agreeing draw (see SynthOptions). Seeds:
+// Quality filter (motion/motion_quality.hpp, and the activity check below): a motion over any threshold is drawn again
+// with the next seed, up to max_retries times; one still failing then is dropped (recorded in its marker and the
+// report), except that one failing only the activity check keeps its best-agreeing draw (see SynthOptions). Seeds:
 // attempt a of job k draws from seed + k + a * kSeedStridePerAttempt.
 #pragma once
 #include <cstdint>
@@ -31,27 +31,28 @@
 #include <string>
 
 #include "diffusion/sample_options.hpp"
-#include "motion/motion_quality.hpp"
 #include "imu/synth_folder.hpp"
+#include "motion/motion_quality.hpp"
 
 namespace t2imu {
 
 constexpr uint64_t kSeedStridePerAttempt = 1000003;
 
 // The sampling of t2imu synth and of the experiments: DPM-Solver++ 2M, 50 denoiser calls. Fewer steps smooth the
-// learned default's motions and cost HAR (docs/results.md#sampler-steps-the-main-job-samples-with-50-dpm-solver-steps-not-20-2026-12-06-later;
+// learned default's motions and cost HAR
+// (docs/results.md#sampler-steps-the-main-job-samples-with-50-dpm-solver-steps-not-20-2026-12-06-later;
 // bench/README.md#samplers-quality-against-steps).
 SampleOptions synth_sampling_defaults();
 
 struct SynthOptions {
-    std::string prompts;                 // prompt set file (text/prompt_set.hpp)
+    std::string prompts;  // prompt set file (text/prompt_set.hpp)
     int samples_per_prompt = 1;
-    std::string model = "models/default";  // a model folder, retrieval:DATASET or hybrid:...
-    std::string vocab;                   // GloVe vocabulary for retrieval ("" = default)
+    std::string model = "models/default";                // a model folder, retrieval:DATASET or hybrid:...
+    std::string vocab;                                   // GloVe vocabulary for retrieval ("" = default)
     SampleOptions sampling = synth_sampling_defaults();  // sampler, steps, guidance, seed (of job 0), batch
-    double seconds = 6;                  // motion length (20 fps; at most 9.8 s)
+    double seconds = 6;                                  // motion length (20 fps; at most 9.8 s)
     std::string bodies = "paper8", sensors = "realworld", noise = "none";
-    std::string realism = "none";        // imu/realism.hpp: a preset or a .toml file
+    std::string realism = "none";  // imu/realism.hpp: a preset or a .toml file
     double rate_hz = 50;
     // The virtual sensors see a retrieved captured clip at its capture rate (MotionSource::capture_rate_motion)
     // rather than at 20 fps; motions without a capture-rate copy (derived clips, the models') stay at 20 fps. On by
@@ -68,15 +69,15 @@ struct SynthOptions {
     // Prompts whose activity the reference lacks are not checked. A job whose every draw fails the activity
     // check and nothing else keeps its best-agreeing draw (marker: activity_check.passed false) unless
     // drop_activity_failures: dropping starves exactly the activities the model renders worst.
-    std::string activity_reference;      // "" = no activity check
+    std::string activity_reference;  // "" = no activity check
     double min_activity_agreement = 0.55;
     bool drop_activity_failures = false;
     // A prompt the source's training captions do not cover (text/prompt_coverage.hpp: an activity without
     // captions, an attribute none of its captions names) is an error instead of a warning.
     bool require_coverage = false;
-    int shard = 0, shards = 1;           // this run does shard `shard` (0-based) of `shards`
+    int shard = 0, shards = 1;  // this run does shard `shard` (0-based) of `shards`
     std::string device = "cpu";
-    int threads = 1;                     // workers for the bodies/IMU stage
+    int threads = 1;  // workers for the bodies/IMU stage
     std::string out;
 
     // Throws Error naming the option for a value out of range, not finite or unknown; run_synth calls it before

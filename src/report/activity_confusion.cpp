@@ -6,9 +6,9 @@
 
 #include "core/error.hpp"
 #include "core/npy.hpp"
+#include "imu/synth_folder.hpp"
 #include "motion/joint_sequence.hpp"
 #include "motion/motion_descriptors.hpp"
-#include "imu/synth_folder.hpp"
 
 namespace t2imu {
 
@@ -49,8 +49,10 @@ std::string ActivityConfusion::csv() const {
         for (long v : counts[r]) text += "," + std::to_string(v);
         const long n = row_total(*this, r);
         char buf[32];
-        if (expected[r].empty() || n == 0) std::snprintf(buf, sizeof buf, ",\n");
-        else std::snprintf(buf, sizeof buf, ",%.3f\n", static_cast<double>(hits(*this, r)) / static_cast<double>(n));
+        if (expected[r].empty() || n == 0)
+            std::snprintf(buf, sizeof buf, ",\n");
+        else
+            std::snprintf(buf, sizeof buf, ",%.3f\n", static_cast<double>(hits(*this, r)) / static_cast<double>(n));
         text += buf;
     }
     return text;
@@ -68,7 +70,8 @@ ActivityConfusion synth_confusion(const MotionActivityClassifier& classifier, co
     for (const JobMarker& job : read_job_markers(dir)) {
         if (!job.kept) continue;
         const std::string file = dir + "/" + job_joints_file(job.job);
-        const std::string shown = classifier.classify(describe_motion(joint_sequence_from_array(read_npy(file), file))).best;
+        const std::string shown =
+            classifier.classify(describe_motion(joint_sequence_from_array(read_npy(file), file))).best;
         ++counts[job.activity][shown];
     }
     if (counts.empty()) throw Error(dir + "/jobs", "jobs", "at least one kept motion");

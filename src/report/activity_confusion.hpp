@@ -10,9 +10,9 @@
 namespace t2imu {
 
 struct ActivityConfusion {
-    std::vector<std::string> rows;      // true (reference) or prompted (synthesis) activities
-    std::vector<std::string> expected;  // per row, the column that is right for it ("" = no class: not counted)
-    std::vector<std::string> columns;   // the classifier's classes
+    std::vector<std::string> rows;          // true (reference) or prompted (synthesis) activities
+    std::vector<std::string> expected;      // per row, the column that is right for it ("" = no class: not counted)
+    std::vector<std::string> columns;       // the classifier's classes
     std::vector<std::vector<long>> counts;  // [row][column]
 
     long right() const;  // motions in their row's expected column, over the rows that have one
@@ -23,7 +23,8 @@ struct ActivityConfusion {
 
 // Leave-one-subject-out over the reference clips; `agreement` (optional) receives each clip's agreement with
 // its own activity.
-ActivityConfusion reference_confusion(const MotionActivityClassifier& classifier, std::vector<double>* agreement = nullptr);
+ActivityConfusion reference_confusion(const MotionActivityClassifier& classifier,
+                                      std::vector<double>* agreement = nullptr);
 
 // Every kept job of the synthesis folder `dir` (markers read by imu/synth_folder.hpp): the prompt's activity
 // against the classifier's class for the job's motion. Error naming the folder when no job is kept.

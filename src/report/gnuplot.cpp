@@ -24,8 +24,7 @@ void write_ignoring_broken_pipe(FILE* pipe, const std::string& input) {
     std::fwrite(input.data(), 1, input.size(), pipe);
     std::fflush(pipe);
     const timespec now{0, 0};
-    while (sigtimedwait(&pipe_signal, nullptr, &now) == SIGPIPE) {
-    }
+    while (sigtimedwait(&pipe_signal, nullptr, &now) == SIGPIPE) {}
     pthread_sigmask(SIG_SETMASK, &old, nullptr);
 }
 
@@ -41,7 +40,8 @@ std::string gnuplot_label(const std::string& s) {
     return out + "\"";
 }
 
-void render_png(const std::string& png_path, const std::vector<GnuplotData>& data, const std::string& script, int width, int height) {
+void render_png(const std::string& png_path, const std::vector<GnuplotData>& data, const std::string& script, int width,
+                int height) {
     const char* program = std::getenv("T2IMU_GNUPLOT");
     const std::string tmp = temporary_path_for(png_path);
     std::string input = "set terminal pngcairo size " + std::to_string(width) + "," + std::to_string(height) +
@@ -62,7 +62,8 @@ void render_png(const std::string& png_path, const std::vector<GnuplotData>& dat
     const int status = pclose(pipe);
     if (status != 0 || !std::filesystem::exists(tmp) || std::filesystem::file_size(tmp) == 0) {
         std::filesystem::remove(tmp);
-        throw Error(png_path, "gnuplot", "a successful run (is gnuplot-nox installed?)", "exit status " + std::to_string(status));
+        throw Error(png_path, "gnuplot", "a successful run (is gnuplot-nox installed?)",
+                    "exit status " + std::to_string(status));
     }
     commit_temporary(tmp, png_path);
 }

@@ -8,7 +8,7 @@
 namespace t2imu {
 
 struct GnuplotData {
-    std::string name;                       // used as $name in the script
+    std::string name;                            // used as $name in the script
     std::vector<std::vector<std::string>> rows;  // whitespace-free fields (quote labels with spaces)
 };
 

@@ -21,19 +21,24 @@ std::string base64(const std::vector<uint8_t>& bytes) {
 std::string html_escape(const std::string& s) {
     std::string out;
     for (char c : s) {
-        if (c == '<') out += "&lt;";
-        else if (c == '>') out += "&gt;";
-        else if (c == '&') out += "&amp;";
-        else if (c == '"') out += "&quot;";
-        else out += c;
+        if (c == '<')
+            out += "&lt;";
+        else if (c == '>')
+            out += "&gt;";
+        else if (c == '&')
+            out += "&amp;";
+        else if (c == '"')
+            out += "&quot;";
+        else
+            out += c;
     }
     return out;
 }
 
 void Page::figure(const std::string& png_name, const std::string& caption) {
     const std::string path = out_dir + "/" + png_name;
-    body += "<figure><img src=\"data:image/png;base64," + base64(read_file_bytes(path)) + "\" alt=\"" + html_escape(caption) +
-            "\"><figcaption>" + html_escape(caption) + "</figcaption></figure>\n";
+    body += "<figure><img src=\"data:image/png;base64," + base64(read_file_bytes(path)) + "\" alt=\"" +
+            html_escape(caption) + "\"><figcaption>" + html_escape(caption) + "</figcaption></figure>\n";
     ++figures;
 }
 

@@ -30,14 +30,17 @@ bool has(const CsvTable& t, const char* column) { return t.has_column(column); }
 
 void har_section(const std::vector<std::pair<std::string, HarResult>>& results, Page& page) {
     if (results.empty()) return;
-    page.body += "<h2>Human activity recognition (DeepConvLSTM)</h2>\n<table><tr><th>result</th><th>balanced accuracy (%)</th>"
-                 "<th>macro F1 (%)</th><th>runs</th><th>classes</th></tr>\n";
+    page.body +=
+        "<h2>Human activity recognition (DeepConvLSTM)</h2>\n<table><tr><th>result</th><th>balanced accuracy (%)</th>"
+        "<th>macro F1 (%)</th><th>runs</th><th>classes</th></tr>\n";
     char buf[256];
     for (const auto& [name, r] : results) {
         const ScoreSummary ba = score_summary(r, &HarRun::balanced_accuracy), f1 = score_summary(r, &HarRun::macro_f1);
-        std::snprintf(buf, sizeof buf, "<tr><td>%s</td><td>%.1f &plusmn; %.1f</td><td>%.1f &plusmn; %.1f</td><td>%zu</td><td>%s</td></tr>\n",
-                      html_escape(name).c_str(), 100 * ba.mean, 100 * ba.sd, 100 * f1.mean, 100 * f1.sd, r.runs.size(),
-                      html_escape(nlohmann::json(r.classes).dump()).c_str());
+        std::snprintf(
+            buf, sizeof buf,
+            "<tr><td>%s</td><td>%.1f &plusmn; %.1f</td><td>%.1f &plusmn; %.1f</td><td>%zu</td><td>%s</td></tr>\n",
+            html_escape(name).c_str(), 100 * ba.mean, 100 * ba.sd, 100 * f1.mean, 100 * f1.sd, r.runs.size(),
+            html_escape(nlohmann::json(r.classes).dump()).c_str());
         page.body += buf;
     }
     page.body += "</table>\n";
@@ -45,15 +48,18 @@ void har_section(const std::vector<std::pair<std::string, HarResult>>& results, 
     page.figure("balanced_accuracy.png", "Balanced accuracy per result (Fig. 3)");
     for (const auto& [name, r] : results) {
         plot_confusion(r, page.out_dir + "/confusion_" + name + ".png", "Confusion (recall per true class): " + name);
-        page.figure("confusion_" + name + ".png", "Confusion matrix, " + name + " (rows: true class, summed over runs)");
+        page.figure("confusion_" + name + ".png",
+                    "Confusion matrix, " + name + " (rows: true class, summed over runs)");
     }
 }
 
 // Per real set: the curve and its table (mean ± sd over the draws per K and arm, the best synthetic arm's gain).
 void low_data_section(const std::vector<LowDataCurve>& curves, Page& page) {
     for (const LowDataCurve& c : curves) {
-        page.body += "<h2>Low-data curve: " + html_escape(c.real_set) + "</h2>\n<p>Balanced accuracy (%) with K real training subjects "
-                     "(drawn anew for each draw, tested on the others), mean &plusmn; sd over the draws; K = 0 is synthetic only.</p>\n"
+        page.body += "<h2>Low-data curve: " + html_escape(c.real_set) +
+                     "</h2>\n<p>Balanced accuracy (%) with K real training subjects "
+                     "(drawn anew for each draw, tested on the others), mean &plusmn; sd over the draws; K = 0 is "
+                     "synthetic only.</p>\n"
                      "<table><tr><th>K</th>";
         for (const LowDataArm& a : c.arms) page.body += "<th>" + html_escape(a.name) + "</th>";
         page.body += "<th>best synthetic arm &minus; real only</th></tr>\n";
@@ -74,7 +80,8 @@ void low_data_section(const std::vector<LowDataCurve>& curves, Page& page) {
             }
             const LowDataPoint* real = c.arms.front().at(label);
             buf[0] = '\0';
-            if (real && best >= 0) std::snprintf(buf, sizeof buf, "%+.1f", 100 * (best - real->balanced_accuracy().mean));
+            if (real && best >= 0)
+                std::snprintf(buf, sizeof buf, "%+.1f", 100 * (best - real->balanced_accuracy().mean));
             page.body += "<td>" + std::string(buf) + "</td></tr>\n";
         }
         page.body += "</table>\n";
@@ -109,13 +116,16 @@ void classify_json(const fs::path& p, const std::string& results_dir, FoundResul
         return;  // not a result of ours
     }
     if (!j.is_object()) return;
-    if (is_har_result(j)) found->har.push_back({stem(p), parse_har_result(j, p.string())});
+    if (is_har_result(j))
+        found->har.push_back({stem(p), parse_har_result(j, p.string())});
     else if (is_low_data_curves(j)) {
         const std::vector<LowDataCurve> curves = parse_low_data_curves(j, p.string());
         found->low_data.insert(found->low_data.end(), curves.begin(), curves.end());
-    } else if (j.contains("classifier_two_sample_test")) found->gaps.push_back({stem(p), parse_domain_gap(j, p.string())});
+    } else if (j.contains("classifier_two_sample_test"))
+        found->gaps.push_back({stem(p), parse_domain_gap(j, p.string())});
     else if (j.contains("per_activity") && j.contains("motions_kept"))
-        found->synth.push_back({p.parent_path().string(), synth_title(p.parent_path(), results_dir), parse_synth_report(j, p.string())});
+        found->synth.push_back(
+            {p.parent_path().string(), synth_title(p.parent_path(), results_dir), parse_synth_report(j, p.string())});
 }
 
 void classify_csv(const fs::path& p, const std::string& results_dir, FoundResults* found) {
@@ -125,8 +135,10 @@ void classify_csv(const fs::path& p, const std::string& results_dir, FoundResult
     } catch (const Error&) {
         return;
     }
-    if (has(t, "group") && has(t, "change_percent")) found->lacc.push_back({stem(p), t});
-    else if (has(t, "tsne_x") && has(t, "tsne_y")) found->tsne.push_back({stem(p), t});
+    if (has(t, "group") && has(t, "change_percent"))
+        found->lacc.push_back({stem(p), t});
+    else if (has(t, "tsne_x") && has(t, "tsne_y"))
+        found->tsne.push_back({stem(p), t});
     else if (!t.header.empty() && t.header[0] == "t" && has(t, "acc_x") && found->traces.size() < 3)
         found->traces.push_back({fs::relative(p, results_dir).string(), t});
 }
@@ -138,8 +150,10 @@ FoundResults find_results(const std::string& results_dir) {
     std::sort(files.begin(), files.end());
     FoundResults found;
     for (const fs::path& p : files) {
-        if (p.extension() == ".json") classify_json(p, results_dir, &found);
-        else if (p.extension() == ".csv") classify_csv(p, results_dir, &found);
+        if (p.extension() == ".json")
+            classify_json(p, results_dir, &found);
+        else if (p.extension() == ".csv")
+            classify_csv(p, results_dir, &found);
     }
     return found;
 }
@@ -163,8 +177,10 @@ void tsne_section(const std::vector<std::pair<std::string, CsvTable>>& tables, P
         if (!has(t, "activity")) continue;
         const std::vector<std::string> high = {"running", "jogging", "jumping", "dancing"};
         try {
-            plot_tsne(t, colour, page.out_dir + "/tsne_high_" + name + ".png", "t-SNE, high-dynamic activities: " + name, "activity", high);
-            page.figure("tsne_high_" + name + ".png", "t-SNE of high-dynamic activities (running, jumping, dancing): " + name);
+            plot_tsne(t, colour, page.out_dir + "/tsne_high_" + name + ".png",
+                      "t-SNE, high-dynamic activities: " + name, "activity", high);
+            page.figure("tsne_high_" + name + ".png",
+                        "t-SNE of high-dynamic activities (running, jumping, dancing): " + name);
         } catch (const Error&) {
             // no high-dynamic windows in this table
         }
@@ -173,12 +189,14 @@ void tsne_section(const std::vector<std::pair<std::string, CsvTable>>& tables, P
 
 void gap_section(const std::vector<std::pair<std::string, DomainGap>>& gaps, Page& page) {
     if (gaps.empty()) return;
-    page.body += "<h2>Domain gap (real vs synthetic)</h2>\n<table><tr><th>result</th><th>two-sample balanced accuracy</th><th>most different feature (KS)</th></tr>\n";
+    page.body +=
+        "<h2>Domain gap (real vs synthetic)</h2>\n<table><tr><th>result</th><th>two-sample balanced "
+        "accuracy</th><th>most different feature (KS)</th></tr>\n";
     char buf[512];
     for (const auto& [name, g] : gaps) {
         const FeatureDistance top = g.per_feature.empty() ? FeatureDistance{"-", 0, 0} : g.per_feature[0];
-        std::snprintf(buf, sizeof buf, "<tr><td>%s</td><td>%.3f</td><td>%s (%.3f)</td></tr>\n", html_escape(name).c_str(),
-                      g.overall.balanced_accuracy, html_escape(top.feature).c_str(), top.ks);
+        std::snprintf(buf, sizeof buf, "<tr><td>%s</td><td>%.3f</td><td>%s (%.3f)</td></tr>\n",
+                      html_escape(name).c_str(), g.overall.balanced_accuracy, html_escape(top.feature).c_str(), top.ks);
         page.body += buf;
     }
     page.body += "</table><p>0.5 = a classifier cannot tell real from synthetic windows; 1.0 = fully separable.</p>\n";
@@ -197,8 +215,10 @@ std::string page_html(const std::string& results_dir, const Page& page) {
     return "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>t2imu report</title><style>"
            "body{font-family:sans-serif;max-width:1000px;margin:2em auto;}img{max-width:100%;}"
            "table{border-collapse:collapse;}td,th{border:1px solid #ccc;padding:4px 8px;}"
-           ".job{border-top:1px solid #eee;margin:0.6em 0;}.job p{margin:0.3em 0;}.outcome{font-size:90%;color:#444;}</style></head><body>\n"
-           "<h1>t2imu report</h1>\n<p>Results from " + html_escape(results_dir) + "</p>\n" + page.body + "</body></html>\n";
+           ".job{border-top:1px solid #eee;margin:0.6em 0;}.job p{margin:0.3em "
+           "0;}.outcome{font-size:90%;color:#444;}</style></head><body>\n"
+           "<h1>t2imu report</h1>\n<p>Results from " +
+           html_escape(results_dir) + "</p>\n" + page.body + "</body></html>\n";
 }
 
 }  // namespace

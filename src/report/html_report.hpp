@@ -22,10 +22,12 @@
 namespace t2imu {
 
 struct ReportSummary {
-    int figures = 0, synth_reports = 0, har_results = 0, low_data_curves = 0, lacc_tables = 0, tsne_tables = 0, gap_results = 0, traces = 0;
+    int figures = 0, synth_reports = 0, har_results = 0, low_data_curves = 0, lacc_tables = 0, tsne_tables = 0,
+        gap_results = 0, traces = 0;
 };
 
 // `real_dir`: a real IMU data set (imu/imu_dataset.hpp layout) to compare the synthetic signals with; "" for none.
-ReportSummary write_report(const std::string& results_dir, const std::string& report_dir, const std::string& real_dir = "");
+ReportSummary write_report(const std::string& results_dir, const std::string& report_dir,
+                           const std::string& real_dir = "");
 
 }  // namespace t2imu

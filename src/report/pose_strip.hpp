@@ -6,9 +6,10 @@
 // (so walking does not run out of the strip) and standing on the ground under its lowest foot joint at that
 // frame (support_ground.hpp: the floor, or the tread or step its footholds show), drawn as the grey line: a
 // climb stays in view, and where that ground is raised the panel's label gives its height above the starting
-// floor ("ground +0.85 m"). Heights above the ground are true, so a jump lifts the pose. SVG user units are centimetres: a panel is kPanelWidthCm wide, the floor lies kHeadroomCm
-// below the panel's top and the panel ends kBelowFloorCm under the floor. Bones take the colour of their child
-// joint's side: left blue, right orange, centre grey.
+// floor ("ground +0.85 m"). Heights above the ground are true, so a jump lifts the pose. SVG user units are
+// centimetres: a panel is kPanelWidthCm wide, the floor lies kHeadroomCm below the panel's top and the panel ends
+// kBelowFloorCm under the floor. Bones take the colour of their child joint's side: left blue, right orange, centre
+// grey.
 #pragma once
 #include <string>
 #include <vector>

@@ -34,8 +34,8 @@ std::string comparison_position(const std::vector<ImuRecording>& synthetic, cons
     return best;
 }
 
-std::vector<ActivityStats> stats_by_activity(const std::vector<ImuRecording>& synthetic, const std::vector<ImuRecording>& real,
-                                             const std::string& position) {
+std::vector<ActivityStats> stats_by_activity(const std::vector<ImuRecording>& synthetic,
+                                             const std::vector<ImuRecording>& real, const std::string& position) {
     std::map<std::string, ActivityStats> groups;
     for (const ImuRecording& r : synthetic)
         if (r.position == position) groups[canonical_activity(r.activity)].synthetic.push_back(signal_stats(r));

@@ -26,8 +26,8 @@ struct ActivityStats {
 
 // Statistics of the recordings (loaded) at `position`, per canonical activity of `synthetic`, alphabetical;
 // real recordings of activities the synthetic data lacks are left out.
-std::vector<ActivityStats> stats_by_activity(const std::vector<ImuRecording>& synthetic, const std::vector<ImuRecording>& real,
-                                             const std::string& position);
+std::vector<ActivityStats> stats_by_activity(const std::vector<ImuRecording>& synthetic,
+                                             const std::vector<ImuRecording>& real, const std::string& position);
 
 // The median of one field over `stats` (the mean of the middle two for an even count; NaN when empty).
 double median_of(const std::vector<SignalStats>& stats, double SignalStats::*field);

@@ -12,18 +12,19 @@
 #include <vector>
 
 #include "imu/imu_dataset.hpp"
-#include "report/html_page.hpp"
 #include "imu/synth_folder.hpp"
+#include "report/html_page.hpp"
 
 namespace t2imu {
 
 struct SynthFolder {
-    std::string dir;      // the folder holding synth_report.json
-    std::string title;    // its heading: "Synthesis: <title>"
-    SynthReport report;   // its synth_report.json
+    std::string dir;     // the folder holding synth_report.json
+    std::string title;   // its heading: "Synthesis: <title>"
+    SynthReport report;  // its synth_report.json
 };
 
 // `real`: a real IMU data set (loaded), empty for none; `real_name` names it in the text.
-void synth_section(const std::vector<SynthFolder>& folders, const std::vector<ImuRecording>& real, const std::string& real_name, Page& page);
+void synth_section(const std::vector<SynthFolder>& folders, const std::vector<ImuRecording>& real,
+                   const std::string& real_name, Page& page);
 
 }  // namespace t2imu

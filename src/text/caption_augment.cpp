@@ -20,29 +20,35 @@ void unit_row(const float* v, float* out) {
 }
 
 bool is_direction(const std::string& w) {
-    static const char* const kDirections[] = {"up", "down", "upstairs", "downstairs", "upward", "upwards", "downward", "downwards",
-                                              "left", "right", "forward", "forwards", "backward", "backwards", "back", "front",
-                                              "clockwise", "counterclockwise", "anticlockwise", "counter-clockwise", "sideways"};
+    static const char* const kDirections[] = {
+        "up",        "down",  "upstairs",  "downstairs",       "upward",        "upwards",           "downward",
+        "downwards", "left",  "right",     "forward",          "forwards",      "backward",          "backwards",
+        "back",      "front", "clockwise", "counterclockwise", "anticlockwise", "counter-clockwise", "sideways"};
     return std::find(std::begin(kDirections), std::end(kDirections), w) != std::end(kDirections);
 }
 
-bool is_word(const std::string& token) { return std::any_of(token.begin(), token.end(), [](unsigned char c) { return std::isalpha(c); }); }
+bool is_word(const std::string& token) {
+    return std::any_of(token.begin(), token.end(), [](unsigned char c) { return std::isalpha(c); });
+}
 
 }  // namespace
 
 void CaptionAugmentOptions::validate(const std::string& where) const {
     const auto probability = [&](const char* key, double v) {
-        if (!(v >= 0 && v < 1)) throw Error(where, std::string("augment.") + key, "a probability in [0, 1)", std::to_string(v));
+        if (!(v >= 0 && v < 1))
+            throw Error(where, std::string("augment.") + key, "a probability in [0, 1)", std::to_string(v));
     };
     probability("swap", swap);
     probability("dropout", dropout);
     if (neighbours < 1) throw Error(where, "augment.neighbours", "a whole number from 1", std::to_string(neighbours));
     if (!(min_similarity > 0 && min_similarity < 1))
         throw Error(where, "augment.min_similarity", "a cosine in (0, 1)", std::to_string(min_similarity));
-    if (search_words < 1) throw Error(where, "augment.search_words", "a whole number from 1", std::to_string(search_words));
+    if (search_words < 1)
+        throw Error(where, "augment.search_words", "a whole number from 1", std::to_string(search_words));
 }
 
-CaptionAugmenter::CaptionAugmenter(const WordVectors& vectors, const CaptionAugmentOptions& options, const std::vector<std::string>& captions)
+CaptionAugmenter::CaptionAugmenter(const WordVectors& vectors, const CaptionAugmentOptions& options,
+                                   const std::vector<std::string>& captions)
     : vectors_(vectors), options_(options) {
     const int n = std::min(options.search_words, vectors.size());
     unit_.resize(static_cast<size_t>(n) * WordVectors::kDims);
@@ -75,7 +81,9 @@ const std::vector<int>& CaptionAugmenter::neighbours_of(int word) {
             if (s > worst->first) *worst = {s, w};
         }
     }
-    std::sort(best.begin(), best.end(), [](const auto& a, const auto& b) { return a.first > b.first || (a.first == b.first && a.second < b.second); });
+    std::sort(best.begin(), best.end(), [](const auto& a, const auto& b) {
+        return a.first > b.first || (a.first == b.first && a.second < b.second);
+    });
     std::vector<int>& out = neighbours_[word];
     for (const auto& b : best) out.push_back(b.second);
     return out;
@@ -88,7 +96,10 @@ std::string CaptionAugmenter::augment(const std::string& caption, std::mt19937_6
     for (size_t i = 0; i < tokens.size(); ++i) {
         const std::string& token = tokens[i];
         const double drop = u(rng), swap = u(rng);
-        if (!is_word(token)) { kept.push_back(token); continue; }
+        if (!is_word(token)) {
+            kept.push_back(token);
+            continue;
+        }
         if (drop < options_.dropout) continue;
         const int w = vectors_.index_of(token);
         if (swap < options_.swap && w >= 0 && !is_direction(token)) {

@@ -4,7 +4,8 @@
 // The shared motion capture comes with ~7,000 captions written in a few house styles ("a person walks forward",
 // CMU's "walk", HDM05's class names); users prompt in their own words ("an office worker ambles over to the
 // printer"), and a model trained on the house styles alone follows few paraphrases
-// (docs/results.md#the-gpu-trained-default-the-l_acc-sweep-and-stairs-that-pass-the-filter-2026-12-04). Each word of a caption is, independently:
+// (docs/results.md#the-gpu-trained-default-the-l_acc-sweep-and-stairs-that-pass-the-filter-2026-12-04). Each word of a
+// caption is, independently:
 //   - replaced, with probability `swap`, by one of its `neighbours` nearest words in the GloVe space (cosine
 //     similarity at least `min_similarity`, among the `search_words` most frequent words): "walks" -> "walking",
 //     "strolls", "walked"; "slowly" -> "quickly" also happens, as word vectors put antonyms close: the rate
@@ -28,10 +29,10 @@
 namespace t2imu {
 
 struct CaptionAugmentOptions {
-    double swap = 0, dropout = 0;    // per-word probabilities, [0, 1)
-    int neighbours = 5;              // nearest words a swap chooses from, >= 1
-    double min_similarity = 0.6;     // cosine, (0, 1)
-    int search_words = 30000;        // the most frequent words searched for neighbours
+    double swap = 0, dropout = 0;  // per-word probabilities, [0, 1)
+    int neighbours = 5;            // nearest words a swap chooses from, >= 1
+    double min_similarity = 0.6;   // cosine, (0, 1)
+    int search_words = 30000;      // the most frequent words searched for neighbours
     bool enabled() const { return swap > 0 || dropout > 0; }
     // Throws Error naming `where` and the key ("augment.swap") for a value out of range.
     void validate(const std::string& where) const;
@@ -41,7 +42,8 @@ class CaptionAugmenter {
 public:
     // Precomputes the neighbours of every word of `captions` (the training captions); other words are
     // looked up and cached on first use.
-    CaptionAugmenter(const WordVectors& vectors, const CaptionAugmentOptions& options, const std::vector<std::string>& captions);
+    CaptionAugmenter(const WordVectors& vectors, const CaptionAugmentOptions& options,
+                     const std::vector<std::string>& captions);
 
     std::string augment(const std::string& caption, std::mt19937_64& rng);
     const std::vector<int>& neighbours_of(int word);  // nearest first, the word itself excluded

@@ -10,7 +10,8 @@
 
 namespace t2imu {
 
-CaptionIndex::CaptionIndex(const WordVectors& vectors, const std::vector<Prompt>& captions, const std::string& source) : sif_(vectors) {
+CaptionIndex::CaptionIndex(const WordVectors& vectors, const std::vector<Prompt>& captions, const std::string& source)
+    : sif_(vectors) {
     std::set<std::pair<std::string, std::string>> seen;
     std::vector<std::string> texts;
     for (const Prompt& c : captions)
@@ -28,10 +29,13 @@ CaptionIndex::CaptionIndex(const WordVectors& vectors, const std::vector<Prompt>
         unit_.row(static_cast<Eigen::Index>(i)) = e.transpose() / e.norm();
         any = true;
     }
-    if (!any) throw Error(source, "captions", "at least one caption with a word of the vocabulary", std::to_string(captions_.size()) + " captions, none");
+    if (!any)
+        throw Error(source, "captions", "at least one caption with a word of the vocabulary",
+                    std::to_string(captions_.size()) + " captions, none");
 }
 
-std::vector<CaptionNeighbour> CaptionIndex::nearest(const std::string& prompt, size_t k, const std::string& activity, bool match_attributes) const {
+std::vector<CaptionNeighbour> CaptionIndex::nearest(const std::string& prompt, size_t k, const std::string& activity,
+                                                    bool match_attributes) const {
     std::vector<size_t> candidates;
     if (activity.empty()) return {};
     for (size_t i = 0; i < captions_.size(); ++i)
@@ -39,7 +43,8 @@ std::vector<CaptionNeighbour> CaptionIndex::nearest(const std::string& prompt, s
     if (candidates.empty()) return {};
     const Eigen::VectorXd e = sif_.embed(prompt);
     const double norm = e.norm();
-    const Eigen::VectorXd cosines = norm > 0 ? Eigen::VectorXd(unit_ * (e / norm)) : Eigen::VectorXd::Zero(unit_.rows());
+    const Eigen::VectorXd cosines =
+        norm > 0 ? Eigen::VectorXd(unit_ * (e / norm)) : Eigen::VectorXd::Zero(unit_.rows());
     const std::vector<std::string> asked = match_attributes ? attributes_asked(prompt) : std::vector<std::string>{};
     std::vector<size_t> shared(captions_.size(), 0);
     for (size_t i : candidates) shared[i] = attributes_shared(asked, named_[i]);
@@ -53,7 +58,8 @@ std::vector<CaptionNeighbour> CaptionIndex::nearest(const std::string& prompt, s
     const std::string& chosen = captions_[candidates.front()].activity;
     std::vector<CaptionNeighbour> out;
     for (size_t i : candidates)
-        if (out.size() < k && captions_[i].activity == chosen) out.push_back({i, cosines[static_cast<Eigen::Index>(i)]});
+        if (out.size() < k && captions_[i].activity == chosen)
+            out.push_back({i, cosines[static_cast<Eigen::Index>(i)]});
     return out;
 }
 

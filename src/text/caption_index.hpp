@@ -35,12 +35,13 @@ public:
 
     // The k captions of activity `activity` (canonical; shows_activity, so "stairs" takes either direction) most
     // similar to `prompt` (with `match_attributes`: among those naming the most of the prompt's attributes,
-    // data/measured_captions.hpp: slowly, left, then, ...), best first (ties: the earlier caption); fewer when the activity has fewer, none
-    // when it is "" or has none. Across activities the nearest caption by words is too often another activity's
-    // (see above; as an anchor it cost first draws). All k share the activity of the best one, so
+    // data/measured_captions.hpp: slowly, left, then, ...), best first (ties: the earlier caption); fewer when the
+    // activity has fewer, none when it is "" or has none. Across activities the nearest caption by words is too often
+    // another activity's (see above; as an anchor it cost first draws). All k share the activity of the best one, so
     // "stairs" gives one direction: a blend of up and down captions conditions a walk on the level (docs/results.md,
     // "One stairs direction per anchor, and the main job's filter (2026-12-05, later)").
-    std::vector<CaptionNeighbour> nearest(const std::string& prompt, size_t k, const std::string& activity, bool match_attributes = false) const;
+    std::vector<CaptionNeighbour> nearest(const std::string& prompt, size_t k, const std::string& activity,
+                                          bool match_attributes = false) const;
     const std::vector<Prompt>& captions() const { return captions_; }
 
 private:

@@ -26,27 +26,31 @@ bool is_space(char32_t c) {
 // The byte table's order: the printable bytes ascending, then the others ascending (stand-ins U+0100 on).
 std::vector<int> byte_order() {
     std::vector<int> printable, rest;
-    for (int b = 0; b < 256; ++b) ((b >= 33 && b <= 126) || (b >= 161 && b <= 172) || (b >= 174 && b <= 255) ? printable : rest).push_back(b);
+    for (int b = 0; b < 256; ++b)
+        ((b >= 33 && b <= 126) || (b >= 161 && b <= 172) || (b >= 174 && b <= 255) ? printable : rest).push_back(b);
     printable.insert(printable.end(), rest.begin(), rest.end());
     return printable;
 }
 
 bool starts_with(const std::vector<char32_t>& s, size_t at, const char* literal) {
     for (size_t k = 0; literal[k] != '\0'; ++k)
-        if (at + k >= s.size() || s[at + k] != static_cast<char32_t>(static_cast<unsigned char>(literal[k]))) return false;
+        if (at + k >= s.size() || s[at + k] != static_cast<char32_t>(static_cast<unsigned char>(literal[k])))
+            return false;
     return true;
 }
 
 // Python's str.lower() writes capital sigma at the end of a word as final sigma (Unicode's Final_Sigma
 // context, with "cased" approximated by "letter" and no case-ignorable marks skipped).
 bool ends_word(const std::vector<char32_t>& s, size_t i) {
-    return i > 0 && unicode_classes::is_letter(s[i - 1]) && (i + 1 == s.size() || !unicode_classes::is_letter(s[i + 1]));
+    return i > 0 && unicode_classes::is_letter(s[i - 1]) &&
+           (i + 1 == s.size() || !unicode_classes::is_letter(s[i + 1]));
 }
 
 std::string read_maybe_gzip(const std::string& path) {
     // zlib reads a plain file through unchanged, so one path serves both.
     gzFile f = gzopen(path.c_str(), "rb");
-    if (f == nullptr) throw Error(path, "file", "a readable CLIP merges file (bpe_simple_vocab_16e6.txt.gz or its plain text)");
+    if (f == nullptr)
+        throw Error(path, "file", "a readable CLIP merges file (bpe_simple_vocab_16e6.txt.gz or its plain text)");
     std::string out;
     char buffer[1 << 16];
     int n = 0;
@@ -71,7 +75,8 @@ ClipBpeTokenizer::ClipBpeTokenizer(const std::vector<std::pair<std::string, std:
     for (int b : order) vocab_.push_back(byte_chars_[static_cast<size_t>(b)] + kEndOfWord);
     for (size_t r = 0; r < merges.size(); ++r) {
         vocab_.push_back(merges[r].first + merges[r].second);
-        ranks_[merges[r].first + " " + merges[r].second] = r;  // a repeated merge keeps its last rank, as in CLIP's dict
+        ranks_[merges[r].first + " " + merges[r].second] =
+            r;  // a repeated merge keeps its last rank, as in CLIP's dict
     }
     vocab_.push_back(kSot);
     vocab_.push_back(kEot);
@@ -117,8 +122,10 @@ std::string ClipBpeTokenizer::clean(const std::string& text) {
         }
         if (pending_space) out.push_back(' ');
         pending_space = false;
-        if (c == 0x02BC || (c >= 0x2018 && c <= 0x201B)) c = '\'';
-        else if (c >= 0x201C && c <= 0x201F) c = '"';
+        if (c == 0x02BC || (c >= 0x2018 && c <= 0x201B))
+            c = '\'';
+        else if (c >= 0x201C && c <= 0x201F)
+            c = '"';
         if (c == 0x0130) {
             append_utf8(out, 'i');  // the one code point whose lower case is two: i + combining dot above
             append_utf8(out, 0x0307);
@@ -138,7 +145,8 @@ std::vector<std::string> ClipBpeTokenizer::split(const std::string& cleaned) {
     std::vector<std::string> out;
     size_t i = 0;
     const auto take = [&](size_t end) {
-        out.push_back(encode_utf8(std::u32string(s.begin() + static_cast<std::ptrdiff_t>(i), s.begin() + static_cast<std::ptrdiff_t>(end))));
+        out.push_back(encode_utf8(
+            std::u32string(s.begin() + static_cast<std::ptrdiff_t>(i), s.begin() + static_cast<std::ptrdiff_t>(end))));
         i = end;
     };
     while (i < s.size()) {
@@ -208,14 +216,16 @@ std::vector<int64_t> ClipBpeTokenizer::encode(const std::string& text) const {
 }
 
 std::vector<int64_t> ClipBpeTokenizer::tokenize(const std::string& text, int64_t context_length, bool truncate) const {
-    if (context_length < 2) throw Error("clip tokenizer", "context_length", "at least 2 (SOT and EOT)", std::to_string(context_length));
+    if (context_length < 2)
+        throw Error("clip tokenizer", "context_length", "at least 2 (SOT and EOT)", std::to_string(context_length));
     std::vector<int64_t> ids = {sot_};
     for (int64_t t : encode(text)) ids.push_back(t);
     ids.push_back(eot_);
     const size_t n = static_cast<size_t>(context_length);
     if (ids.size() > n) {
         if (!truncate)
-            throw Error("clip tokenizer", "\"" + text + "\"", "at most " + std::to_string(n) + " tokens with SOT and EOT", std::to_string(ids.size()));
+            throw Error("clip tokenizer", "\"" + text + "\"",
+                        "at most " + std::to_string(n) + " tokens with SOT and EOT", std::to_string(ids.size()));
         ids.resize(n);
         ids.back() = eot_;
     }

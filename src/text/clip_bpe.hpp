@@ -43,12 +43,13 @@ public:
 
     static std::string clean(const std::string& text);
     static std::vector<std::string> split(const std::string& cleaned);  // pre-tokens, UTF-8
-    std::vector<std::string> bpe(const std::string& piece) const;         // one pre-token -> vocabulary entries
-    std::vector<int64_t> encode(const std::string& text) const;           // clean, split, bpe; no SOT/EOT
+    std::vector<std::string> bpe(const std::string& piece) const;       // one pre-token -> vocabulary entries
+    std::vector<int64_t> encode(const std::string& text) const;         // clean, split, bpe; no SOT/EOT
 
     // clip.tokenize for one text: SOT ids EOT, then zeros up to `context_length`. Longer than that: with
     // `truncate` cut to context_length with EOT last, else an Error.
-    std::vector<int64_t> tokenize(const std::string& text, int64_t context_length = kContextLength, bool truncate = false) const;
+    std::vector<int64_t> tokenize(const std::string& text, int64_t context_length = kContextLength,
+                                  bool truncate = false) const;
 
     int64_t sot() const { return sot_; }
     int64_t eot() const { return eot_; }
@@ -57,10 +58,10 @@ public:
     int64_t id(const std::string& token) const;  // an Error when absent
 
 private:
-    std::array<std::string, 256> byte_chars_;                // byte -> its printable stand-in, UTF-8
+    std::array<std::string, 256> byte_chars_;  // byte -> its printable stand-in, UTF-8
     std::vector<std::string> vocab_;
-    std::unordered_map<std::string, int64_t> ids_;           // a repeated entry keeps its last id, as CLIP's dict does
-    std::unordered_map<std::string, size_t> ranks_;          // "left right" -> merge rank (lower merges first)
+    std::unordered_map<std::string, int64_t> ids_;   // a repeated entry keeps its last id, as CLIP's dict does
+    std::unordered_map<std::string, size_t> ranks_;  // "left right" -> merge rank (lower merges first)
     int64_t sot_ = 0, eot_ = 0;
 };
 

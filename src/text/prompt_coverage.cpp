@@ -40,26 +40,31 @@ PromptCoverage prompt_coverage(const CaptionIndex& index, const std::string& lab
     return c;
 }
 
-std::vector<PromptCoverage> check_prompts_covered(const CaptionIndex& index, const std::vector<Prompt>& prompts, const std::string& source,
-                                                  bool require) {
+std::vector<PromptCoverage> check_prompts_covered(const CaptionIndex& index, const std::vector<Prompt>& prompts,
+                                                  const std::string& source, bool require) {
     std::vector<PromptCoverage> out;
     for (size_t i = 0; i < prompts.size(); ++i) {
         out.push_back(prompt_coverage(index, prompts[i].activity, prompts[i].text));
         if (out.back().covered()) continue;
         const std::string where = source + ": prompt " + std::to_string(i + 1);
-        if (require) throw Error(where, "--require-coverage", "a prompt the model's training captions cover", out.back().summary());
+        if (require)
+            throw Error(where, "--require-coverage", "a prompt the model's training captions cover",
+                        out.back().summary());
         std::fprintf(stderr, "t2imu: warning: %s: %s\n", where.c_str(), out.back().summary().c_str());
     }
     return out;
 }
 
 std::string coverage_markdown(const std::vector<Prompt>& captions, const std::string& model) {
-    std::map<std::string, std::set<std::string>> texts;             // activity -> distinct captions
+    std::map<std::string, std::set<std::string>> texts;  // activity -> distinct captions
     for (const Prompt& c : captions) texts[c.activity.empty() ? "other" : c.activity].insert(c.text);
-    std::string md = "# What `" + model + "` covers\n\nMade by `t2imu text coverage --model " + model +
-                     "` from the model's training captions (`captions.tsv`): per activity, its distinct captions and how many name each "
-                     "attribute a prompt can ask for ([attributes.md](attributes.md)). A prompt asking for an activity or an attribute "
-                     "with no caption here is reported uncovered by `t2imu synth` and `t2imu sample`.\n\n| activity | captions |";
+    std::string md =
+        "# What `" + model + "` covers\n\nMade by `t2imu text coverage --model " + model +
+        "` from the model's training captions (`captions.tsv`): per activity, its distinct captions and how many name "
+        "each "
+        "attribute a prompt can ask for ([attributes.md](attributes.md)). A prompt asking for an activity or an "
+        "attribute "
+        "with no caption here is reported uncovered by `t2imu synth` and `t2imu sample`.\n\n| activity | captions |";
     for (const AttributeWords& a : attribute_words()) md += " " + a.attribute + " |";
     md += "\n|---|---|";
     for (size_t i = 0; i < attribute_words().size(); ++i) md += "---|";

@@ -13,14 +13,15 @@
 namespace t2imu {
 
 struct PromptCoverage {
-    std::string activity;                      // canonical (activity_asked), "" when the prompt names none
-    bool activity_known = false;               // the training captions hold that activity
-    std::vector<std::string> nearest;          // the nearest training captions of that activity, nearest first
-    std::vector<double> similarity;            // their SIF cosine
+    std::string activity;              // canonical (activity_asked), "" when the prompt names none
+    bool activity_known = false;       // the training captions hold that activity
+    std::vector<std::string> nearest;  // the nearest training captions of that activity, nearest first
+    std::vector<double> similarity;    // their SIF cosine
     std::vector<std::string> attributes_asked;
     std::vector<std::string> attributes_uncovered;  // asked, but named by no training caption of the activity
     bool covered() const { return activity_known && attributes_uncovered.empty(); }
-    std::string summary() const;  // one line: "activity 'ironing' has no training captions", "... never name: pace_slow"
+    std::string summary()
+        const;  // one line: "activity 'ironing' has no training captions", "... never name: pace_slow"
 };
 
 constexpr size_t kCoverageNeighbours = 3;
@@ -30,8 +31,8 @@ PromptCoverage prompt_coverage(const CaptionIndex& index, const std::string& lab
 
 // Every prompt's coverage, before any output: one warning line on stderr per prompt not covered
 // ("t2imu: warning: SOURCE: prompt N: ..."), or with `require` an Error naming the first (--require-coverage).
-std::vector<PromptCoverage> check_prompts_covered(const CaptionIndex& index, const std::vector<Prompt>& prompts, const std::string& source,
-                                                  bool require);
+std::vector<PromptCoverage> check_prompts_covered(const CaptionIndex& index, const std::vector<Prompt>& prompts,
+                                                  const std::string& source, bool require);
 
 // What a model's training captions cover, as Markdown: per activity, its distinct captions and how many of them
 // name each attribute (data/measured_captions.hpp's attribute words). docs/coverage.md is this for models/default.

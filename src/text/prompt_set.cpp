@@ -21,10 +21,12 @@ std::string code_point_name(char32_t c) {
 
 void check_prompt_text(const std::string& text, const std::string& source, const std::string& field) {
     const size_t bad = first_invalid_utf8(text);
-    if (bad != std::string::npos) throw Error(source, field, "UTF-8 text", "an invalid byte at offset " + std::to_string(bad));
+    if (bad != std::string::npos)
+        throw Error(source, field, "UTF-8 text", "an invalid byte at offset " + std::to_string(bad));
     // C0 and C1 controls and DEL: a NUL or an escape sequence in a prompt is damage, not text.
     for (const char32_t c : decode_utf8(text)) {
-        if (c < 0x20 || (c >= 0x7F && c <= 0x9F)) throw Error(source, field, "text without control characters", code_point_name(c));
+        if (c < 0x20 || (c >= 0x7F && c <= 0x9F))
+            throw Error(source, field, "text without control characters", code_point_name(c));
         // Bidi controls reorder how the text shows in a terminal, a report or a file name: what a reader sees would
         // not be what the model was asked.
         if (c == 0x061C || c == 0x200E || c == 0x200F || (c >= 0x202A && c <= 0x202E) || (c >= 0x2066 && c <= 0x2069))
@@ -50,7 +52,8 @@ std::vector<Prompt> parse_prompt_set(const std::string& text, const std::string&
         }
         check_prompt_text(out.back().activity, source, where);
         check_prompt_text(out.back().text, source, where);
-        if (out.back().text.find_first_not_of(' ') == std::string::npos) throw Error(source, where, "a prompt after the tab (not blank)");
+        if (out.back().text.find_first_not_of(' ') == std::string::npos)
+            throw Error(source, where, "a prompt after the tab (not blank)");
         if (activity == PromptActivity::required && out.back().activity.find_first_not_of(' ') == std::string::npos)
             throw Error(source, where, "an activity before the tab (not blank)");
     }

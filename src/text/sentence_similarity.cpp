@@ -41,7 +41,8 @@ double cosine_similarity(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
     return n > 0 ? a.dot(b) / n : 0.0;
 }
 
-std::vector<NearestSentence> nearest_sentences(const SifEncoder& sif, const std::vector<std::string>& corpus, const std::vector<std::string>& queries) {
+std::vector<NearestSentence> nearest_sentences(const SifEncoder& sif, const std::vector<std::string>& corpus,
+                                               const std::vector<std::string>& queries) {
     std::vector<Eigen::VectorXd> embedded;
     embedded.reserve(corpus.size());
     for (const std::string& s : corpus) embedded.push_back(sif.embed(s));

@@ -39,6 +39,7 @@ struct NearestSentence {
     size_t index = 0;
     double similarity = 0;
 };
-std::vector<NearestSentence> nearest_sentences(const SifEncoder& sif, const std::vector<std::string>& corpus, const std::vector<std::string>& queries);
+std::vector<NearestSentence> nearest_sentences(const SifEncoder& sif, const std::vector<std::string>& corpus,
+                                               const std::vector<std::string>& queries);
 
 }  // namespace t2imu

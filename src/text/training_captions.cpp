@@ -16,7 +16,8 @@ std::vector<Prompt> training_captions(const Hml3dDataset& data, const std::strin
     for (const MotionClip& clip : data.clips())
         for (const CaptionLine& line : clip.captions) {
             const auto tags = tagged.find(clip_file_id(clip.id));
-            std::vector<std::string> activities = tags != tagged.end() ? tags->second : std::vector<std::string>{activity_named_in(line.caption)};
+            std::vector<std::string> activities =
+                tags != tagged.end() ? tags->second : std::vector<std::string>{activity_named_in(line.caption)};
             for (std::string& a : activities) {
                 if (a.empty()) a = "other";
                 if (seen.insert({a, line.caption}).second) out.push_back({a, line.caption});

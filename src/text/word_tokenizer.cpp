@@ -50,7 +50,8 @@ void lookup(const std::string& w, const WordVectors& v, std::vector<int>* out) {
     }
     for (const char* suffix : {"s", "ed", "ing"}) {
         const std::string s(suffix);
-        if (w.size() > s.size() + 2 && w.compare(w.size() - s.size(), s.size(), s) == 0 && (i = v.index_of(w.substr(0, w.size() - s.size()))) >= 0)
+        if (w.size() > s.size() + 2 && w.compare(w.size() - s.size(), s.size(), s) == 0 &&
+            (i = v.index_of(w.substr(0, w.size() - s.size()))) >= 0)
             return out->push_back(i);
     }
     out->push_back(-1);
@@ -75,7 +76,8 @@ WordVectors vocabulary_used_in(const WordVectors& vectors, const std::vector<std
                 if (i >= 0) used.insert(i);
     };
     for (const std::string& p : paths) {
-        if (!fs::is_directory(p)) read(p);
+        if (!fs::is_directory(p))
+            read(p);
         else
             for (const auto& e : fs::recursive_directory_iterator(p))
                 if (e.is_regular_file() && e.path().extension() == ".txt") read(e.path());

@@ -15,7 +15,8 @@ namespace t2imu {
 WordVectors::WordVectors(std::vector<std::string> words, std::vector<float> vectors)
     : words_(std::move(words)), vectors_(std::move(vectors)) {
     if (vectors_.size() != words_.size() * kDims)
-        throw Error("word vectors", "vectors", std::to_string(words_.size() * kDims) + " values", std::to_string(vectors_.size()));
+        throw Error("word vectors", "vectors", std::to_string(words_.size() * kDims) + " values",
+                    std::to_string(vectors_.size()));
     for (size_t i = 0; i < words_.size(); ++i) index_.emplace(words_[i], static_cast<int>(i));
     harmonic_ = 0;
     for (size_t r = 1; r <= words_.size(); ++r) harmonic_ += 1.0 / static_cast<double>(r);
@@ -32,12 +33,15 @@ WordVectors WordVectors::load(const std::string& path) {
     const SafeTensors st = read_safetensors(path);
     const auto v = st.tensors.find("vectors"), w = st.tensors.find("words");
     if (v == st.tensors.end() || w == st.tensors.end()) throw Error(path, "tensors", "\"vectors\" and \"words\"");
-    if (v->second.shape.size() != 2 || v->second.shape[1] != kDims) throw Error(path, "vectors", "[V, 100]", v->second.shape_str());
+    if (v->second.shape.size() != 2 || v->second.shape[1] != kDims)
+        throw Error(path, "vectors", "[V, 100]", v->second.shape_str());
     std::vector<std::string> words;
     std::string current;
     for (uint8_t c : w->second.to<uint8_t>()) {
-        if (c == '\n') words.push_back(current), current.clear();
-        else current.push_back(static_cast<char>(c));
+        if (c == '\n')
+            words.push_back(current), current.clear();
+        else
+            current.push_back(static_cast<char>(c));
     }
     if (!current.empty()) words.push_back(current);
     if (static_cast<int64_t>(words.size()) != v->second.shape[0])
@@ -80,8 +84,8 @@ WordVectors convert_wink_embeddings(const std::string& json_path, int max_words)
         throw Error(json_path, "json", "valid JSON");
     }
     const auto dims = doc.is_object() ? doc.find("dimensions") : doc.end();
-    if (!doc.is_object() || !doc.contains("words") || !doc["words"].is_array() || !doc.contains("vectors") || !doc["vectors"].is_object() ||
-        dims == doc.end() || !dims->is_number_integer() || dims->get<int64_t>() != kDims)
+    if (!doc.is_object() || !doc.contains("words") || !doc["words"].is_array() || !doc.contains("vectors") ||
+        !doc["vectors"].is_object() || dims == doc.end() || !dims->is_number_integer() || dims->get<int64_t>() != kDims)
         throw Error(json_path, "header", "an object with words (a list), vectors (an object) and dimensions = 100");
     const auto& all = doc["words"];
     const auto& vectors = doc["vectors"];
@@ -97,7 +101,8 @@ WordVectors convert_wink_embeddings(const std::string& json_path, int max_words)
         for (int d = 0; d < kDims; ++d) {
             const nlohmann::json& x = (*it)[static_cast<size_t>(d)];
             if (!x.is_number() || !std::isfinite(x.get<double>()) || std::fabs(x.get<double>()) > kMaxHalf)
-                throw Error(json_path, "vectors." + w + "[" + std::to_string(d) + "]", "a finite number within ±65504 (float16)", x.dump());
+                throw Error(json_path, "vectors." + w + "[" + std::to_string(d) + "]",
+                            "a finite number within ±65504 (float16)", x.dump());
             values.push_back(x.get<float>());
         }
     }

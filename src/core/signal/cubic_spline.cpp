@@ -14,7 +14,8 @@ CubicSpline::CubicSpline(const Samples& y, double dt) : y_(y), dt_(dt) {
     // Interior rows: M[i-1] + 4 M[i] + M[i+1] = 6 / dt^2 (y[i-1] - 2 y[i] + y[i+1]). Not-a-knot on a uniform grid
     // means M0 = 2 M1 - M2 and M[n-1] = 2 M[n-2] - M[n-3], which turn rows 1 and n-2 into 6 M = rhs.
     Samples rhs = Samples::Zero(n, y.cols());
-    for (Eigen::Index i = 1; i + 1 < n; ++i) rhs.row(i) = 6.0 / (dt * dt) * (y.row(i - 1) - 2.0 * y.row(i) + y.row(i + 1));
+    for (Eigen::Index i = 1; i + 1 < n; ++i)
+        rhs.row(i) = 6.0 / (dt * dt) * (y.row(i - 1) - 2.0 * y.row(i) + y.row(i + 1));
     m_ = Samples::Zero(n, y.cols());
     m_.row(1) = rhs.row(1) / 6.0;
     m_.row(n - 2) = rhs.row(n - 2) / 6.0;
@@ -48,7 +49,8 @@ void CubicSpline::evaluate(double t, Eigen::VectorXd* value, Eigen::VectorXd* d1
     const auto y0 = y_.row(i).transpose(), y1 = y_.row(i + 1).transpose();
     const auto m0 = m_.row(i).transpose(), m1 = m_.row(i + 1).transpose();
     if (value)
-        *value = m0 * (a * a * a) / (6 * h) + m1 * (b * b * b) / (6 * h) + (y0 / h - m0 * h / 6) * a + (y1 / h - m1 * h / 6) * b;
+        *value = m0 * (a * a * a) / (6 * h) + m1 * (b * b * b) / (6 * h) + (y0 / h - m0 * h / 6) * a +
+                 (y1 / h - m1 * h / 6) * b;
     if (d1) *d1 = -m0 * (a * a) / (2 * h) + m1 * (b * b) / (2 * h) - (y0 / h - m0 * h / 6) + (y1 / h - m1 * h / 6);
     if (d2) *d2 = m0 * (a / h) + m1 * (b / h);
 }

@@ -14,8 +14,7 @@ std::size_t next_power_of_two(std::size_t n) {
 
 void fft_in_place(std::vector<std::complex<double>>& data, bool inverse) {
     const std::size_t n = data.size();
-    if (n == 0 || (n & (n - 1)) != 0)
-        throw Error("fft", "length", "a power of two", std::to_string(n));
+    if (n == 0 || (n & (n - 1)) != 0) throw Error("fft", "length", "a power of two", std::to_string(n));
     // Bit-reversal permutation, then Cooley-Tukey butterflies of doubling span.
     for (std::size_t i = 1, j = 0; i < n; ++i) {
         std::size_t bit = n >> 1;

@@ -10,7 +10,8 @@ TimeSeries gaussian_filter1d_nearest(const TimeSeries& x, double sigma, double t
     const int radius = static_cast<int>(truncate * sigma + 0.5);
     std::vector<double> w(static_cast<size_t>(2 * radius + 1));
     double sum = 0;
-    for (int k = -radius; k <= radius; ++k) sum += w[static_cast<size_t>(k + radius)] = std::exp(-0.5 * k * k / (sigma * sigma));
+    for (int k = -radius; k <= radius; ++k)
+        sum += w[static_cast<size_t>(k + radius)] = std::exp(-0.5 * k * k / (sigma * sigma));
     for (double& v : w) v /= sum;
 
     const int n = static_cast<int>(x.rows());

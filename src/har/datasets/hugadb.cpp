@@ -17,8 +17,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* kActivities[] = {"walking", "running", "stairs_up", "stairs_down", "sitting", "sitting_down", "standing_up",
-                             "standing", "bicycling", "elevator_up", "elevator_down", "sitting_in_car"};
+const char* kActivities[] = {"walking",     "running",  "stairs_up", "stairs_down", "sitting",       "sitting_down",
+                             "standing_up", "standing", "bicycling", "elevator_up", "elevator_down", "sitting_in_car"};
 const char* kPositions[] = {"right_foot", "right_shin", "right_thigh", "left_foot", "left_shin", "left_thigh"};
 constexpr double kAccScale = 2.0 / 32768.0 * 9.80665;
 constexpr double kGyroScale = 2000.0 / 32768.0 * M_PI / 180.0;
@@ -56,7 +56,8 @@ std::vector<ImuRecording> read_hugadb_file(const std::string& path) {
             v.push_back(*x);
         }
         if (v.size() != 39)
-            throw Error(path, "line " + std::to_string(n), "39 numbers (6 IMUs x 6, 2 EMG, activity)", std::to_string(v.size()));
+            throw Error(path, "line " + std::to_string(n), "39 numbers (6 IMUs x 6, 2 EMG, activity)",
+                        std::to_string(v.size()));
         // Checked as a double first: casting -1.9e10 to int is undefined behaviour (found by fuzz_hugadb).
         if (!(v[38] >= 1 && v[38] <= 12 && v[38] == std::floor(v[38])))
             throw Error(path, "line " + std::to_string(n), "an activity id from 1 to 12", std::to_string(v[38]));
@@ -77,13 +78,16 @@ std::vector<ImuRecording> read_hugadb_file(const std::string& path) {
             r.activity = kActivities[activity[start] - 1];
             r.position = kPositions[p];
             r.rate_hz = kHuGaDBRateHz;
-            r.path = "hugadb/" + subject + "/" + r.activity + "_" + trial + "_seg" + std::to_string(seg) + "_" + r.position + ".csv";
+            r.path = "hugadb/" + subject + "/" + r.activity + "_" + trial + "_seg" + std::to_string(seg) + "_" +
+                     r.position + ".csv";
             r.extra["source_file"] = fs::path(path).filename().string();
             r.extra["gyro_flag"] = "unknown";
             for (size_t i = start; i < end; ++i) {
                 r.t.push_back(static_cast<double>(i - start) / kHuGaDBRateHz);
                 std::array<double, 6> s;
-                for (int c = 0; c < 6; ++c) s[static_cast<size_t>(c)] = rows[i][static_cast<size_t>(6 * p + c)] * (c < 3 ? kAccScale : kGyroScale);
+                for (int c = 0; c < 6; ++c)
+                    s[static_cast<size_t>(c)] =
+                        rows[i][static_cast<size_t>(6 * p + c)] * (c < 3 ? kAccScale : kGyroScale);
                 r.samples.push_back(s);
             }
             out.push_back(std::move(r));
@@ -94,7 +98,8 @@ std::vector<ImuRecording> read_hugadb_file(const std::string& path) {
 }
 
 std::vector<ImuRecording> import_hugadb(const std::string& dir) {
-    return import_release_files(dir, std::regex(R"(HuGaDB_v1_.*\.txt)"), "HuGaDB_v1_*.txt release files", read_hugadb_file, nullptr);
+    return import_release_files(dir, std::regex(R"(HuGaDB_v1_.*\.txt)"), "HuGaDB_v1_*.txt release files",
+                                read_hugadb_file, nullptr);
 }
 
 }  // namespace t2imu

@@ -20,6 +20,7 @@ namespace t2imu {
 constexpr double kHuGaDBRateHz = 58.82;
 
 std::vector<ImuRecording> read_hugadb_file(const std::string& path);
-std::vector<ImuRecording> import_hugadb(const std::string& dir);  // every HuGaDB_v1_*.txt under dir; stops at a bad file
+std::vector<ImuRecording> import_hugadb(
+    const std::string& dir);  // every HuGaDB_v1_*.txt under dir; stops at a bad file
 
 }  // namespace t2imu

@@ -41,10 +41,13 @@ Stream parse_stream(const std::vector<uint8_t>& bytes, const std::string& source
     // A finite number in every cell: a nan would be written through and refused by the dataset's own reader.
     const auto finite = [&](size_t r, size_t c) {
         const double v = t.number(r, c);
-        if (!std::isfinite(v)) throw Error(source, "row " + std::to_string(r + 2) + " column '" + t.header[c] + "'", "a finite number", t.rows[r][c]);
+        if (!std::isfinite(v))
+            throw Error(source, "row " + std::to_string(r + 2) + " column '" + t.header[c] + "'", "a finite number",
+                        t.rows[r][c]);
         return v;
     };
-    for (size_t r = 0; r < t.rows.size(); ++r) rows.push_back({finite(r, time), {finite(r, x), finite(r, y), finite(r, z)}});
+    for (size_t r = 0; r < t.rows.size(); ++r)
+        rows.push_back({finite(r, time), {finite(r, x), finite(r, y), finite(r, z)}});
     std::stable_sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     Stream s;
     for (const auto& [ms, v] : rows)
@@ -92,7 +95,8 @@ std::string canonical_activity(const std::string& a) {
 std::vector<ImuRecording> read_realworld_proband(const std::string& proband_dir, std::vector<std::string>* skipped) {
     const std::string subject = fs::path(proband_dir).filename().string();
     const std::string data = proband_dir + "/data";
-    if (!fs::is_directory(data)) throw Error(proband_dir, "data", "a data/ folder of <sensor>_<activity>_csv.zip archives");
+    if (!fs::is_directory(data))
+        throw Error(proband_dir, "data", "a data/ folder of <sensor>_<activity>_csv.zip archives");
     Streams streams;
     std::vector<std::string> zips;
     for (const auto& e : fs::directory_iterator(data))
@@ -104,8 +108,9 @@ std::vector<ImuRecording> read_realworld_proband(const std::string& proband_dir,
     std::map<std::pair<std::string, int>, std::vector<StreamKey>> parts;
     for (const auto& [key, pair] : streams) {
         if (pair[0].t_ms.size() < 2 || pair[1].t_ms.size() < 2) {
-            if (skipped) skipped->push_back(subject + " " + key.activity + " part " + std::to_string(key.part) + " " + key.position +
-                                            ": accelerometer or gyroscope file missing");
+            if (skipped)
+                skipped->push_back(subject + " " + key.activity + " part " + std::to_string(key.part) + " " +
+                                   key.position + ": accelerometer or gyroscope file missing");
             continue;
         }
         parts[{key.activity, key.part}].push_back(key);
@@ -120,7 +125,9 @@ std::vector<ImuRecording> read_realworld_proband(const std::string& proband_dir,
             }
         const double step_ms = 1000.0 / kRealWorldRateHz;
         if (t1 - t0 < step_ms) {
-            if (skipped) skipped->push_back(subject + " " + part.first + " part " + std::to_string(part.second) + ": streams do not overlap");
+            if (skipped)
+                skipped->push_back(subject + " " + part.first + " part " + std::to_string(part.second) +
+                                   ": streams do not overlap");
             continue;
         }
         const size_t n = static_cast<size_t>(std::floor((t1 - t0) / step_ms + 1e-9)) + 1;
@@ -131,7 +138,8 @@ std::vector<ImuRecording> read_realworld_proband(const std::string& proband_dir,
             r.activity = canonical_activity(k.activity);
             r.position = k.position;
             r.rate_hz = kRealWorldRateHz;
-            r.path = "realworld/" + subject + "/" + r.activity + "_" + std::to_string(k.part) + "_seg0_" + k.position + ".csv";
+            r.path = "realworld/" + subject + "/" + r.activity + "_" + std::to_string(k.part) + "_seg0_" + k.position +
+                     ".csv";
             r.extra["source_file"] = subject + "/data/*_" + k.activity + "_csv.zip";
             r.extra["start_ms"] = std::to_string(static_cast<long long>(std::llround(t0)));
             const auto& [acc, gyr] = streams[k];
@@ -150,7 +158,8 @@ std::vector<ImuRecording> read_realworld_proband(const std::string& proband_dir,
 std::vector<ImuRecording> import_realworld(const std::string& dir, std::vector<std::string>* skipped) {
     std::vector<std::string> probands;
     for (const auto& e : fs::directory_iterator(dir))
-        if (e.is_directory() && e.path().filename().string().rfind("proband", 0) == 0) probands.push_back(e.path().string());
+        if (e.is_directory() && e.path().filename().string().rfind("proband", 0) == 0)
+            probands.push_back(e.path().string());
     if (probands.empty()) throw Error(dir, "folders", "proband<N>/ folders of the RealWorld release");
     std::sort(probands.begin(), probands.end());
     std::vector<ImuRecording> out;
@@ -159,7 +168,8 @@ std::vector<ImuRecording> import_realworld(const std::string& dir, std::vector<s
         out.insert(out.end(), r.begin(), r.end());
     }
     if (out.empty())
-        throw Error(dir, "recordings", "at least one usable recording among " + std::to_string(probands.size()) + " proband folders",
+        throw Error(dir, "recordings",
+                    "at least one usable recording among " + std::to_string(probands.size()) + " proband folders",
                     skipped && !skipped->empty() ? "none; first refusal: " + skipped->front() : "none");
     return out;
 }

@@ -19,7 +19,8 @@ std::vector<ImuRecording> import_release_files(const std::string& dir, const std
     namespace fs = std::filesystem;
     std::vector<std::string> files;
     for (const auto& e : fs::recursive_directory_iterator(dir))
-        if (e.is_regular_file() && std::regex_match(e.path().filename().string(), file_name)) files.push_back(e.path().string());
+        if (e.is_regular_file() && std::regex_match(e.path().filename().string(), file_name))
+            files.push_back(e.path().string());
     if (files.empty()) throw Error(dir, "files", expected);
     std::sort(files.begin(), files.end());
     std::vector<ImuRecording> out;
@@ -33,7 +34,8 @@ std::vector<ImuRecording> import_release_files(const std::string& dir, const std
         }
     }
     if (out.empty())
-        throw Error(dir, "recordings", "at least one usable recording among " + std::to_string(files.size()) + " " + expected,
+        throw Error(dir, "recordings",
+                    "at least one usable recording among " + std::to_string(files.size()) + " " + expected,
                     skipped && !skipped->empty() ? "none; first refusal: " + skipped->front() : "none");
     return out;
 }

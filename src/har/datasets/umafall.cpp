@@ -22,11 +22,18 @@ constexpr double kRateHz = 20.0;
 constexpr double kGyroLimitDeg = 256.0;
 
 std::string activity_name(const std::string& movement) {
-    static const std::map<std::string, std::string> names = {
-        {"Walking", "walking"}, {"Jogging", "jogging"}, {"GoUpstairs", "stairs_up"}, {"GoDownstairs", "stairs_down"},
-        {"Hopping", "jumping"}, {"LyingDown_OnABed", "lie_down_get_up_bed"},
-        {"Sitting_GettingUpOnAChair", "sit_down_stand_up"}, {"Bending", "bending"}, {"Aplausing", "applauding"},
-        {"HandsUp", "hands_up"}, {"MakingACall", "making_a_call"}, {"OpeningDoor", "opening_door"}};
+    static const std::map<std::string, std::string> names = {{"Walking", "walking"},
+                                                             {"Jogging", "jogging"},
+                                                             {"GoUpstairs", "stairs_up"},
+                                                             {"GoDownstairs", "stairs_down"},
+                                                             {"Hopping", "jumping"},
+                                                             {"LyingDown_OnABed", "lie_down_get_up_bed"},
+                                                             {"Sitting_GettingUpOnAChair", "sit_down_stand_up"},
+                                                             {"Bending", "bending"},
+                                                             {"Aplausing", "applauding"},
+                                                             {"HandsUp", "hands_up"},
+                                                             {"MakingACall", "making_a_call"},
+                                                             {"OpeningDoor", "opening_door"}};
     const auto it = names.find(movement);
     return it != names.end() ? it->second : movement;
 }
@@ -52,7 +59,8 @@ double sample_value(const std::string& s, const std::string& path, int line) {
 }  // namespace
 
 std::vector<ImuRecording> read_umafall_file(const std::string& path) {
-    static const std::regex name(R"(UMAFall_Subject_(\d+)_(ADL|Fall)_(.+)_(\d+)_(\d{4}-\d{2}-\d{2}_\d{2}-\d{2}-\d{2})\.csv)");
+    static const std::regex name(
+        R"(UMAFall_Subject_(\d+)_(ADL|Fall)_(.+)_(\d+)_(\d{4}-\d{2}-\d{2}_\d{2}-\d{2}-\d{2})\.csv)");
     std::smatch m;
     const std::string file = fs::path(path).filename().string();
     if (!std::regex_match(file, m, name))
@@ -77,7 +85,9 @@ std::vector<ImuRecording> read_umafall_file(const std::string& path) {
                 std::string pos = t[2];
                 std::transform(pos.begin(), pos.end(), pos.begin(), [](unsigned char c) { return std::tolower(c); });
                 const int id = release_index(t[1], path, "line " + std::to_string(n) + " sensor id");
-                if (positions.count(id)) throw Error(path, "line " + std::to_string(n) + " sensor id", "an id listed once (two tags cannot share it)", t[1]);
+                if (positions.count(id))
+                    throw Error(path, "line " + std::to_string(n) + " sensor id",
+                                "an id listed once (two tags cannot share it)", t[1]);
                 positions[id] = pos;
             }
             continue;
@@ -86,15 +96,18 @@ std::vector<ImuRecording> read_umafall_file(const std::string& path) {
         std::stringstream cells(line);
         std::string cell;
         while (std::getline(cells, cell, ';')) f.push_back(trim(cell));
-        if (f.size() < 7) throw Error(path, "line " + std::to_string(n), "TimeStamp;Sample No;X;Y;Z;Sensor Type;Sensor ID");
+        if (f.size() < 7)
+            throw Error(path, "line " + std::to_string(n), "TimeStamp;Sample No;X;Y;Z;Sensor Type;Sensor ID");
         const int id = release_index(f[6], path, "line " + std::to_string(n) + " sensor id");
         const int type = release_index(f[5], path, "line " + std::to_string(n) + " sensor type");
         if (!positions.count(id) || type > 1) continue;  // the phone, or the magnetometer
         // The sample counter keys the samples: a whole number (a cast of 1e21 to long would be undefined).
         const double sample_no = number(f[1], path, n);
         if (!(sample_no >= 0 && sample_no <= 1e12 && sample_no == std::floor(sample_no)))
-            throw Error(path, "line " + std::to_string(n) + " sample no", "a whole number from 0 to 10^12", "'" + f[1].substr(0, 24) + "'");
-        samples[id][type][static_cast<long>(sample_no)] = {sample_value(f[2], path, n), sample_value(f[3], path, n), sample_value(f[4], path, n)};
+            throw Error(path, "line " + std::to_string(n) + " sample no", "a whole number from 0 to 10^12",
+                        "'" + f[1].substr(0, 24) + "'");
+        samples[id][type][static_cast<long>(sample_no)] = {sample_value(f[2], path, n), sample_value(f[3], path, n),
+                                                           sample_value(f[4], path, n)};
     }
     std::vector<ImuRecording> out;
     for (const auto& [id, position] : positions) {
@@ -104,7 +117,8 @@ std::vector<ImuRecording> read_umafall_file(const std::string& path) {
         r.activity = activity;
         r.position = position;
         r.rate_hz = kRateHz;
-        r.path = "umafall/" + subject + "/" + activity + "_" + m[4].str() + "_" + m[5].str() + "_seg0_" + position + ".csv";
+        r.path =
+            "umafall/" + subject + "/" + activity + "_" + m[4].str() + "_" + m[5].str() + "_seg0_" + position + ".csv";
         r.extra["source_file"] = "UMAFall_Dataset/" + file;
         size_t clipped = 0;
         const auto& acc = samples[id][0];
@@ -115,7 +129,8 @@ std::vector<ImuRecording> read_umafall_file(const std::string& path) {
             const double k = M_PI / 180.0, s = 9.80665;
             r.t.push_back(static_cast<double>(r.t.size()) / kRateHz);
             r.samples.push_back({a[0] * s, a[1] * s, a[2] * s, g->second[0] * k, g->second[1] * k, g->second[2] * k});
-            clipped += std::max({std::fabs(g->second[0]), std::fabs(g->second[1]), std::fabs(g->second[2])}) >= kGyroLimitDeg - 1e-9;
+            clipped += std::max({std::fabs(g->second[0]), std::fabs(g->second[1]), std::fabs(g->second[2])}) >=
+                       kGyroLimitDeg - 1e-9;
         }
         if (r.samples.empty()) continue;  // a tag that streamed nothing
         r.extra["gyro_flag"] = clipped > 0.005 * static_cast<double>(r.samples.size()) ? "clipped" : "ok";
@@ -125,7 +140,8 @@ std::vector<ImuRecording> read_umafall_file(const std::string& path) {
 }
 
 std::vector<ImuRecording> import_umafall(const std::string& dir, std::vector<std::string>* skipped) {
-    return import_release_files(dir, std::regex(R"(UMAFall_.*\.csv)"), "UMAFall_*.csv release files", read_umafall_file, skipped);
+    return import_release_files(dir, std::regex(R"(UMAFall_.*\.csv)"), "UMAFall_*.csv release files", read_umafall_file,
+                                skipped);
 }
 
 }  // namespace t2imu

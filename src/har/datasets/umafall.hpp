@@ -6,8 +6,8 @@
 // chest, wrist; MPU-9250) stream at a nominal 20 Hz over BLE; one accelerometer and one gyroscope row with the
 // same Sample No come from one notification, so they are paired by it (samples without both are dropped).
 // The logged timestamps are phone arrival times with BLE jitter, so t = k / 20 s. acc x 9.80665 -> m/s^2, gyro
-// x pi/180 -> rad/s. `gyro_flag` is "clipped" when more than 0.005 of the samples reach the +-256 deg/s limit. The phone
-// in the pocket (no gyroscope) and the falls are not imported.
+// x pi/180 -> rad/s. `gyro_flag` is "clipped" when more than 0.005 of the samples reach the +-256 deg/s limit. The
+// phone in the pocket (no gyroscope) and the falls are not imported.
 #pragma once
 #include <string>
 #include <vector>

@@ -10,7 +10,8 @@ namespace t2imu {
 constexpr int kDeepConvLstmMinWindow = 4 * (5 - 1) + 1;
 
 struct DeepConvLstmImpl : torch::nn::Module {
-    DeepConvLstmImpl(int channels, int classes, int filters = 64, int kernel = 5, int hidden = 128, double dropout = 0.5);
+    DeepConvLstmImpl(int channels, int classes, int filters = 64, int kernel = 5, int hidden = 128,
+                     double dropout = 0.5);
     // x: [batch, time, channels] -> logits [batch, classes] (softmax is in the loss / argmax).
     torch::Tensor forward(const torch::Tensor& x);
 

@@ -4,17 +4,17 @@
 #include <chrono>
 #include <cmath>
 #include <map>
-#include <numeric>
 #include <nlohmann/json.hpp>
+#include <numeric>
 #include <random>
 #include <set>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
-#include "har/subject_draw.hpp"
 #include "core/progress.hpp"
 #include "har/class_map.hpp"
 #include "har/nn/deepconvlstm.hpp"
+#include "har/subject_draw.hpp"
 
 namespace t2imu {
 
@@ -65,7 +65,8 @@ torch::Tensor windows_tensor(const Labelled& d, const std::vector<size_t>& which
         const float* in = d.w->data.data() + d.index[which[b]] * static_cast<size_t>(T * C);
         for (int64_t t = 0; t < T; ++t)
             for (int64_t c = 0; c < C; ++c)
-                *out++ = static_cast<float>((in[t * C + c] - n.mean[static_cast<size_t>(c)]) / n.sd[static_cast<size_t>(c)]);
+                *out++ =
+                    static_cast<float>((in[t * C + c] - n.mean[static_cast<size_t>(c)]) / n.sd[static_cast<size_t>(c)]);
     }
     return x;
 }
@@ -97,7 +98,8 @@ void split_validation(const Labelled& all, double share, uint64_t seed, Labelled
         std::shuffle(groups.begin(), groups.end(), rng);
         size_t take = static_cast<size_t>(std::ceil(share * static_cast<double>(groups.size())));
         if (groups.size() < 2) take = 0;
-        held_out.insert(groups.begin(), groups.begin() + static_cast<std::ptrdiff_t>(std::min(take, groups.size() - 1)));
+        held_out.insert(groups.begin(),
+                        groups.begin() + static_cast<std::ptrdiff_t>(std::min(take, groups.size() - 1)));
     }
     *fit = Labelled{all.w, {}, {}, {}};
     *val = Labelled{all.w, {}, {}, {}};
@@ -111,7 +113,10 @@ torch::Tensor class_weights(const Labelled& fit, int classes) {
     for (int l : fit.label) count[static_cast<size_t>(l)] += 1;
     std::vector<float> weight(static_cast<size_t>(classes));
     for (int k = 0; k < classes; ++k)
-        weight[static_cast<size_t>(k)] = count[static_cast<size_t>(k)] > 0 ? static_cast<float>(fit.label.size() / (classes * count[static_cast<size_t>(k)])) : 0.f;
+        weight[static_cast<size_t>(k)] =
+            count[static_cast<size_t>(k)] > 0
+                ? static_cast<float>(fit.label.size() / (classes * count[static_cast<size_t>(k)]))
+                : 0.f;
     return torch::tensor(weight);
 }
 
@@ -136,7 +141,8 @@ public:
             std::shuffle(order_.begin(), order_.end(), rng_);
             for (size_t start = 0; start < order_.size(); start += static_cast<size_t>(batch_))
                 batches.emplace_back(order_.begin() + static_cast<std::ptrdiff_t>(start),
-                                     order_.begin() + static_cast<std::ptrdiff_t>(std::min(order_.size(), start + static_cast<size_t>(batch_))));
+                                     order_.begin() + static_cast<std::ptrdiff_t>(std::min(
+                                                          order_.size(), start + static_cast<size_t>(batch_))));
             return batches;
         }
         std::vector<size_t> sizes;
@@ -175,12 +181,14 @@ struct StageSettings {
 
 // Trains `model` on `fit`, early stopping on `val`'s balanced accuracy (patience o.patience), and leaves it at its
 // best epoch. Fills the run's epochs and seconds per epoch.
-void train_stage(DeepConvLstm& model, const Normaliser& norm, const Labelled& fit, const Labelled& val, int classes, const HarOptions& o,
-                 const StageSettings& stage, uint64_t seed, HarRun* run) {
+void train_stage(DeepConvLstm& model, const Normaliser& norm, const Labelled& fit, const Labelled& val, int classes,
+                 const HarOptions& o, const StageSettings& stage, uint64_t seed, HarRun* run) {
     torch::optim::Adam optimiser(model->parameters(), torch::optim::AdamOptions(stage.learning_rate));
     const torch::Tensor class_weight = class_weights(fit, classes);
     const Labelled& monitor = val.index.empty() ? fit : val;
-    const auto score_now = [&] { return balanced_accuracy(confusion_matrix(monitor.label, predict(model, monitor, norm), classes)); };
+    const auto score_now = [&] {
+        return balanced_accuracy(confusion_matrix(monitor.label, predict(model, monitor, norm), classes));
+    };
     BatchOrder order(fit, stage.shares, o.batch, seed);
     double best = -1, seconds = 0;
     int since_best = 0;
@@ -239,11 +247,14 @@ TrainedNet train_from_scratch(const Labelled& train, const Labelled* val_given, 
                               const std::vector<double>& shares, uint64_t seed) {
     torch::manual_seed(seed);
     Labelled fit, val;
-    if (val_given) fit = train, val = *val_given;
-    else split_validation(train, o.validation_share, seed, &fit, &val);
+    if (val_given)
+        fit = train, val = *val_given;
+    else
+        split_validation(train, o.validation_share, seed, &fit, &val);
     if (fit.index.empty()) throw Error("har", "training windows", "at least one window per class to train on");
     TrainedNet net{DeepConvLstm(train.w->channels, classes), fit_normaliser(fit), {}};
-    train_stage(net.model, net.norm, fit, val, classes, o, {o.learning_rate, o.max_epochs, shares, false}, seed, &net.run);
+    train_stage(net.model, net.norm, fit, val, classes, o, {o.learning_rate, o.max_epochs, shares, false}, seed,
+                &net.run);
     return net;
 }
 
@@ -254,7 +265,8 @@ HarRun fit_and_test(const Labelled& train, const Labelled& test, int classes, co
 }
 
 // Class names of each side after the per-data-set maps and the coarsening rule; the shared ones, sorted.
-std::vector<std::string> shared_classes(const WindowSet& a, const WindowSet& b, std::map<std::string, std::string>* rename_a,
+std::vector<std::string> shared_classes(const WindowSet& a, const WindowSet& b,
+                                        std::map<std::string, std::string>* rename_a,
                                         std::map<std::string, std::string>* rename_b) {
     const std::set<std::string> la(a.labels.begin(), a.labels.end()), lb(b.labels.begin(), b.labels.end());
     std::set<std::string> ca, cb;
@@ -265,9 +277,11 @@ std::vector<std::string> shared_classes(const WindowSet& a, const WindowSet& b, 
     return shared;
 }
 
-// The windows whose class is one of `classes`; with `held_out`, only those of (or, with exclude, not of) those subjects.
-Labelled labelled(const WindowSet& w, const std::vector<std::string>& classes, const std::map<std::string, std::string>& rename,
-                  const std::set<std::string>* held_out = nullptr, bool exclude = false) {
+// The windows whose class is one of `classes`; with `held_out`, only those of (or, with exclude, not of) those
+// subjects.
+Labelled labelled(const WindowSet& w, const std::vector<std::string>& classes,
+                  const std::map<std::string, std::string>& rename, const std::set<std::string>* held_out = nullptr,
+                  bool exclude = false) {
     Labelled d{&w, {}, {}, {}};
     for (size_t i = 0; i < w.size(); ++i) {
         if (held_out && (held_out->count(w.subjects[i]) > 0) == exclude) continue;
@@ -285,8 +299,10 @@ void HarOptions::validate() const {
     if (max_epochs < 1) throw Error("har", "--epochs", "at least 1 epoch", std::to_string(max_epochs));
     if (patience < 1) throw Error("har", "patience", "at least 1 epoch", std::to_string(patience));
     if (batch < 1) throw Error("har", "batch", "at least 1 window", std::to_string(batch));
-    if (!(learning_rate > 0 && std::isfinite(learning_rate))) throw Error("har", "learning_rate", "a positive number", std::to_string(learning_rate));
-    if (!(validation_share >= 0 && validation_share < 1)) throw Error("har", "validation_share", "0 to below 1", std::to_string(validation_share));
+    if (!(learning_rate > 0 && std::isfinite(learning_rate)))
+        throw Error("har", "learning_rate", "a positive number", std::to_string(learning_rate));
+    if (!(validation_share >= 0 && validation_share < 1))
+        throw Error("har", "validation_share", "0 to below 1", std::to_string(validation_share));
 }
 
 HarResult train_and_test(const WindowSet& train, const WindowSet& test, const HarOptions& o) {
@@ -297,13 +313,15 @@ HarResult train_and_test(const WindowSet& train, const WindowSet& test, const Ha
     std::map<std::string, std::string> rename_train, rename_test;
     HarResult r;
     r.classes = shared_classes(train, test, &rename_train, &rename_test);
-    if (r.classes.size() < 2) throw Error("har", "classes", "at least two classes both data sets have", std::to_string(r.classes.size()));
+    if (r.classes.size() < 2)
+        throw Error("har", "classes", "at least two classes both data sets have", std::to_string(r.classes.size()));
     const Labelled tr = labelled(train, r.classes, rename_train), te = labelled(test, r.classes, rename_test);
     r.train_windows = tr.index.size();
     r.test_windows = te.index.size();
     Progress progress("HAR", static_cast<size_t>(o.repeats), "trainings");
     for (int k = 0; k < o.repeats; ++k) {
-        r.runs.push_back(fit_and_test(tr, te, static_cast<int>(r.classes.size()), o, o.seed + static_cast<uint64_t>(k)));
+        r.runs.push_back(
+            fit_and_test(tr, te, static_cast<int>(r.classes.size()), o, o.seed + static_cast<uint64_t>(k)));
         r.run_names.push_back("seed " + std::to_string(o.seed + static_cast<uint64_t>(k)));
         progress.advance();
     }
@@ -318,7 +336,8 @@ HarResult leave_one_subject_out(const WindowSet& data, const HarOptions& o, int 
     HarResult r;
     r.classes.assign(labels.begin(), labels.end());
     const std::set<std::string> subjects(data.subjects.begin(), data.subjects.end());
-    if (subjects.size() < 2) throw Error("har", "subjects", "at least two subjects for --loso", std::to_string(subjects.size()));
+    if (subjects.size() < 2)
+        throw Error("har", "subjects", "at least two subjects for --loso", std::to_string(subjects.size()));
     const size_t k = folds > 0 ? std::min(static_cast<size_t>(folds), subjects.size()) : subjects.size();
     std::vector<std::set<std::string>> held_out(k);
     size_t i = 0;
@@ -327,8 +346,11 @@ HarResult leave_one_subject_out(const WindowSet& data, const HarOptions& o, int 
     for (size_t fold = 0; fold < k; ++fold) {
         std::string name;
         for (const std::string& s : held_out[fold]) name += (name.empty() ? "" : "+") + s;
-        const Labelled tr = labelled(data, r.classes, rename, &held_out[fold], true), te = labelled(data, r.classes, rename, &held_out[fold], false);
-        if (o.verbose) std::fprintf(stderr, "fold %s: %zu train, %zu test windows\n", name.c_str(), tr.index.size(), te.index.size());
+        const Labelled tr = labelled(data, r.classes, rename, &held_out[fold], true),
+                       te = labelled(data, r.classes, rename, &held_out[fold], false);
+        if (o.verbose)
+            std::fprintf(stderr, "fold %s: %zu train, %zu test windows\n", name.c_str(), tr.index.size(),
+                         te.index.size());
         r.runs.push_back(fit_and_test(tr, te, static_cast<int>(r.classes.size()), o, o.seed + fold));
         r.run_names.push_back(name);
         r.train_windows += tr.index.size();
@@ -349,12 +371,16 @@ const char* har_protocol_name(HarProtocol protocol) { return protocol == HarProt
 void SeveralSetsOptions::validate(size_t sets, int batch) const {
     if (sets < 1) throw Error("har run", "--train", "at least one training set");
     check_shares(shares, sets, batch, "--train-share");
-    if (test_set >= static_cast<int>(sets)) throw Error("har", "test_set", "one of the " + std::to_string(sets) + " training sets");
+    if (test_set >= static_cast<int>(sets))
+        throw Error("har", "test_set", "one of the " + std::to_string(sets) + " training sets");
     if (test_set < 0 && train_subjects != 0)
-        throw Error("--train-subjects", std::to_string(train_subjects), "a --train that is also the --test set to draw the subjects from");
+        throw Error("--train-subjects", std::to_string(train_subjects),
+                    "a --train that is also the --test set to draw the subjects from");
     if (protocol == HarProtocol::finetune) {
         if (test_set < 0 || sets < 2)
-            throw Error("--protocol", "finetune", "a set to pretrain on and a --train that is also --test, with --train-subjects to fine-tune on");
+            throw Error(
+                "--protocol", "finetune",
+                "a set to pretrain on and a --train that is also --test, with --train-subjects to fine-tune on");
         if (!shares.empty()) throw Error("--train-share", "finetune", "--protocol mix (fine-tuning trains on one set)");
     }
     validate_values();
@@ -374,8 +400,8 @@ namespace {
 // groups prefixed by the set's index so trials of two sets never merge.
 struct SetsWindows {
     WindowSet all;
-    std::vector<int> set_of;               // per window of `all`
-    std::vector<std::string> classes;      // those the test set and every training set hold, sorted
+    std::vector<int> set_of;           // per window of `all`
+    std::vector<std::string> classes;  // those the test set and every training set hold, sorted
     std::map<std::string, std::string> rename_test;
 };
 
@@ -395,7 +421,8 @@ SetsWindows sets_windows(const std::vector<TrainingSet>& train, const WindowSet&
     for (size_t i = 0; i < train.size(); ++i) {
         const WindowSet& w = *train[i].windows;
         if (w.channels != test.channels || w.length != test.length)
-            throw Error(train[i].name, "windows", "the test set's channels and length", std::to_string(w.channels) + " channels");
+            throw Error(train[i].name, "windows", "the test set's channels and length",
+                        std::to_string(w.channels) + " channels");
         std::map<std::string, std::string> rename;
         std::set<std::string> mine;
         for (const std::string& l : li[i]) {
@@ -415,7 +442,8 @@ SetsWindows sets_windows(const std::vector<TrainingSet>& train, const WindowSet&
         }
     }
     s.classes.assign(shared.begin(), shared.end());
-    if (s.classes.size() < 2) throw Error("har", "classes", "at least two classes every data set has", std::to_string(s.classes.size()));
+    if (s.classes.size() < 2)
+        throw Error("har", "classes", "at least two classes every data set has", std::to_string(s.classes.size()));
     return s;
 }
 
@@ -425,7 +453,8 @@ Labelled pick_windows(const SetsWindows& s, const Take& take) {
     Labelled d{&s.all, {}, {}, {}};
     for (size_t i = 0; i < s.all.size(); ++i) {
         const auto it = std::find(s.classes.begin(), s.classes.end(), s.all.labels[i]);
-        if (it != s.classes.end() && take(s.set_of[i], s.all.subjects[i])) d.add(i, static_cast<int>(it - s.classes.begin()), s.set_of[i]);
+        if (it != s.classes.end() && take(s.set_of[i], s.all.subjects[i]))
+            d.add(i, static_cast<int>(it - s.classes.begin()), s.set_of[i]);
     }
     return d;
 }
@@ -455,8 +484,9 @@ HarPretrained::~HarPretrained() = default;
 namespace {
 
 // The pretrained network of `names` at `seed`: the one `keep` holds, or trained now (and kept there).
-const TrainedNet& pretrained_net(const Labelled& others, const std::vector<std::string>& names, const std::vector<std::string>& classes,
-                                 const HarOptions& o, HarPretrained* keep, TrainedNet* local) {
+const TrainedNet& pretrained_net(const Labelled& others, const std::vector<std::string>& names,
+                                 const std::vector<std::string>& classes, const HarOptions& o, HarPretrained* keep,
+                                 TrainedNet* local) {
     if (keep && keep->state) {
         if (keep->state->sets != names || keep->state->classes != classes || keep->state->seed != o.seed)
             throw Error("har", "pretrained", "a network pretrained on the same sets, classes and seed");
@@ -470,8 +500,8 @@ const TrainedNet& pretrained_net(const Labelled& others, const std::vector<std::
 
 }  // namespace
 
-HarResult train_on_sets(const std::vector<TrainingSet>& train, const WindowSet& test, const HarOptions& o, const SeveralSetsOptions& m,
-                        HarPretrained* keep) {
+HarResult train_on_sets(const std::vector<TrainingSet>& train, const WindowSet& test, const HarOptions& o,
+                        const SeveralSetsOptions& m, HarPretrained* keep) {
     o.validate();
     m.validate(train.size(), o.batch);
     if (m.test_set >= 0 && train[static_cast<size_t>(m.test_set)].windows != &test)
@@ -487,14 +517,18 @@ HarResult train_on_sets(const std::vector<TrainingSet>& train, const WindowSet& 
     for (const TrainingSet& t : train) r.training_sets.push_back(t.name);
     r.shares = m.shares;
     r.protocol = har_protocol_name(m.protocol);
-    if (m.protocol == HarProtocol::finetune) r.finetune_epochs = m.finetune_epochs, r.finetune_learning_rate = m.finetune_learning_rate;
-    std::vector<std::vector<std::string>> draws(static_cast<size_t>(o.repeats));  // drawn now: a refusal comes before any training
+    if (m.protocol == HarProtocol::finetune)
+        r.finetune_epochs = m.finetune_epochs, r.finetune_learning_rate = m.finetune_learning_rate;
+    std::vector<std::vector<std::string>> draws(
+        static_cast<size_t>(o.repeats));  // drawn now: a refusal comes before any training
     if (m.test_set >= 0)
-        for (int k = 0; k < o.repeats; ++k) draws[static_cast<size_t>(k)] = draw_subjects(test.subjects, m.train_subjects, o.seed, k);
+        for (int k = 0; k < o.repeats; ++k)
+            draws[static_cast<size_t>(k)] = draw_subjects(test.subjects, m.train_subjects, o.seed, k);
     const Labelled others = pick_windows(s, [&](int set, const std::string&) { return set != m.test_set; });
     TrainedNet local;
     const TrainedNet* pretrained = nullptr;
-    if (m.protocol == HarProtocol::finetune) pretrained = &pretrained_net(others, r.training_sets, s.classes, o, keep, &local);
+    if (m.protocol == HarProtocol::finetune)
+        pretrained = &pretrained_net(others, r.training_sets, s.classes, o, keep, &local);
     Progress progress("HAR", static_cast<size_t>(o.repeats), "trainings");
     for (int k = 0; k < o.repeats; ++k) {
         const uint64_t seed = o.seed + static_cast<uint64_t>(k);
@@ -506,12 +540,15 @@ HarResult train_on_sets(const std::vector<TrainingSet>& train, const WindowSet& 
             for (const std::string& subject : std::set<std::string>(test.subjects.begin(), test.subjects.end()))
                 if (!drawn.count(subject)) run.test_subjects.push_back(subject);
         }
-        const Labelled real = pick_windows(s, [&](int set, const std::string& subject) { return set == m.test_set && drawn.count(subject); });
+        const Labelled real = pick_windows(
+            s, [&](int set, const std::string& subject) { return set == m.test_set && drawn.count(subject); });
         Labelled real_fit, real_val;
         split_validation(real, o.validation_share, seed, &real_fit, &real_val);
         const std::vector<size_t> per_set = windows_per_set(joined_windows(others, real), train.size());
         for (size_t i = 0; i < m.shares.size(); ++i)
-            if (per_set[i] == 0) throw Error("--train-share", train[i].name, "windows of every set that has a share (this draw has none)");
+            if (per_set[i] == 0)
+                throw Error("--train-share", train[i].name,
+                            "windows of every set that has a share (this draw has none)");
         TrainedNet net;
         if (m.protocol == HarProtocol::finetune) {
             torch::manual_seed(seed);
@@ -522,7 +559,8 @@ HarResult train_on_sets(const std::vector<TrainingSet>& train, const WindowSet& 
                 for (size_t i = 0; i < to.size(); ++i) to[i].copy_(from[i]);
             }
             if (m.finetune_epochs > 0 && !real_fit.index.empty())
-                train_stage(net.model, net.norm, real_fit, real_val, classes, o, {m.finetune_learning_rate, m.finetune_epochs, {}, true}, seed, &net.run);
+                train_stage(net.model, net.norm, real_fit, real_val, classes, o,
+                            {m.finetune_learning_rate, m.finetune_epochs, {}, true}, seed, &net.run);
         } else if (!real.index.empty()) {
             net = train_from_scratch(joined_windows(others, real_fit), &real_val, classes, o, m.shares, seed);
         } else {
@@ -531,7 +569,8 @@ HarResult train_on_sets(const std::vector<TrainingSet>& train, const WindowSet& 
         Labelled te{&test, {}, {}, {}};
         for (size_t i = 0; i < test.size(); ++i) {
             const auto it = std::find(s.classes.begin(), s.classes.end(), s.rename_test.at(test.labels[i]));
-            if (it != s.classes.end() && !drawn.count(test.subjects[i])) te.add(i, static_cast<int>(it - s.classes.begin()));
+            if (it != s.classes.end() && !drawn.count(test.subjects[i]))
+                te.add(i, static_cast<int>(it - s.classes.begin()));
         }
         score_test(net.model, net.norm, te, classes, &net.run);
         net.run.train_subjects = run.train_subjects, net.run.test_subjects = run.test_subjects;
@@ -539,10 +578,12 @@ HarResult train_on_sets(const std::vector<TrainingSet>& train, const WindowSet& 
         r.train_windows += others.index.size() + real.index.size();
         r.test_windows += te.index.size();
         r.runs.push_back(net.run);
-        r.run_names.push_back((m.test_set >= 0 ? "draw " + std::to_string(k) + ", " : "") + "seed " + std::to_string(seed));
+        r.run_names.push_back((m.test_set >= 0 ? "draw " + std::to_string(k) + ", " : "") + "seed " +
+                              std::to_string(seed));
         progress.advance();
     }
-    if (m.test_set < 0) r.train_windows /= static_cast<size_t>(o.repeats), r.test_windows /= static_cast<size_t>(o.repeats);
+    if (m.test_set < 0)
+        r.train_windows /= static_cast<size_t>(o.repeats), r.test_windows /= static_cast<size_t>(o.repeats);
     return r;
 }
 

@@ -15,7 +15,8 @@
 namespace t2imu {
 
 struct BertConfig {
-    int64_t vocab_size = 30522, hidden = 384, layers = 6, heads = 12, intermediate = 1536, max_positions = 512, type_vocab = 2;
+    int64_t vocab_size = 30522, hidden = 384, layers = 6, heads = 12, intermediate = 1536, max_positions = 512,
+            type_vocab = 2;
     double layer_norm_eps = 1e-12;
 };
 
@@ -33,7 +34,8 @@ public:
 
 private:
     struct Layer {
-        torch::nn::Linear query{nullptr}, key{nullptr}, value{nullptr}, attention_out{nullptr}, intermediate{nullptr}, output{nullptr};
+        torch::nn::Linear query{nullptr}, key{nullptr}, value{nullptr}, attention_out{nullptr}, intermediate{nullptr},
+            output{nullptr};
         torch::nn::LayerNorm attention_norm{nullptr}, output_norm{nullptr};
     };
     BertConfig config_;

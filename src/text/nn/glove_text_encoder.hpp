@@ -38,7 +38,7 @@ public:
 private:
     const WordVectors& vectors_;
     GloveEncoderConfig config_;
-    torch::Tensor glove_;  // [V, 100] buffer, not trained
+    torch::Tensor glove_;    // [V, 100] buffer, not trained
     torch::Tensor unknown_;  // [100] parameter
     torch::Tensor pe_;       // [kMaxWords, model_dim]
     torch::nn::Linear project_in_{nullptr}, project_out_{nullptr};
