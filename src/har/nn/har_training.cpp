@@ -18,6 +18,24 @@
 
 namespace t2imu {
 
+// Named, not anonymous: HarPretrained::State (external) holds a TrainedNet.
+namespace har_training_detail {
+
+struct Normaliser {
+    std::vector<double> mean, sd;
+};
+
+// A network trained from scratch: its normalisation and its state at the best validation epoch.
+struct TrainedNet {
+    DeepConvLstm model{nullptr};
+    Normaliser norm;
+    HarRun run;
+};
+
+}  // namespace har_training_detail
+using har_training_detail::Normaliser;
+using har_training_detail::TrainedNet;
+
 namespace {
 
 struct Labelled {
@@ -31,10 +49,6 @@ struct Labelled {
         label.push_back(l);
         set.push_back(s);
     }
-};
-
-struct Normaliser {
-    std::vector<double> mean, sd;
 };
 
 Normaliser fit_normaliser(const Labelled& d) {
@@ -234,13 +248,6 @@ void score_test(DeepConvLstm& model, const Normaliser& norm, const Labelled& tes
     run->balanced_accuracy = balanced_accuracy(run->confusion);
     run->macro_f1 = macro_f1(run->confusion);
 }
-
-// A network trained from scratch: its normalisation and its state at the best validation epoch.
-struct TrainedNet {
-    DeepConvLstm model{nullptr};
-    Normaliser norm;
-    HarRun run;
-};
 
 // From scratch with `seed`: the validation trials are split off `fit` unless `val` is given (several sets).
 TrainedNet train_from_scratch(const Labelled& train, const Labelled* val_given, int classes, const HarOptions& o,
