@@ -36,7 +36,9 @@ std::vector<double> bouncing_vertical(double device_rate_hz) {
                 body.rest_joints()[static_cast<size_t>(j)] + Vector3d(0, 0.001 * std::sin(2 * M_PI * 14 * f / fps), 0);
     VirtualImuOptions o;
     o.rate_hz = 50;
-    o.realism.sensor_sample_rate_hz = device_rate_hz;
+    RealismModel m;
+    m.sensor_sample_rate_hz = device_rate_hz;
+    o.set_realism(m);
     const BodyImu imu = synthesize_body_imu(seq, spec, parse_sensor_sets("sisfall"), o);
     std::vector<double> y;
     for (const Vector3d& a : imu.signals[0].acc) y.push_back(a.y());
@@ -99,7 +101,9 @@ TEST(DeviceRate, RealismKeyIsValidatedAndRecorded) {
                                "r.toml: sensor_rate_hz: expected 0 (off) or 5 to 2000 Hz, whole"));
     VirtualImuOptions o;
     o.rate_hz = 52.5;
-    o.realism.sensor_sample_rate_hz = 20;
+    RealismModel m;
+    m.sensor_sample_rate_hz = 20;
+    o.set_realism(m);
     EXPECT_TRUE(
         test::contains(test::error_message([&] { o.validate(); }), "--rate: rate: expected a whole number of Hz"));
 }

@@ -49,7 +49,7 @@ Fixture make_fixture(const std::string& dir) {
     real.sensors = "sisfall";
     real.filter = false;
     real.out = dir + "/real";
-    run_synth(real);
+    run_synth(plan_synth(real));
     f.real = real.out;
     return f;
 }

@@ -126,15 +126,3 @@ TEST(Fitting, RetargetingKeepsDirectionsTakesTheBodysLengthsAndScalesTheRoot) {
         }
     }
 }
-
-TEST(Fitting, TwistSmoothingLeavesPositionsExact) {
-    const ProceduralBody body(paper_bodies()[2]);
-    std::mt19937_64 rng(11);
-    std::vector<Joints22> frames;
-    for (int f = 0; f < 30; ++f)
-        frames.push_back(pose_skeleton(body.rest_joints(), anatomical_pose(rng), Vector3d(0, 1, 0)));
-    FitOptions options;
-    options.twist_smoothing_frames = 2;
-    const FittedMotion fit = fit_body(to_sequence(frames), body, options);
-    for (int j = 0; j < kNumJoints; ++j) EXPECT_LT(fit.max_error_mm[j], 1e-6) << kJointNames[j];
-}

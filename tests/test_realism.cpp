@@ -49,7 +49,7 @@ JointSequence hopping() {
 
 VirtualImuOptions with(const RealismModel& m) {
     VirtualImuOptions o;
-    o.realism = m;
+    o.set_realism(m);
     o.seed = 7;
     return o;
 }
@@ -112,7 +112,7 @@ TEST(Realism, TheBeltRunsAcrossTheBellyWhateverTheTilt) {
     const ProceduralBody body(average_man());
     const SensorPlacement board = builtin_placement_set("sisfall").sensors[0];
     for (const double tilt : {0.0, 15.0}) {
-        const SensorMount mount = mount_sensor(body, board, Eigen::Matrix3d::Identity(), tilt);
+        const SensorMount mount = mount_sensor(body, board, tilt);
         EXPECT_NEAR(std::fabs(mount.horizontal_tangent_in_sensor().x()), 1, 1e-9) << tilt;
         EXPECT_NEAR(mount.horizontal_tangent.y(), 0, 1e-12) << tilt;
     }

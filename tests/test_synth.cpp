@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 
 #include "core/atomic_file.hpp"
 #include "core/csv.hpp"
@@ -86,7 +87,7 @@ double max_difference(const std::string& a, const std::string& b) {
 
 TEST(Synth, WritesAnImuDatasetWithItsMotions) {
     const std::string out = test::scratch_dir("synth_full");
-    const nlohmann::json r = synth_report_json(run_synth(tiny_options(out)));
+    const nlohmann::json r = synth_report_json(run_synth(plan_synth(tiny_options(out))));
     EXPECT_EQ(r["jobs"], 4);
     EXPECT_EQ(r["motions_kept"], 4);
     const std::vector<ImuRecording> recs = read_imu_dataset(out);  // loads and checks every CSV
@@ -120,7 +121,7 @@ TEST(Synth, APromptTheCaptionsDoNotCoverIsRecordedAndOnRequestRefusedBeforeAnyOu
     o.prompts = dir + "/prompts.tsv";
     o.samples_per_prompt = 1;
     std::ofstream(o.prompts) << "walking\ta person walks forward slowly\nironing\tsomeone irons a shirt\n";
-    run_synth(o);
+    run_synth(plan_synth(o));
     const std::vector<JobMarker> markers = read_job_markers(o.out);
     ASSERT_EQ(markers.size(), 2u);
     ASSERT_TRUE(markers[0].coverage && markers[1].coverage);
@@ -132,7 +133,7 @@ TEST(Synth, APromptTheCaptionsDoNotCoverIsRecordedAndOnRequestRefusedBeforeAnyOu
     strict.out = dir + "/strict";
     strict.require_coverage = true;
     try {
-        run_synth(strict);
+        run_synth(plan_synth(strict));
         ADD_FAILURE() << "an uncovered prompt was accepted with require_coverage";
     } catch (const Error& e) {
         EXPECT_TRUE(test::contains(e.what(), "prompt 2")) << e.what();
@@ -143,7 +144,7 @@ TEST(Synth, APromptTheCaptionsDoNotCoverIsRecordedAndOnRequestRefusedBeforeAnyOu
 
 TEST(Synth, ResumeRedoesOnlyUnfinishedJobs) {
     const std::string out = test::scratch_dir("synth_resume");
-    run_synth(tiny_options(out));
+    run_synth(plan_synth(tiny_options(out)));
     const std::string before = test::scratch_dir("synth_resume_before") + "/waist.csv";
     fs::copy_file(csv_of(out, "j00002", "female_short"), before);
     const auto untouched = fs::last_write_time(csv_of(out, "j00001", "male_average"));
@@ -152,7 +153,7 @@ TEST(Synth, ResumeRedoesOnlyUnfinishedJobs) {
     const std::string temporary =
         fs::path(csv_of(out, "j00002", "male_average")).parent_path().string() + "/.waist.csv.tmp999999999";
     std::ofstream(temporary) << "t,acc_x\n0,";  // a write the kill cut short
-    const nlohmann::json r = synth_report_json(run_synth(tiny_options(out)));
+    const nlohmann::json r = synth_report_json(run_synth(plan_synth(tiny_options(out))));
     EXPECT_EQ(r["this_run"]["jobs_run"], 1);
     // Redone in its own batch (jobs 0-2, drawn whole), so with the very bytes of the uninterrupted run.
     EXPECT_EQ(read_file_text(csv_of(out, "j00002", "female_short")), read_file_text(before));
@@ -165,14 +166,14 @@ TEST(Synth, ResumeRedoesFinishedJobsWhoseFilesWentMissingOrWereCut) {
     const std::string out = test::scratch_dir("synth_resume_damaged");
     SynthOptions o = tiny_options(out);
     o.bodies = "preset:male_average";
-    run_synth(o);
+    run_synth(plan_synth(o));
     const std::string cut = csv_of(out, "j00001", "male_average");
     const std::string before = test::scratch_dir("synth_resume_damaged_before") + "/waist.csv";
     fs::copy_file(cut, before);
     fs::resize_file(cut, fs::file_size(cut) / 2);       // a copy that broke off
     fs::remove(csv_of(out, "j00002", "male_average"));  // a lost file
     const auto untouched = fs::last_write_time(csv_of(out, "j00003", "male_average"));
-    const nlohmann::json r = synth_report_json(run_synth(o));
+    const nlohmann::json r = synth_report_json(run_synth(plan_synth(o)));
     EXPECT_EQ(r["this_run"]["jobs_run"], 2);
     EXPECT_EQ(read_file_text(cut), read_file_text(before));  // redone in its own batch: the same bytes
     EXPECT_TRUE(fs::exists(csv_of(out, "j00002", "male_average")));
@@ -184,20 +185,20 @@ TEST(Synth, ResumeRedoesJobsWhoseMotionOrMarkerWasDamagedAndNamesABadSettingsFil
     const std::string out = test::scratch_dir("synth_resume_motions");
     SynthOptions o = tiny_options(out);
     o.bodies = "preset:male_average";
-    run_synth(o);
+    run_synth(plan_synth(o));
     fs::remove(out + "/motions/j00000.bvh");  // deleted by hand
     fs::resize_file(out + "/motions/j00001_joints.npy",
                     fs::file_size(out + "/motions/j00001_joints.npy") - 8);      // cut short
     std::ofstream(out + "/jobs/j00002.json") << "{\"job\": \"j00002\", \"kept";  // a marker cut short
     const auto untouched = fs::last_write_time(out + "/motions/j00003.bvh");
-    EXPECT_EQ(run_synth(o).this_run.jobs_run, 3);
+    EXPECT_EQ(run_synth(plan_synth(o)).this_run.jobs_run, 3);
     EXPECT_TRUE(fs::exists(out + "/motions/j00000.bvh"));
     EXPECT_EQ(read_npy(out + "/motions/j00001_joints.npy").shape[1], 22);
     EXPECT_EQ(fs::last_write_time(out + "/motions/j00003.bvh"), untouched);
     // A marker of another shard's job is not redone here: read for the manifest, its fault is named.
     std::ofstream(out + "/jobs/j00009.json") << R"({"job": 5})";
     try {
-        run_synth(o);
+        run_synth(plan_synth(o));
         FAIL() << "a damaged marker was read";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("j00009.json: job: expected a string"), std::string::npos) << e.what();
@@ -205,7 +206,7 @@ TEST(Synth, ResumeRedoesJobsWhoseMotionOrMarkerWasDamagedAndNamesABadSettingsFil
     fs::remove(out + "/jobs/j00009.json");
     std::ofstream(out + "/synth.json") << "{\"seed\": ";
     try {
-        run_synth(o);
+        run_synth(plan_synth(o));
         FAIL() << "a damaged synth.json was read";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("synth.json: json: expected a JSON document (got parse error at line 1"),
@@ -216,15 +217,15 @@ TEST(Synth, ResumeRedoesJobsWhoseMotionOrMarkerWasDamagedAndNamesABadSettingsFil
 
 TEST(Synth, ShardsAddUpToTheWholeRun) {
     const std::string whole = test::scratch_dir("synth_whole"), sharded = test::scratch_dir("synth_sharded");
-    run_synth(tiny_options(whole));
+    run_synth(plan_synth(tiny_options(whole)));
     for (int i = 0; i < 2; ++i) {
         SynthOptions o = tiny_options(sharded);
         o.shard = i;
         o.shards = 2;
-        EXPECT_EQ(run_synth(o).this_run.jobs_run, 2);
+        EXPECT_EQ(run_synth(plan_synth(o)).this_run.jobs_run, 2);
     }
     const nlohmann::json merged =
-        synth_report_json(run_synth(tiny_options(sharded)));  // nothing left to do: rebuilds the manifest
+        synth_report_json(run_synth(plan_synth(tiny_options(sharded))));  // nothing left to do: rebuilds the manifest
     EXPECT_EQ(merged["this_run"]["jobs_run"], 0);
     EXPECT_EQ(read_file_text(sharded + "/manifest.csv"), read_file_text(whole + "/manifest.csv"));
     for (const char* job : {"j00000", "j00003"})
@@ -232,7 +233,7 @@ TEST(Synth, ShardsAddUpToTheWholeRun) {
             << job;
     // The same run twice gives the same bytes.
     const std::string again = test::scratch_dir("synth_whole_again");
-    run_synth(tiny_options(again));
+    run_synth(plan_synth(tiny_options(again)));
     EXPECT_TRUE(read_file_bytes(csv_of(again, "j00003", "female_short")) ==
                 read_file_bytes(csv_of(whole, "j00003", "female_short")));
 }
@@ -241,10 +242,10 @@ TEST(Synth, RefusesAFolderMadeWithOtherSettings) {
     const std::string out = test::scratch_dir("synth_settings");
     SynthOptions o = tiny_options(out);
     o.samples_per_prompt = 1;
-    run_synth(o);
+    run_synth(plan_synth(o));
     o.seconds = 3;
     try {
-        run_synth(o);
+        run_synth(plan_synth(o));
         FAIL() << "expected an error";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("seconds"), std::string::npos) << e.what();
@@ -252,10 +253,10 @@ TEST(Synth, RefusesAFolderMadeWithOtherSettings) {
     o.seconds = 2;
     o.shard = 0;
     o.shards = 3;  // a shard of the same synthesis is welcome
-    EXPECT_NO_THROW(run_synth(o));
+    EXPECT_NO_THROW(run_synth(plan_synth(o)));
     o.shards = 1;
     o.realism = "sisfall";  // so is another sensor realism model: refused like any other setting
-    EXPECT_THROW(run_synth(o), Error);
+    EXPECT_THROW(run_synth(plan_synth(o)), Error);
 }
 
 TEST(Synth, RecordsTheRealismModelAndEachRecordingsDraws) {
@@ -264,7 +265,7 @@ TEST(Synth, RecordsTheRealismModelAndEachRecordingsDraws) {
     o.samples_per_prompt = 1;
     o.filter = false;  // every motion kept, so every job has recordings
     o.realism = "sisfall";
-    const nlohmann::json report = synth_report_json(run_synth(o));
+    const nlohmann::json report = synth_report_json(run_synth(plan_synth(o)));
     EXPECT_EQ(report["realism"]["name"], "sisfall");
     EXPECT_EQ(report["realism"]["tilt_deg"], 7.5);
     size_t recordings = 0;
@@ -283,23 +284,70 @@ TEST(Synth, RecordsTheRealismModelAndEachRecordingsDraws) {
     settings["realism"].erase("strap_hz");
     settings["realism"].erase("strap_damping");
     std::ofstream(settings_path) << settings.dump(1);
-    EXPECT_NO_THROW(run_synth(o));
+    EXPECT_NO_THROW(run_synth(plan_synth(o)));
     // ...and is refused when this run turns it on: absent reads as off.
     const std::string strap = out + "_strap.toml";
     std::ofstream(strap) << "base = \"sisfall\"\nstrap_hz = 6\nstrap_damping = 0.25\n";
     const std::string strap_out = test::scratch_dir("synth_realism_strap");
     o.out = strap_out;
     o.realism = strap;
-    run_synth(o);
+    run_synth(plan_synth(o));
     settings = nlohmann::json::parse(read_file_text(strap_out + "/synth.json"));
     settings["realism"].erase("strap_hz");
     settings["realism"].erase("strap_damping");
     std::ofstream(strap_out + "/synth.json") << settings.dump(1);
     try {
-        run_synth(o);
+        run_synth(plan_synth(o));
         FAIL() << "a strap asked for, none recorded: expected an error";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("realism"), std::string::npos) << e.what();
+    }
+}
+
+// The plan is made once at the door and holds every parsed spelling: the prompt set and a realism file can go
+// before the run, which reads neither; a bad value of each kind is refused by plan_synth, naming it, before any
+// folder exists.
+TEST(Synth, ThePlanHoldsEverySpellingParsedAndRefusesBadOnesBeforeAnyFolder) {
+    const std::string dir = test::scratch_dir("synth_plan");
+    const std::string out = dir + "/out", prompts = dir + "/prompts.tsv", realism = dir + "/r.toml";
+    fs::copy_file(tiny().prompts, prompts);
+    std::ofstream(realism) << "base = \"sisfall\"\nsensor = \"sisfall,bits=0\"\n";
+    SynthOptions o = tiny_options(out);
+    o.prompts = prompts;
+    o.realism = realism;
+    const SynthPlan plan = plan_synth(o);
+    EXPECT_EQ(plan.prompts.size(), 2u);
+    EXPECT_EQ(plan.bodies.size(), 2u);
+    EXPECT_EQ(plan.frames, 40);  // 2 s at 20 fps
+    EXPECT_EQ(plan.imu.sensor_model().name, "sisfall");
+    EXPECT_EQ(plan.imu.sensor_model().bits, 0);
+    EXPECT_EQ(std::get<ModelFolderSpec>(plan.source).folder, tiny().model);
+    fs::remove(prompts);
+    fs::remove(realism);
+    EXPECT_EQ(synth_report_json(run_synth(plan))["jobs_done"], 4);
+    const nlohmann::json settings = nlohmann::json::parse(read_file_text(out + "/synth.json"));
+    EXPECT_EQ(settings["realism"]["sensor"], "sisfall,bits=0");
+
+    const std::vector<std::pair<std::function<void(SynthOptions&)>, std::string>> bad = {
+        {[](SynthOptions& x) { x.model = "hybrid:m,d,2"; }, "--model"},
+        {[](SynthOptions& x) { x.bodies = "preset:nobody"; }, "preset"},
+        {[](SynthOptions& x) { x.sensors = "nowhere"; }, "nowhere"},
+        {[](SynthOptions& x) { x.realism = "sisfal"; }, "sisfal"},
+        {[](SynthOptions& x) {
+             x.noise = "smartphone";
+             x.realism = "sisfall";
+         },
+         "--noise"},
+        {[](SynthOptions& x) { x.prompts = "no-such-prompts.tsv"; }, "no-such-prompts.tsv"},
+        {[](SynthOptions& x) { x.seconds = 0; }, "--seconds"},
+        {[](SynthOptions& x) { x.rate_hz = -1; }, "--rate"},
+    };
+    for (const auto& [spoil, named] : bad) {
+        SynthOptions x = tiny_options(dir + "/never");
+        spoil(x);
+        const std::string message = test::error_message([&] { plan_synth(x); });
+        EXPECT_TRUE(test::contains(message, named)) << named << ": " << message;
+        EXPECT_FALSE(fs::exists(dir + "/never"));
     }
 }
 
@@ -309,7 +357,7 @@ TEST(Synth, RetrievalGivesCapturedMotionThatPassesTheFilter) {
     o.model = "retrieval:" + tiny().data;
     o.vocab = tiny().data + "/vocab.safetensors";
     o.filter = true;
-    const nlohmann::json r = synth_report_json(run_synth(o));
+    const nlohmann::json r = synth_report_json(run_synth(plan_synth(o)));
     EXPECT_EQ(r["motions_kept"], 4);
     EXPECT_EQ(r["jobs_regenerated"], 0);
     // A slow captured walk: its fastest joint and worst skating are far inside the thresholds.
@@ -333,10 +381,10 @@ TEST(Synth, CaptureRateCopiesReachTheSensors) {
     o.model = "retrieval:" + data;
     o.vocab = data + "/vocab.safetensors";
     o.capture_rate = false;
-    run_synth(o);
+    run_synth(plan_synth(o));
     o.out = out60;
     o.capture_rate = true;
-    run_synth(o);
+    run_synth(plan_synth(o));
     const nlohmann::json settings = nlohmann::json::parse(read_file_text(out60 + "/synth.json"));
     EXPECT_TRUE(settings["capture_rate"].get<bool>());
     EXPECT_FALSE(nlohmann::json::parse(read_file_text(out20 + "/synth.json")).contains("capture_rate"));
@@ -359,7 +407,7 @@ TEST(Synth, CaptureRateCopiesReachTheSensors) {
     }
     // A resume that asks for the other rate is refused: the folder holds one synthesis.
     o.capture_rate = false;
-    EXPECT_THROW(run_synth(o), Error);
+    EXPECT_THROW(run_synth(plan_synth(o)), Error);
 }
 
 TEST(Synth, FilterRegeneratesThenDropsWhatNeverPasses) {
@@ -369,7 +417,7 @@ TEST(Synth, FilterRegeneratesThenDropsWhatNeverPasses) {
     o.filter = true;
     o.max_retries = 1;
     o.thresholds = {0, 0, 0, 0, 0, 0};  // every motion moves, so every attempt fails
-    const nlohmann::json r = synth_report_json(run_synth(o));
+    const nlohmann::json r = synth_report_json(run_synth(plan_synth(o)));
     EXPECT_EQ(r["motions_dropped"], 2);
     EXPECT_EQ(r["jobs_regenerated"], 2);
     const nlohmann::json j = nlohmann::json::parse(read_file_text(out + "/jobs/j00001.json"));
@@ -402,7 +450,7 @@ TEST(Synth, ActivityCheckKeepsTheBestDrawOrDropsMotionsThatShowAnotherActivity) 
     o.model = "retrieval:" + tiny().data;
     o.vocab = tiny().data + "/vocab.safetensors";
     o.filter = true;
-    run_synth(o);
+    run_synth(plan_synth(o));
     std::vector<ActivityExample> reference;
     for (int k = 0; k < 4; ++k) {
         const std::string file = o.out + "/motions/j0000" + std::to_string(k) + "_joints.npy";
@@ -416,7 +464,7 @@ TEST(Synth, ActivityCheckKeepsTheBestDrawOrDropsMotionsThatShowAnotherActivity) 
     write_csv(o.activity_reference, MotionActivityClassifier(reference).reference_table());
 
     o.out = dir + "/kept";
-    const nlohmann::json kept = synth_report_json(run_synth(o));
+    const nlohmann::json kept = synth_report_json(run_synth(plan_synth(o)));
     EXPECT_EQ(kept["motions_kept"], 4);
     EXPECT_EQ(kept["motions_kept_below_activity_agreement"], 2);
     EXPECT_EQ(kept["per_activity"]["walking"]["shown"], nlohmann::json({{"walking", 2}}));
@@ -447,7 +495,7 @@ TEST(Synth, ActivityCheckKeepsTheBestDrawOrDropsMotionsThatShowAnotherActivity) 
 
     o.out = dir + "/dropped";
     o.drop_activity_failures = true;
-    const nlohmann::json dropped = synth_report_json(run_synth(o));
+    const nlohmann::json dropped = synth_report_json(run_synth(plan_synth(o)));
     EXPECT_EQ(dropped["motions_kept"], 2);
     EXPECT_EQ(dropped["motions_dropped"], 2);
     EXPECT_EQ(dropped["motions_kept_below_activity_agreement"], 0);

@@ -39,8 +39,7 @@ FittedMotion fit_body(const JointSequence& motion, const BodyModel& body, const 
     if (input.empty()) throw Error("joints", "frames", "at least one frame", "0");
     FittedMotion out;
     out.fps = motion.fps;
-    const std::vector<Rotations22> rotations =
-        segment_rotations(input, rest_axes(body.rest_joints()), options.twist_smoothing_frames);
+    const std::vector<Rotations22> rotations = segment_rotations(input, rest_axes(body.rest_joints()));
     double input_leg = 0;
     for (const Joints22& x : input) input_leg += leg_length(x);
     input_leg /= static_cast<double>(input.size());

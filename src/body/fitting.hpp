@@ -19,8 +19,7 @@
 namespace t2imu {
 
 struct FitOptions {
-    double twist_smoothing_frames = 0;  // see segment_rotations()
-    bool keep_input_joints = false;     // pose the input skeleton as it is (--body none)
+    bool keep_input_joints = false;  // pose the input skeleton as it is (--body none)
 };
 
 struct FittedMotion {

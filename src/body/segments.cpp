@@ -4,8 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/signal/gaussian_filter.hpp"
-
 namespace t2imu {
 
 using namespace smpl22;
@@ -124,8 +122,7 @@ RestAxes rest_axes(const Joints22& rest) {
     return axes;
 }
 
-std::vector<Rotations22> segment_rotations(const std::vector<Joints22>& frames, const RestAxes& rest,
-                                           double twist_smoothing_frames) {
+std::vector<Rotations22> segment_rotations(const std::vector<Joints22>& frames, const RestAxes& rest) {
     const size_t n = frames.size();
     std::vector<Rotations22> out(n);
     std::vector<Vector3d> refs(n), longs(n);
@@ -141,14 +138,6 @@ std::vector<Rotations22> segment_rotations(const std::vector<Joints22>& frames, 
             longs[f] = frames[f][static_cast<size_t>(d.distal)] - frames[f][i];
             const Matrix3d* parent = d.parent >= 0 ? &out[f][static_cast<size_t>(d.parent)] : nullptr;
             refs[f] = twist_reference(s, frames[f], longs[f].normalized(), parent, rest);
-        }
-        // Only segments with a single child: the twist of the pelvis or upper trunk places the hips or collars.
-        const int children = static_cast<int>(std::count(kParents.begin(), kParents.end(), s));
-        if (twist_smoothing_frames > 0 && n > 1 && children == 1) {
-            TimeSeries series(static_cast<Eigen::Index>(n), 3);
-            for (size_t f = 0; f < n; ++f) series.row(static_cast<Eigen::Index>(f)) = refs[f].transpose();
-            series = gaussian_filter1d_nearest(series, twist_smoothing_frames);
-            for (size_t f = 0; f < n; ++f) refs[f] = series.row(static_cast<Eigen::Index>(f)).transpose();
         }
         const Matrix3d rest_frame = axis_frame(rest.long_axis[i], rest.twist_ref[i]);
         for (size_t f = 0; f < n; ++f) out[f][i] = axis_frame(longs[f], refs[f]) * rest_frame.transpose();

@@ -46,12 +46,8 @@ struct RestAxes {
 };
 RestAxes rest_axes(const Joints22& rest);
 
-// Orientations of all segments over a motion (world from rest), frames[f]. `twist_smoothing_frames` > 0
-// Gaussian-smooths every twist reference over time (sigma in frames) before the frames are built: it removes
-// the jitter that noisy joints put into the bend planes without touching the long axes (joint positions stay
-// exact).
-std::vector<Rotations22> segment_rotations(const std::vector<Joints22>& frames, const RestAxes& rest,
-                                           double twist_smoothing_frames = 0);
+// Orientations of all segments over a motion (world from rest), frames[f].
+std::vector<Rotations22> segment_rotations(const std::vector<Joints22>& frames, const RestAxes& rest);
 
 // Directions across a segment whose long axis is the unit vector l (rest coordinates): `front` is +Z made
 // perpendicular to l; `side` is +X (the body's left) made perpendicular to both, or +Y (up) for a segment that

@@ -56,8 +56,9 @@ void run(const SynthArgs& a) {
     VirtualImuOptions options = a.options;
     check_usage([&] {
         check_motion_fps(a.fps, "--fps");
-        options.realism = parse_realism(a.realism);
-        fold_noise_option(a.noise, &options.realism);
+        RealismModel realism = parse_realism(a.realism);
+        fold_noise_option(a.noise, &realism);
+        options.set_realism(realism);
         options.validate();
         check_output(a.out, "--out", OutputKind::folder, {a.joints});
     });
@@ -91,10 +92,6 @@ static CommandRegistrar registrar([](CLI::App& root) {
                     "the sensor's errors alone (the realism model's sensor key): none | smartphone | hugadb | sisfall "
                     "| umafall [,key=value...]");
     cmd->add_option("--realism", a.realism, realism_help());
-    cmd->add_option("--mount-jitter", a.options.mount_jitter_deg,
-                    "random mounting rotation up to DEG degrees (seeded)");
-    cmd->add_option("--twist-smoothing", a.options.twist_smoothing_frames,
-                    "Gaussian smoothing of the segment twist over time, sigma in frames");
     cmd->add_option("--seed", a.options.seed, "seed of mounting errors, realism draws and noise");
     cmd->add_option("--format", a.format, "csv, or realworld to add RealWorld's release files")
         ->check(CLI::IsMember({"csv", "realworld"}));

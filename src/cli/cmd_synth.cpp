@@ -34,20 +34,22 @@ void parse_shard(const std::string& text, SynthOptions& o) {
 
 void run(SynthArgs a) {
     SynthOptions& o = a.options;
-    check_usage([&] {
-        parse_shard(a.shard, o);
-        o.validate();
-        check_output(o.out, "--out", OutputKind::folder, {o.prompts, o.activity_reference});
-    });
     o.filter = !a.no_filter;
-    if (o.activity_reference == kDefaultActivityReference && !std::filesystem::exists(o.activity_reference)) {
-        std::fprintf(stderr, "synth: no %s here: motions are not checked for their prompt's activity\n",
-                     kDefaultActivityReference);
-        o.activity_reference.clear();
-    }
+    const bool no_reference =
+        o.activity_reference == kDefaultActivityReference && !std::filesystem::exists(o.activity_reference);
+    if (no_reference) o.activity_reference.clear();
     o.device = global_options().device;
     o.threads = worker_threads();
-    const SynthReport r = run_synth(o);
+    SynthPlan plan;
+    check_usage([&] {
+        parse_shard(a.shard, o);
+        plan = plan_synth(o);
+        check_output(o.out, "--out", OutputKind::folder, {o.prompts, o.activity_reference});
+    });
+    if (no_reference)
+        std::fprintf(stderr, "synth: no %s here: motions are not checked for their prompt's activity\n",
+                     kDefaultActivityReference);
+    const SynthReport r = run_synth(plan);
     const SynthRunTiming& t = r.this_run;
     std::printf(
         "%s: %d of %d jobs done (%d motions kept, %d of them below the activity agreement, %d dropped, %d "

@@ -133,8 +133,7 @@ std::vector<SensorPlacement> parse_sensor_sets(const std::string& text) {
     return out;
 }
 
-SensorMount mount_sensor(const BodyModel& body, const SensorPlacement& placement, const Matrix3d& mounting_error,
-                         double tilt_down_deg) {
+SensorMount mount_sensor(const BodyModel& body, const SensorPlacement& placement, double tilt_down_deg) {
     SensorMount m;
     m.placement = placement;
     SurfacePoint surface;
@@ -164,7 +163,7 @@ SensorMount mount_sensor(const BodyModel& body, const SensorPlacement& placement
     const int third = 3 - first - second;
     // Right-handed: x = y x z, y = z x x, z = x x y.
     r.col(third) = r.col((third + 1) % 3).cross(r.col((third + 2) % 3));
-    m.rest_from_sensor = r * mounting_error;
+    m.rest_from_sensor = r;
     // Tilt: about up x normal, which turns the normal towards -up (rest frame: Y up).
     const Vector3d tangent = Vector3d::UnitY().cross(surface.normal);
     if (tangent.norm() > 0.1) m.horizontal_tangent = tangent.normalized();
@@ -172,16 +171,6 @@ SensorMount mount_sensor(const BodyModel& body, const SensorPlacement& placement
         m.rest_from_sensor =
             Eigen::AngleAxisd(tilt_down_deg * M_PI / 180, m.horizontal_tangent).toRotationMatrix() * m.rest_from_sensor;
     return m;
-}
-
-Matrix3d random_mounting_error(double max_deg, uint64_t seed) {
-    if (max_deg <= 0) return Matrix3d::Identity();
-    std::mt19937_64 rng(seed);
-    std::normal_distribution<double> normal;
-    Vector3d axis(normal(rng), normal(rng), normal(rng));
-    axis.normalize();
-    std::uniform_real_distribution<double> angle(-max_deg, max_deg);
-    return Eigen::AngleAxisd(angle(rng) * M_PI / 180, axis).toRotationMatrix();
 }
 
 }  // namespace t2imu

@@ -70,10 +70,6 @@ struct SensorMount {
     Eigen::Vector3d horizontal_tangent = Eigen::Vector3d::Zero();
     Eigen::Vector3d horizontal_tangent_in_sensor() const { return rest_from_sensor.transpose() * horizontal_tangent; }
 };
-SensorMount mount_sensor(const BodyModel& body, const SensorPlacement& placement,
-                         const Eigen::Matrix3d& mounting_error = Eigen::Matrix3d::Identity(), double tilt_down_deg = 0);
-
-// A random rotation about a uniformly distributed axis by an angle uniform in [-max_deg, max_deg].
-Eigen::Matrix3d random_mounting_error(double max_deg, uint64_t seed);
+SensorMount mount_sensor(const BodyModel& body, const SensorPlacement& placement, double tilt_down_deg = 0);
 
 }  // namespace t2imu

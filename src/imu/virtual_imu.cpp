@@ -54,17 +54,15 @@ void sensor_track(const BodyModel& body, const FittedMotion& motion, const Senso
     }
 }
 
-SensorNoiseModel VirtualImuOptions::sensor_model() const { return parse_noise_model(realism.sensor); }
+void VirtualImuOptions::set_realism(const RealismModel& model) {
+    model.validate("--realism " + model.name);
+    sensor_ = parse_noise_model(model.sensor, "--realism " + model.name + ": sensor");
+    realism_ = model;
+}
 
 void VirtualImuOptions::validate() const {
     if (!(rate_hz > 0 && rate_hz <= 2000)) throw Error("--rate", "rate", "0 < HZ <= 2000", std::to_string(rate_hz));
-    if (!(mount_jitter_deg >= 0 && mount_jitter_deg <= 180))
-        throw Error("--mount-jitter", "degrees", "0 to 180", std::to_string(mount_jitter_deg));
-    // A sigma of 1,000 frames (50 s at 20 fps) already flattens the twist of any clip we sample.
-    if (!(twist_smoothing_frames >= 0 && twist_smoothing_frames <= 1000))
-        throw Error("--twist-smoothing", "sigma", "0 to 1000 frames", std::to_string(twist_smoothing_frames));
-    realism.validate("--realism " + realism.name);
-    if (realism.sensor_sample_rate_hz > 0 && rate_hz != std::round(rate_hz))
+    if (realism_.sensor_sample_rate_hz > 0 && rate_hz != std::round(rate_hz))
         throw Error("--rate", "rate", "a whole number of Hz with a realism model's sensor rate",
                     std::to_string(rate_hz));
 }
@@ -131,7 +129,7 @@ BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& spec,
     BodySpec build = out.body;
     if (none) build.kind = BodySpec::Kind::procedural;
     const std::unique_ptr<BodyModel> body = make_body(build);
-    const RealismModel& realism = options.realism;
+    const RealismModel& realism = options.realism();
     const auto seed = [&](const std::string& position, const char* draw) {
         return derived_seed(options.seed, {out.body.name, position, draw});
     };
@@ -139,12 +137,11 @@ BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& spec,
     out.tempo = timed.tempo;
     FitOptions fit;
     fit.keep_input_joints = none;
-    fit.twist_smoothing_frames = options.twist_smoothing_frames;
     const FittedMotion fitted = fit_body(timed.timed, *body, fit);
     out.leg_scale = fitted.leg_scale;
     out.mean_error_mm = fitted.mean_error_mm;
     out.max_error_mm = fitted.max_error_mm;
-    const SensorNoiseModel device = options.sensor_model();
+    const SensorNoiseModel& device = options.sensor_model();
     const double sample_rate = realism.sensor_sample_rate_hz > 0 ? realism.sensor_sample_rate_hz : options.rate_hz;
     std::vector<Vector3d> p;
     std::vector<Quat> q;
@@ -152,9 +149,8 @@ BodyImu synthesize_body_imu(const JointSequence& motion, const BodySpec& spec,
         FittedMotion own;
         const FittedMotion& frames = body_stage(fitted, realism, placement.segment, timed.timed.fps, &own);
         // mount: on the skin, with the mounting error and the realism model's tilt.
-        const Matrix3d jitter = random_mounting_error(options.mount_jitter_deg, seed(placement.position, "mount"));
         out.mount_tilts_deg.push_back(draw_tilt_deg(realism, seed(placement.position, "tilt")));
-        out.mounts.push_back(mount_sensor(*body, placement, jitter, out.mount_tilts_deg.back()));
+        out.mounts.push_back(mount_sensor(*body, placement, out.mount_tilts_deg.back()));
         sensor_track(*body, frames, out.mounts.back(), &p, &q);
         const AttachmentDynamics dynamics =
             attachment_stage(realism, timed, out.mounts.back(), seed(placement.position, "landings"));
@@ -185,10 +181,9 @@ nlohmann::json virtual_imu_meta(const std::vector<BodyImu>& bodies, const JointS
     meta["samples"] = bodies.empty() || bodies[0].signals.empty() ? 0 : bodies[0].signals[0].t.size();
     meta["frames_note"] = "world Y up, body facing +Z; acc = specific force in the sensor frame (m/s^2), gyr in rad/s";
     meta["interpolant"] = "not-a-knot cubic spline of positions and of sign-continuous quaternions";
-    meta["mount_jitter_deg"] = options.mount_jitter_deg;
-    meta["realism"] = options.realism.to_json();
+    meta["realism"] = options.realism().to_json();
     meta["seed"] = options.seed;
-    const SensorNoiseModel device = options.sensor_model();
+    const SensorNoiseModel& device = options.sensor_model();
     meta["noise"] = {{"model", device.name},
                      {"acc_noise_density", device.acc_noise_density},
                      {"gyr_noise_density", device.gyr_noise_density},

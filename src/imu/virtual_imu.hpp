@@ -25,16 +25,19 @@ namespace t2imu {
 
 struct VirtualImuOptions {
     double rate_hz = 50;
-    double mount_jitter_deg = 0;
     uint64_t seed = 0;
-    RealismModel realism;  // --realism (realism.hpp); "none" = the ideal sensor
-    double twist_smoothing_frames = 0;
 
-    // The sensor error model in effect: the realism model's sensor.
-    SensorNoiseModel sensor_model() const;
-    // Throws Error naming the option (--rate, --mount-jitter, --twist-smoothing, --realism) for a value out of
-    // range.
+    // The realism model (realism.hpp; "none" = the ideal sensor), validated, and its sensor model parsed, once here:
+    // every recording after reads them. Throws Error naming --realism.
+    void set_realism(const RealismModel& model);
+    const RealismModel& realism() const { return realism_; }
+    const SensorNoiseModel& sensor_model() const { return sensor_; }
+    // Throws Error naming --rate for a rate out of range, or not whole with a realism model's sensor rate.
     void validate() const;
+
+private:
+    RealismModel realism_;
+    SensorNoiseModel sensor_;
 };
 
 // `--noise MODEL`: the realism model's sensor, given on its own (sensor_noise.hpp). "none" leaves `realism` as it

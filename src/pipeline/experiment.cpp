@@ -112,7 +112,7 @@ private:
         o.sensors = r.set->sensors;
         if (!r.set->realism.empty()) o.realism = r.set->realism;
         o.out = path("synth/" + r.id());
-        const SynthReport report = run_synth(o);
+        const SynthReport report = run_synth(plan_synth(o));
         say("synth " + r.id() + ": " + std::to_string(report.motions_kept) + " motions kept, " +
             std::to_string(report.recordings) + " recordings");
     }

@@ -7,7 +7,6 @@
 #include <optional>
 #include <random>
 #include <sstream>
-#include <tuple>
 
 #include "core/csv.hpp"
 #include "core/error.hpp"
@@ -389,31 +388,17 @@ private:
     double strength_;
 };
 
-// "hybrid:MODEL,DATASET,STRENGTH" -> its three parts; Error naming --model otherwise.
-std::tuple<std::string, std::string, double> parse_hybrid(const std::string& rest) {
-    const size_t a = rest.find(','), b = a == std::string::npos ? a : rest.find(',', a + 1);
-    const std::string expected = "hybrid:MODEL_FOLDER,DATASET,STRENGTH with STRENGTH above 0 and at most 1";
-    if (b == std::string::npos || rest.find(',', b + 1) != std::string::npos)
-        throw Error("--model", "hybrid", expected, "hybrid:" + rest);
-    const std::optional<double> strength = parse_number(rest.substr(b + 1));
-    if (!strength || !(*strength > 0 && *strength <= 1))
-        throw Error("--model", "hybrid strength", expected, rest.substr(b + 1));
-    return {rest.substr(0, a), rest.substr(a + 1, b - a - 1), *strength};
-}
-
 }  // namespace
 
-std::unique_ptr<MotionSource> open_motion_source(const std::string& spec, const SampleOptions& sampling,
+std::unique_ptr<MotionSource> open_motion_source(const MotionSourceSpec& spec, const SampleOptions& sampling,
                                                  const std::string& device, const std::string& vocab,
                                                  const std::string& activity_reference) {
-    const std::string prefix = "retrieval:", hybrid = "hybrid:";
-    if (spec.rfind(prefix, 0) == 0)
-        return std::make_unique<RetrievalSource>(spec.substr(prefix.size()), vocab, activity_reference);
-    if (spec.rfind(hybrid, 0) == 0) {
-        const auto [model, dataset, strength] = parse_hybrid(spec.substr(hybrid.size()));
-        return std::make_unique<HybridSource>(model, dataset, strength, sampling, device, vocab, activity_reference);
-    }
-    return std::make_unique<DiffusionSource>(spec, sampling, device);
+    if (const auto* r = std::get_if<RetrievalSpec>(&spec))
+        return std::make_unique<RetrievalSource>(r->dataset, vocab, activity_reference);
+    if (const auto* h = std::get_if<HybridSpec>(&spec))
+        return std::make_unique<HybridSource>(h->model_folder, h->dataset, h->strength, sampling, device, vocab,
+                                              activity_reference);
+    return std::make_unique<DiffusionSource>(std::get<ModelFolderSpec>(spec).folder, sampling, device);
 }
 
 }  // namespace t2imu

@@ -30,6 +30,7 @@
 
 #include "diffusion/text_to_motion.hpp"
 #include "motion/joint_sequence.hpp"
+#include "pipeline/motion_source_spec.hpp"
 
 namespace t2imu {
 
@@ -60,14 +61,11 @@ public:
     virtual const CaptionIndex* caption_index() const { return nullptr; }
 };
 
-// `spec`: a model folder, retrieval:DATASET, or hybrid:MODEL_FOLDER,DATASET,STRENGTH: the clip retrieval would
-// give, noised to round(STRENGTH (T-1)) and finished by the model with the prompt (SDEdit; STRENGTH in (0, 1],
-// 1 = the model alone from noise, small = the captured clip barely changed; draw records are retrieval's). `sampling`
-// holds the sampler settings of a model (its seed fields are ignored: generate() takes the seeds). `vocab`: the GloVe
-// vocabulary for retrieval ("" = the default: $T2IMU_VOCAB, else cache/text/glove-100k.safetensors).
+// `sampling` holds the sampler settings of a model (its seed fields are ignored: generate() takes the seeds). `vocab`:
+// the GloVe vocabulary for retrieval ("" = the default: $T2IMU_VOCAB, else cache/text/glove-100k.safetensors).
 // `activity_reference`: the motion activity classifier's reference CSV that retrieval checks candidates with ("" =
 // activity tags alone).
-std::unique_ptr<MotionSource> open_motion_source(const std::string& spec, const SampleOptions& sampling,
+std::unique_ptr<MotionSource> open_motion_source(const MotionSourceSpec& spec, const SampleOptions& sampling,
                                                  const std::string& device, const std::string& vocab = "",
                                                  const std::string& activity_reference = "");
 

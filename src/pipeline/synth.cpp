@@ -80,8 +80,8 @@ void keep_best_activity_draw(Drawn& d, std::optional<Drawn>& best) {
 std::vector<Drawn> draw_filtered(MotionSource& source, const std::vector<int>& jobs,
                                  const std::vector<std::string>& texts, const std::vector<std::string>& labels,
                                  const std::vector<std::string>& expected, const MotionActivityClassifier* classifier,
-                                 const SynthOptions& o, double* generate_s, double* score_s) {
-    const int frames = frames_for_seconds(o.seconds, "--seconds");
+                                 const SynthPlan& plan, double* generate_s, double* score_s) {
+    const SynthOptions& o = plan.options;
     std::vector<Drawn> out(jobs.size());
     std::vector<std::optional<Drawn>> best_activity(jobs.size());  // see keep_best_activity_draw
     std::vector<size_t> pending(jobs.size());
@@ -95,7 +95,7 @@ std::vector<Drawn> draw_filtered(MotionSource& source, const std::vector<int>& j
             seeds.push_back(attempt_seed(o, jobs[i], attempt));
         }
         auto t0 = Clock::now();
-        std::vector<JointSequence> motions = source.generate(prompts, activities, seeds, frames);
+        std::vector<JointSequence> motions = source.generate(prompts, activities, seeds, plan.frames);
         *generate_s += since(t0);
         t0 = Clock::now();
         std::vector<size_t> again;
@@ -148,12 +148,6 @@ std::map<std::string, double> quality_map(const MotionQuality& q) {
     return out;
 }
 
-struct Stage {
-    std::vector<BodySpec> bodies;
-    std::vector<SensorPlacement> sensors;
-    VirtualImuOptions imu;
-};
-
 // Writes the job's motion and recordings, then its marker (last: the job is done).
 // A job redone after a kill starts clean: the recordings and the temporaries (".<name>....tmpPID", core/
 // atomic_file.hpp) its killed attempt left go, so the folder ends as an uninterrupted run leaves it.
@@ -165,8 +159,9 @@ void clear_job_outputs(const std::string& out, const std::string& name) {
         if (e.path().filename().string().rfind("." + name, 0) == 0) fs::remove(e.path(), ignored);
 }
 
-void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt& prompt,
-               const std::optional<MarkerCoverage>& coverage, int sample, const Drawn& d) {
+void write_job(const SynthPlan& plan, int job, const Prompt& prompt, const std::optional<MarkerCoverage>& coverage,
+               int sample, const Drawn& d) {
+    const SynthOptions& o = plan.options;
     const std::string name = job_name(job);
     clear_job_outputs(o.out, name);
     JobMarker marker;
@@ -185,10 +180,10 @@ void write_job(const SynthOptions& o, const Stage& stage, int job, const Prompt&
         marker.motions.emplace();
         for (const std::string& file : {job_joints_file(name), job_bvh_file(name)})
             marker.motions->push_back({file, static_cast<int64_t>(fs::file_size(o.out + "/" + file))});
-        VirtualImuOptions imu = stage.imu;
-        imu.seed = stage.imu.seed + static_cast<uint64_t>(job);
-        for (const BodySpec& b : stage.bodies) {
-            const BodyImu r = synthesize_body_imu(d.sensor_joints ? *d.sensor_joints : d.joints, b, stage.sensors, imu);
+        VirtualImuOptions imu = plan.imu;
+        imu.seed = plan.imu.seed + static_cast<uint64_t>(job);
+        for (const BodySpec& b : plan.bodies) {
+            const BodyImu r = synthesize_body_imu(d.sensor_joints ? *d.sensor_joints : d.joints, b, plan.sensors, imu);
             const std::vector<std::string> files = write_body_imu(o.out + "/" + job_recordings_dir(name), r);
             for (size_t s = 0; s < r.mounts.size(); ++s) {
                 const std::string path = job_recordings_dir(name) + "/" + files[s];
@@ -233,10 +228,10 @@ bool job_intact(const std::string& out, int job) {
     return file_whole(out, job_joints_file(name), -1) && file_whole(out, job_bvh_file(name), -1);
 }
 
-json settings_json(const SynthOptions& o, const std::vector<Prompt>& prompts, const json& source,
-                   const RealismModel& realism) {
+json settings_json(const SynthPlan& plan, const json& source) {
+    const SynthOptions& o = plan.options;
     json p = json::array();
-    for (const Prompt& x : prompts) p.push_back({x.activity, x.text});
+    for (const Prompt& x : plan.prompts) p.push_back({x.activity, x.text});
     json s = {{"prompts_file", o.prompts},
               {"prompts", p},
               {"samples_per_prompt", o.samples_per_prompt},
@@ -251,8 +246,8 @@ json settings_json(const SynthOptions& o, const std::vector<Prompt>& prompts, co
               {"filter", o.filter},
               {"max_retries", o.max_retries},
               {"thresholds", quality_limits(o.thresholds)}};
-    if (o.realism != "none") s["realism"] = realism.to_json();  // absent: folders from before it stay valid
-    if (o.capture_rate) s["capture_rate"] = true;               // likewise
+    if (o.realism != "none") s["realism"] = plan.imu.realism().to_json();  // absent: folders from before it stay valid
+    if (o.capture_rate) s["capture_rate"] = true;                          // likewise
     // placed_on_floor is always true: it makes a resume refuse folders drawn before floor placement existed.
     // activity_check is absent without a check, so folders made before the check existed stay valid.
     if (!o.activity_reference.empty())
@@ -300,21 +295,29 @@ SampleOptions synth_sampling_defaults() {
     return o;
 }
 
-void SynthOptions::validate() const {
-    if (samples_per_prompt < 1)
-        throw Error("synth", "--samples-per-prompt", "at least 1", std::to_string(samples_per_prompt));
-    frames_for_seconds(seconds, "--seconds");
-    if (shards < 1 || shard < 0 || shard >= shards) throw Error("synth", "--shard", "I/N with 1 <= I <= N");
-    if (max_retries < 0) throw Error("synth", "--retries", "0 or more", std::to_string(max_retries));
-    VirtualImuOptions imu;
-    imu.rate_hz = rate_hz;
-    imu.realism = parse_realism(realism);
-    fold_noise_option(noise, &imu.realism);
-    imu.validate();
-    if (!(min_activity_agreement >= 0 && min_activity_agreement <= 1))
-        throw Error("synth", "--min-activity-agreement", "0 to 1", std::to_string(min_activity_agreement));
-    if (out.empty()) throw Error("synth", "--out", "an output folder");
-    sampling.validate();
+SynthPlan plan_synth(const SynthOptions& o) {
+    if (o.samples_per_prompt < 1)
+        throw Error("synth", "--samples-per-prompt", "at least 1", std::to_string(o.samples_per_prompt));
+    if (o.shards < 1 || o.shard < 0 || o.shard >= o.shards) throw Error("synth", "--shard", "I/N with 1 <= I <= N");
+    if (o.max_retries < 0) throw Error("synth", "--retries", "0 or more", std::to_string(o.max_retries));
+    if (!(o.min_activity_agreement >= 0 && o.min_activity_agreement <= 1))
+        throw Error("synth", "--min-activity-agreement", "0 to 1", std::to_string(o.min_activity_agreement));
+    if (o.out.empty()) throw Error("synth", "--out", "an output folder");
+    o.sampling.validate();
+    SynthPlan plan;
+    plan.options = o;
+    plan.frames = frames_for_seconds(o.seconds, "--seconds");
+    plan.source = parse_motion_source(o.model);
+    plan.imu.rate_hz = o.rate_hz;
+    plan.imu.seed = o.sampling.seed;
+    RealismModel realism = parse_realism(o.realism);
+    fold_noise_option(o.noise, &realism);
+    plan.imu.set_realism(realism);
+    plan.imu.validate();
+    plan.bodies = parse_body_specs(o.bodies);
+    plan.sensors = parse_sensor_sets(o.sensors);
+    plan.prompts = read_prompt_set(o.prompts, PromptActivity::required);
+    return plan;
 }
 
 namespace {
@@ -382,8 +385,9 @@ SynthReport synth_report(const std::vector<JobMarker>& markers, int total_jobs, 
 
 // Per prompt, how the source's captions cover it (text/prompt_coverage.hpp), checked before any output; none for a
 // source without captions.
-std::vector<std::optional<MarkerCoverage>> check_coverage(const MotionSource& source,
-                                                          const std::vector<Prompt>& prompts, const SynthOptions& o) {
+std::vector<std::optional<MarkerCoverage>> check_coverage(const MotionSource& source, const SynthPlan& plan) {
+    const std::vector<Prompt>& prompts = plan.prompts;
+    const SynthOptions& o = plan.options;
     std::vector<std::optional<MarkerCoverage>> out(prompts.size());
     if (source.caption_index() == nullptr) return out;
     const std::vector<PromptCoverage> c =
@@ -396,26 +400,21 @@ std::vector<std::optional<MarkerCoverage>> check_coverage(const MotionSource& so
 
 }  // namespace
 
-SynthReport run_synth(const SynthOptions& o) {
-    o.validate();
+SynthReport run_synth(const SynthPlan& plan) {
+    const SynthOptions& o = plan.options;
+    const std::vector<Prompt>& prompts = plan.prompts;
     const auto start = Clock::now();
-    const std::vector<Prompt> prompts = read_prompt_set(o.prompts, PromptActivity::required);
-    Stage stage{parse_body_specs(o.bodies), parse_sensor_sets(o.sensors), {}};
-    stage.imu.rate_hz = o.rate_hz;
-    stage.imu.realism = parse_realism(o.realism);
-    fold_noise_option(o.noise, &stage.imu.realism);
-    stage.imu.seed = o.sampling.seed;
     auto t0 = Clock::now();
     std::unique_ptr<MotionSource> source =
-        open_motion_source(o.model, o.sampling, o.device, o.vocab, o.activity_reference);
+        open_motion_source(plan.source, o.sampling, o.device, o.vocab, o.activity_reference);
     std::optional<MotionActivityClassifier> classifier;
     if (!o.activity_reference.empty()) classifier = MotionActivityClassifier::load(o.activity_reference);
     const double load_s = since(t0);
     const json described = source->describe();
-    const std::vector<std::optional<MarkerCoverage>> coverage = check_coverage(*source, prompts, o);
+    const std::vector<std::optional<MarkerCoverage>> coverage = check_coverage(*source, plan);
     claim_output_folder(o.out);  // marked as t2imu's: a rerun resumes in it (core/output_path.hpp)
     make_directories(o.out + "/jobs", "jobs folder");
-    check_or_write_settings(o.out, settings_json(o, prompts, described, stage.imu.realism));
+    check_or_write_settings(o.out, settings_json(plan, described));
 
     const int total = static_cast<int>(prompts.size()) * o.samples_per_prompt;
     const int first = static_cast<int>(static_cast<long long>(total) * o.shard / o.shards);
@@ -435,14 +434,14 @@ SynthReport run_synth(const SynthOptions& o) {
             labels.push_back(prompt.activity);
             expected.push_back(classifier ? reference_activity(prompt.activity, classifier->classes()) : "");
         }
-        const std::vector<Drawn> drawn = draw_filtered(*source, jobs, texts, labels, expected,
-                                                       classifier ? &*classifier : nullptr, o, &generate_s, &score_s);
+        const std::vector<Drawn> drawn = draw_filtered(
+            *source, jobs, texts, labels, expected, classifier ? &*classifier : nullptr, plan, &generate_s, &score_s);
         t0 = Clock::now();
         parallel_for(jobs.size(), o.threads, [&](size_t i) {
             const int k = jobs[i];
             if (!todo[static_cast<size_t>(k - first)]) return;  // done before the interruption, with these very bytes
             const size_t p = static_cast<size_t>(k / o.samples_per_prompt);
-            write_job(o, stage, k, prompts[p], coverage[p], k % o.samples_per_prompt, drawn[i]);
+            write_job(plan, k, prompts[p], coverage[p], k % o.samples_per_prompt, drawn[i]);
             progress.advance();
         });
         imu_s += since(t0);
@@ -455,7 +454,7 @@ SynthReport run_synth(const SynthOptions& o) {
         synth_report(markers, total,
                      {jobs_to_run, o.threads, load_s, generate_s, score_s, imu_s, since(t0), since(start), o.device});
     report.realism =
-        stage.imu.realism.to_json();  // the model in effect; each recording's draws are in its job's marker
+        plan.imu.realism().to_json();  // the model in effect; each recording's draws are in its job's marker
     write_synth_report(o.out, report);
     return report;
 }

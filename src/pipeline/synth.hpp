@@ -29,10 +29,14 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "diffusion/sample_options.hpp"
 #include "imu/synth_folder.hpp"
+#include "imu/virtual_imu.hpp"
 #include "motion/motion_quality.hpp"
+#include "pipeline/motion_source_spec.hpp"
+#include "text/prompt_set.hpp"
 
 namespace t2imu {
 
@@ -79,14 +83,27 @@ struct SynthOptions {
     std::string device = "cpu";
     int threads = 1;  // workers for the bodies/IMU stage
     std::string out;
-
-    // Throws Error naming the option for a value out of range, not finite or unknown; run_synth calls it before
-    // any work, and the CLI before that, so a bad value never leaves a half-made folder.
-    void validate() const;
 };
+
+// The job as typed values, made at the door by plan_synth: each spelling (the source, the prompt set, the bodies, the
+// sensors, the realism model with --noise folded in and its sensor model) parsed once, every value checked, before
+// any work. What runs after reads these; the options' spellings stay for the record (synth.json, the manifest).
+struct SynthPlan {
+    SynthOptions options;
+    MotionSourceSpec source;
+    std::vector<Prompt> prompts;
+    std::vector<BodySpec> bodies;
+    std::vector<SensorPlacement> sensors;
+    VirtualImuOptions imu;  // rate, seed (of job 0), the realism model and its sensor model
+    int frames = 0;         // motion length at 20 fps
+};
+
+// Throws Error naming the option (or the file and field) for a value out of range, not finite, unknown or unreadable,
+// so a bad value never leaves a half-made folder.
+SynthPlan plan_synth(const SynthOptions& options);
 
 // Runs (or resumes) the jobs of this shard, then rebuilds the manifest and the report from every marker in the
 // folder. Returns the report (synth_report.json). Progress over this run's jobs: core/progress.hpp.
-SynthReport run_synth(const SynthOptions& options);
+SynthReport run_synth(const SynthPlan& plan);
 
 }  // namespace t2imu
