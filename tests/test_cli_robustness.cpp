@@ -245,13 +245,13 @@ std::vector<Row> rows() {
          1,
          "mdm.num_layers: expected an integer from 1 to 256 (got -3)",
          {"o"}},
-        // 5: sensor sets are read strictly.
+        // 5: sensor sets are read strictly, at the door (exit 2).
         {"SensorTomlMisspeltKey",
          kImuSynth + "--sensors {D}/s.toml --out {D}/o",
          standing_joints("j.npy") + Files{{"s.toml",
                                            "[[sensor]]\nposition = \"wrist\"\nsegment = \"right_elbow\"\naroud = "
                                            "-90\nx = \"distal\"\nz = \"out\"\n"}},
-         1,
+         2,
          "s.toml: sensor[0].aroud: expected a known key",
          {"o"}},
         {"SensorTomlWrongType",
@@ -259,7 +259,7 @@ std::vector<Row> rows() {
          standing_joints("j.npy") + Files{{"s.toml",
                                            "[[sensor]]\nposition = \"wrist\"\nsegment = \"right_elbow\"\nalong = "
                                            "\"far\"\nx = \"distal\"\nz = \"out\"\n"}},
-         1,
+         2,
          "s.toml: sensor[0].along: expected",
          {"o"}},
         // 6, 7: option values are checked before any work or output.

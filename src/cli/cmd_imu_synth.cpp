@@ -25,9 +25,8 @@ struct SynthArgs {
     std::string joints, body = "preset:male_average", sensors = "realworld", noise = "none", realism = "none", out,
                         format = "csv";
     std::string activity = "synthetic";
-    double fps = 20;  // HumanML3D's frame rate
-    VirtualImuOptions
-        options;  // rate, mounting jitter, seed, twist smoothing (their defaults); noise and realism parsed
+    double fps = 20;            // HumanML3D's frame rate
+    VirtualImuOptions options;  // rate and seed (their defaults); the realism model is set once parsed
 };
 
 std::string without_side(const std::string& position) {
@@ -54,7 +53,11 @@ void write_outputs(const SynthArgs& a, const std::vector<BodyImu>& bodies, const
 
 void run(const SynthArgs& a) {
     VirtualImuOptions options = a.options;
-    check_usage([&] {
+    std::vector<BodySpec> bodies;
+    std::vector<SensorPlacement> sensors;
+    check_usage([&] {  // every spelling parsed here, once, before any work
+        bodies = parse_body_specs(a.body);
+        sensors = parse_sensor_sets(a.sensors);
         check_motion_fps(a.fps, "--fps");
         RealismModel realism = parse_realism(a.realism);
         fold_noise_option(a.noise, &realism);
@@ -62,8 +65,6 @@ void run(const SynthArgs& a) {
         options.validate();
         check_output(a.out, "--out", OutputKind::folder, {a.joints});
     });
-    const std::vector<BodySpec> bodies = parse_body_specs(a.body);
-    const std::vector<SensorPlacement> sensors = parse_sensor_sets(a.sensors);
     const JointSequence motion = joint_sequence_from_array(read_npy(a.joints), a.joints, 22, 4, a.fps);
     check_motion_for_imu(motion, a.joints);
     std::vector<BodyImu> results;

@@ -43,8 +43,8 @@ void run(SynthArgs a) {
     SynthPlan plan;
     check_usage([&] {
         parse_shard(a.shard, o);
-        plan = plan_synth(o);
         check_output(o.out, "--out", OutputKind::folder, {o.prompts, o.activity_reference});
+        plan = plan_synth(o);
     });
     if (no_reference)
         std::fprintf(stderr, "synth: no %s here: motions are not checked for their prompt's activity\n",
