@@ -8,7 +8,7 @@
 // bare nouns, so that both sides of the cosine are sentences. SIF weight a = 1e-4 without common-component
 // removal agrees best with the shared motion capture's single-tag captions (removing the common component takes
 // the activity words with it), so that is the categoriser's setting
-// (docs/results.md#l_acc-per-activity-category-2026-11-23).
+// (docs/results.md on L_acc per activity category).
 #pragma once
 #include <string>
 #include <vector>

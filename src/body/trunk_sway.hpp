@@ -6,14 +6,14 @@
 // (Crosbie, Vachalathiti & Smith 1997, Gait & Posture 5:6-12), while the pelvis segment of a capture carries
 // the full rotation of the hip line: SisFall's board turns less than a sensor on the captured pelvis (`t2imu
 // analysis signal-stats`, gyr_sway_sd; the gains calibrated and measured, and why the share is no constant of a
-// belt: docs/realism.md#the-trunks-sway-2026-12-03). Turning about a vertical axis 0.1-0.15 m behind the board,
+// belt: docs/realism.md on the trunk's sway). Turning about a vertical axis 0.1-0.15 m behind the board,
 // the yaw is also a lateral acceleration at the stride frequency.
 //
 // The edit: the segment's rotation (world from rest) R is split into its slow part S (a Gaussian low-pass of
 // the sign-continuous quaternion, sd `sigma_s`: heading, posture, lying down) and its sway W = S^T R, a
 // rotation in the segment's rest axes (X left, Y up along the trunk, Z front); W's rotation vector is scaled
 // by pitch_gain about X and yaw_gain about Y (Z, the frontal-plane roll, is left as it is: a lever scaling it lowered
-// HAR and raised the two-sample accuracy, docs/realism.md#device-roll-and-drawn-bodies-2026-12-02, and was retired).
+// HAR and raised the two-sample accuracy, docs/realism.md on device roll and drawn bodies, and was retired).
 // The sensor then rides on S W': its orientation and its position about the segment's proximal joint both follow, so
 // the lever arm's tangential acceleration shrinks with the turn. Gains 1 leave the segment as it is.
 #pragma once

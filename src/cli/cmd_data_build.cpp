@@ -33,9 +33,8 @@ static CommandRegistrar registrar([](CLI::App& root) {
         ->capture_default_str();
     cmd->add_flag("--no-derived{false}", o.derive,
                   "leave out the clips derived from captured ones (stairs, sitting; see data/derived_clips.hpp)");
-    cmd->add_flag(
-        "--lying-turns", o.derived_kinds.lying_turns,
-        "add lying clips turning onto the side and back (off by default; docs/realism.md#lying-turns-2026-12-03)");
+    cmd->add_flag("--lying-turns", o.derived_kinds.lying_turns,
+                  "add lying clips turning onto the side and back (off by default; docs/realism.md on lying turns)");
     cmd->add_flag("--lie-down-rests", o.derived_kinds.lie_down_rests,
                   "add lying clips of the captured lie-down followed by rest (off by default; data/derived_clips.hpp)");
     cmd->add_flag("--stairs-round-trips", o.derived_kinds.stairs_round_trips,

@@ -108,15 +108,15 @@ struct DeriveReport {
 // The clip kinds that are off by default, each for a measured reason.
 struct DeriveOptions {
     // The turning clips of a lie-down: retrieval's HAR stayed within its spread and lying windows grew easier to
-    // tell from real (docs/realism.md#lying-turns-2026-12-03); the learned default did not learn to turn from them.
+    // tell from real (docs/realism.md on lying turns); the learned default did not learn to turn from them.
     bool lying_turns = false;
     // The stairs round trips: fine-tuned on them, the learned default drew "up and back down" prompts as stairs but
     // every "down the stairs" prompt as going up, and no jumps
-    // (docs/results.md#stairs-round-trips-and-lying-turns-2026-12-05-not-adopted).
+    // (docs/results.md on stairs round trips and lying turns).
     bool stairs_round_trips = false;
     // The lie-down and then rest (one per lie-down recording, captions of lying down): fine-tuned on them, the learned
     // model lies down for SisFall's lying prompts; stairs down and jumping go with the fine-tuning seed, with or
-    // without them (docs/results.md#lie-down-and-rest-clips-2026-12-05-not-adopted). models/default is fine-tuned on a
+    // without them (docs/results.md on lie-down-and-rest clips). models/default is fine-tuned on a
     // build with them (experiments/default.toml).
     bool lie_down_rests = false;
     // Walks turned onto a curve (motion/walk_turn.hpp), one per captured walk: the captured walks turn less than 45

@@ -6,7 +6,7 @@
 // Why this form: on the shared SisFall subjects (waist, 20 Hz, median per recording of each axis's sd in 5-10
 // Hz) the real board carries more there than the same retrieved motions through our sensor with the `sisfall`
 // preset in every class, and the missing amount grows with how hard the body moves
-// (docs/realism.md#body-vibration-2026-12-04). A stationary noise
+// (docs/realism.md on body vibration). A stationary noise
 // would swamp the quiet classes; a fixed filter of the captured signal cannot add content that is not there. So
 // the vibration is Gaussian noise, band-limited to [low_hz, high_hz], whose sd follows the local level of the
 // motion.

@@ -15,7 +15,7 @@
 // to the gyroscope); a strap mode (a device that slides along its belt or strap) is a second spring-mass, run on
 // the component along one sensor axis of the acceleration the first one gives, whose relative acceleration is
 // added along that axis (translation only: the measured belt board's gyroscope shows no such rocking,
-// docs/realism.md#the-belts-strap-2026-12-03; the terms of the sensor frame's rotation during a ring of a few tenths of
+// docs/realism.md on the belt's strap; the terms of the sensor frame's rotation during a ring of a few tenths of
 // a second are left out); each output sample is the mean of the internal samples within half an output period of it (a
 // box filter: a sensor's and a data set's own low-pass before decimation).
 #pragma once

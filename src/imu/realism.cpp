@@ -53,7 +53,7 @@ void check_damping(const SoftTissue& mode, const char* key, const char* hz_key, 
 // Measured and retired (the rule: a lever stays if it improves a measured fidelity figure on at least one real
 // data set, or models a documented device behaviour a user can choose): the device roll (`roll_gain`,
 // `roll_sigma_s`: the share of its segment's frontal-plane sway a device rolls with), which made synthetic data
-// easier to tell from real and lowered HAR (docs/realism.md#device-roll-and-drawn-bodies-2026-12-02). Its keys,
+// easier to tell from real and lowered HAR (docs/realism.md on device roll and drawn bodies). Its keys,
 // recorded off (gain 1) in folders made before its retirement, read as today's models.
 const std::vector<RealismLever> kLevers = {
     {"tempo",

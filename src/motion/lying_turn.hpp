@@ -13,7 +13,7 @@
 //
 // Timeline: before_s lying as the source lies, turn_s turning (minimum jerk, as every edit of motion_edit.hpp),
 // on_side_s on the side, back_s turning back, after_s lying again. The dataset builder draws the durations
-// (derived_clips.hpp); docs/realism.md#lying-turns-2026-12-03 measures the level they give against real lying
+// (derived_clips.hpp); docs/realism.md on lying turns measures the level they give against real lying
 // recordings.
 #pragma once
 #include "motion/joint_sequence.hpp"

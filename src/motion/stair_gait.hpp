@@ -30,7 +30,7 @@
 //     is 0.76 of their level walking's (1.82 Hz); at 0.80 / 0.85 the derived stairs stepped at 1.56 Hz. That
 //     median hides two paces, D05 "slowly" at 1.25 Hz and D06 "quickly" at 2.80 Hz; stairs from walks played
 //     1.3-1.5 times as fast for the quick one took real walking into the stairs class
-//     (docs/realism.md#quick-stairs-2026-12-03).
+//     (docs/realism.md on quick stairs).
 //   - The trunk leans further forward than on the level when ascending, less so descending (McFadyen & Winter
 //     1988; Riener et al. 2002): trunk_lean_rad 0.12 (7 deg) ascent, 0.05 descent by default.
 //   - The swinging foot clears the nosing by a few centimetres (Hamel, Okita, Higginson & Cavanagh 2005, on

@@ -44,7 +44,7 @@ constexpr uint64_t kSeedStridePerAttempt = 1000003;
 
 // The sampling of t2imu synth and of the experiments: DPM-Solver++ 2M, 50 denoiser calls. Fewer steps smooth the
 // learned default's motions and cost HAR
-// (docs/results.md#sampler-steps-the-main-job-samples-with-50-dpm-solver-steps-not-20-2026-12-06-later;
+// (docs/results.md on sampler steps;
 // bench/README.md#samplers-quality-against-steps).
 SampleOptions synth_sampling_defaults();
 
@@ -61,7 +61,7 @@ struct SynthOptions {
     // The virtual sensors see a retrieved captured clip at its capture rate (MotionSource::capture_rate_motion)
     // rather than at 20 fps; motions without a capture-rate copy (derived clips, the models') stay at 20 fps. On by
     // default: on the shared SisFall subjects it brought the waist signals' texture nearer the real ones and cost
-    // nothing (docs/realism.md#the-capture-rate-at-the-sensors-2026-12-03).
+    // nothing (docs/realism.md on the capture rate at the sensors).
     bool capture_rate = true;
     bool filter = true;
     int max_retries = 2;

@@ -4,7 +4,7 @@
 // The shared motion capture comes with ~7,000 captions written in a few house styles ("a person walks forward",
 // CMU's "walk", HDM05's class names); users prompt in their own words ("an office worker ambles over to the
 // printer"), and a model trained on the house styles alone follows few paraphrases
-// (docs/results.md#the-gpu-trained-default-the-l_acc-sweep-and-stairs-that-pass-the-filter-2026-12-04). Each word of a
+// (docs/results.md on the GPU-trained default and the L_acc sweep). Each word of a
 // caption is, independently:
 //   - replaced, with probability `swap`, by one of its `neighbours` nearest words in the GloVe space (cosine
 //     similarity at least `min_similarity`, among the `search_words` most frequent words): "walks" -> "walking",

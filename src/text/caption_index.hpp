@@ -38,8 +38,8 @@ public:
     // data/measured_captions.hpp: slowly, left, then, ...), best first (ties: the earlier caption); fewer when the
     // activity has fewer, none when it is "" or has none. Across activities the nearest caption by words is too often
     // another activity's (see above; as an anchor it cost first draws). All k share the activity of the best one, so
-    // "stairs" gives one direction: a blend of up and down captions conditions a walk on the level (docs/results.md,
-    // "One stairs direction per anchor, and the main job's filter (2026-12-05, later)").
+    // "stairs" gives one direction: a blend of up and down captions conditions a walk on the level (docs/results.md on
+    // one stairs direction per anchor).
     std::vector<CaptionNeighbour> nearest(const std::string& prompt, size_t k, const std::string& activity,
                                           bool match_attributes = false) const;
     const std::vector<Prompt>& captions() const { return captions_; }
