@@ -12,6 +12,7 @@
 #include "motion/motion_attributes.hpp"
 #include "motion/skeleton.hpp"
 #include "motion/stair_gait.hpp"
+#include "pose_fixture.hpp"
 #include "walk_fixture.hpp"
 
 using namespace t2imu;
@@ -20,32 +21,9 @@ namespace j = smpl22;
 
 namespace {
 
-// A standing body facing +Z (its left at +X): pelvis 0.9 m up, straight legs, head 0.65 m above the pelvis.
-std::array<Vector3d, 22> standing() {
-    std::array<Vector3d, 22> p;
-    p[j::pelvis] = {0, 0.9, 0};
-    p[j::spine1] = {0, 1.0, 0};
-    p[j::spine2] = {0, 1.15, 0};
-    p[j::spine3] = {0, 1.25, 0};
-    p[j::neck] = {0, 1.4, 0};
-    p[j::head] = {0, 1.55, 0};
-    for (int side : {-1, 1}) {
-        const bool left = side > 0;
-        p[left ? j::left_hip : j::right_hip] = {0.1 * side, 0.85, 0};
-        p[left ? j::left_knee : j::right_knee] = {0.1 * side, 0.45, 0};
-        p[left ? j::left_ankle : j::right_ankle] = {0.1 * side, 0.05, 0};
-        p[left ? j::left_foot : j::right_foot] = {0.1 * side, 0.0, 0.1};
-        p[left ? j::left_collar : j::right_collar] = {0.05 * side, 1.35, 0};
-        p[left ? j::left_shoulder : j::right_shoulder] = {0.18 * side, 1.35, 0};
-        p[left ? j::left_elbow : j::right_elbow] = {0.2 * side, 1.1, 0};
-        p[left ? j::left_wrist : j::right_wrist] = {0.2 * side, 0.85, 0};
-    }
-    return p;
-}
-
 // A seated body: thighs forward and level at 0.5 m, shins vertical, trunk upright over the pelvis.
 std::array<Vector3d, 22> seated() {
-    std::array<Vector3d, 22> p = standing();
+    std::array<Vector3d, 22> p = test::standing_pose();
     const double drop = 0.4;
     for (int k : {j::pelvis, j::spine1, j::spine2, j::spine3, j::neck, j::head, j::left_hip, j::right_hip,
                   j::left_collar, j::right_collar, j::left_shoulder, j::right_shoulder, j::left_elbow, j::right_elbow,
@@ -92,7 +70,7 @@ JointSequence mirrored(const JointSequence& s) {
 
 // Every joint of `pose` laid down rigidly by rotation r about the origin, then lifted so the lowest joint is 0.05 m up.
 JointSequence laid(const Eigen::Matrix3d& r, int frames) {
-    std::array<Vector3d, 22> p = standing();
+    std::array<Vector3d, 22> p = test::standing_pose();
     double low = 1e9;
     for (Vector3d& x : p) x = r * (x - Vector3d(0, 0.9, 0)), low = std::min(low, x.y());
     for (Vector3d& x : p) x.y() += 0.05 - low;
@@ -102,7 +80,7 @@ JointSequence laid(const Eigen::Matrix3d& r, int frames) {
 }  // namespace
 
 TEST(MotionAttributes, AGlideAtExactlyOnePointTwoMetresPerSecondMeasuresOnePointTwo) {
-    JointSequence m = still(standing(), 80);
+    JointSequence m = still(test::standing_pose(), 80);
     for (int f = 0; f < m.num_frames; ++f)
         for (int k = 0; k < 22; ++k) m.at(f, k) += Vector3d(0.72, 0, 0.96) * f / 20.0;  // |(0.72, 0.96)| = 1.2
     const MotionAttributes a = measure_attributes(m);
@@ -186,7 +164,7 @@ TEST(MotionAttributes, UpThenDownIsTwoClimbsInThatOrder) {
 }
 
 TEST(MotionAttributes, ABodyLiftedInAParabolaJumpsOnceAtItsHeight) {
-    JointSequence m = still(standing(), 60);
+    JointSequence m = still(test::standing_pose(), 60);
     for (int f = 20; f <= 30; ++f) {  // 0.5 s of flight, peak 0.3 m at frame 25
         const double t = (f - 25) / 5.0, h = 0.3 * (1 - t * t);
         for (int k = 0; k < 22; ++k) m.at(f, k).y() += h;
@@ -194,7 +172,7 @@ TEST(MotionAttributes, ABodyLiftedInAParabolaJumpsOnceAtItsHeight) {
     const MotionAttributes a = measure_attributes(m);
     EXPECT_EQ(a.jumps, 1);
     EXPECT_NEAR(a.jump_height_m, 0.3, 1e-9);
-    JointSequence low = still(standing(), 60);  // a 0.08 m hop stays under kJumpRise
+    JointSequence low = still(test::standing_pose(), 60);  // a 0.08 m hop stays under kJumpRise
     for (int f = 22; f <= 28; ++f)
         for (int k = 0; k < 22; ++k) low.at(f, k).y() += 0.08;
     EXPECT_EQ(measure_attributes(low).jumps, 0);
@@ -217,8 +195,8 @@ TEST(MotionAttributes, LyingOnTheBackTheFrontAndTheLeftSide) {
 }
 
 TEST(MotionAttributes, SittingDownAndStandingUpInThatOrder) {
-    const JointSequence m =
-        concatenate_frames(concatenate_frames(still(standing(), 20), still(seated(), 40)), still(standing(), 20));
+    const JointSequence m = concatenate_frames(
+        concatenate_frames(still(test::standing_pose(), 20), still(seated(), 40)), still(test::standing_pose(), 20));
     const MotionAttributes a = measure_attributes(m);
     ASSERT_EQ(a.transitions.size(), 2u);
     EXPECT_EQ(a.transitions[0], Transition::sit_down);
@@ -226,12 +204,12 @@ TEST(MotionAttributes, SittingDownAndStandingUpInThatOrder) {
     EXPECT_NEAR(a.seated_s, 2.0, 1e-9);
     EXPECT_STREQ(transition_name(a.transitions[0]), "sit_down");
     // A two-frame dip into the seat is not a sit (shorter than kMinPostureSeconds).
-    const JointSequence dip =
-        concatenate_frames(concatenate_frames(still(standing(), 20), still(seated(), 2)), still(standing(), 20));
+    const JointSequence dip = concatenate_frames(
+        concatenate_frames(still(test::standing_pose(), 20), still(seated(), 2)), still(test::standing_pose(), 20));
     EXPECT_TRUE(measure_attributes(dip).transitions.empty());
 }
 
 TEST(MotionAttributes, RefusesAMotionThatIsNotTwentyTwoJointsOrTooShort) {
-    EXPECT_THROW(measure_attributes(still(standing(), 2)), Error);
+    EXPECT_THROW(measure_attributes(still(test::standing_pose(), 2)), Error);
     EXPECT_THROW(measure_attributes(JointSequence(10, 21, 20.0)), Error);
 }

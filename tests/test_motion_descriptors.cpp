@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "motion/motion_descriptors.hpp"
 #include "motion/skeleton.hpp"
+#include "pose_fixture.hpp"
 
 using namespace t2imu;
 using Eigen::Vector3d;
@@ -31,29 +32,6 @@ enum Descriptor {
     kAirborne
 };
 
-// A standing body: pelvis 0.9 m up, straight legs, ankles 0.05 m above the floor, head 0.65 m above the pelvis.
-std::array<Vector3d, 22> standing() {
-    std::array<Vector3d, 22> p;
-    p[j::pelvis] = {0, 0.9, 0};
-    p[j::spine1] = {0, 1.0, 0};
-    p[j::spine2] = {0, 1.15, 0};
-    p[j::spine3] = {0, 1.25, 0};
-    p[j::neck] = {0, 1.4, 0};
-    p[j::head] = {0, 1.55, 0};
-    for (int side : {-1, 1}) {
-        const bool left = side > 0;  // the body's left is +X
-        p[left ? j::left_hip : j::right_hip] = {0.1 * side, 0.85, 0};
-        p[left ? j::left_knee : j::right_knee] = {0.1 * side, 0.45, 0};
-        p[left ? j::left_ankle : j::right_ankle] = {0.1 * side, 0.05, 0};
-        p[left ? j::left_foot : j::right_foot] = {0.1 * side, 0.0, 0.1};
-        p[left ? j::left_collar : j::right_collar] = {0.05 * side, 1.35, 0};
-        p[left ? j::left_shoulder : j::right_shoulder] = {0.18 * side, 1.35, 0};
-        p[left ? j::left_elbow : j::right_elbow] = {0.2 * side, 1.1, 0};
-        p[left ? j::left_wrist : j::right_wrist] = {0.2 * side, 0.85, 0};
-    }
-    return p;
-}
-
 // `frames` frames at 20 fps of the pose `pose` moved by offset(f) (and each joint by joint_offset(f, joint)).
 template <class Offset>
 JointSequence motion(int frames, const std::array<Vector3d, 22>& pose, Offset offset) {
@@ -67,7 +45,7 @@ JointSequence motion(int frames, const std::array<Vector3d, 22>& pose, Offset of
 TEST(MotionDescriptors, GlidingUprightAtOneMetrePerSecond) {
     // Every joint moves at (0.8, 0, 0.6) m/s: horizontal speed 1, feet at 1, wrists still relative to the pelvis.
     const MotionDescriptors d = describe_motion(
-        motion(40, standing(), [](int f, int) -> Vector3d { return Vector3d(0.8, 0, 0.6) * f / 20.0; }));
+        motion(40, test::standing_pose(), [](int f, int) -> Vector3d { return Vector3d(0.8, 0, 0.6) * f / 20.0; }));
     EXPECT_NEAR(d[kPelvisHeight], 0.9, 1e-12);
     EXPECT_NEAR(d[kPelvisSd], 0.0, 1e-12);
     EXPECT_NEAR(d[kHeadAbove], 0.65, 1e-12);
@@ -86,8 +64,9 @@ TEST(MotionDescriptors, GlidingUprightAtOneMetrePerSecond) {
 TEST(MotionDescriptors, AirborneMeansMoreThanFiveCentimetresUp) {
     // The whole body lifted in frames 10..14 of 40: 6 cm is flight (5 frames), 4 cm is below kAirborneHeight.
     const auto lifted = [](double h) {
-        return describe_motion(motion(
-            40, standing(), [h](int f, int) -> Vector3d { return Vector3d(0, f >= 10 && f < 15 ? h : 0.0, 0); }));
+        return describe_motion(motion(40, test::standing_pose(), [h](int f, int) -> Vector3d {
+            return Vector3d(0, f >= 10 && f < 15 ? h : 0.0, 0);
+        }));
     };
     EXPECT_DOUBLE_EQ(lifted(0.06)[kAirborne], 5.0 / 40);
     EXPECT_DOUBLE_EQ(lifted(0.04)[kAirborne], 0.0);
@@ -95,7 +74,7 @@ TEST(MotionDescriptors, AirborneMeansMoreThanFiveCentimetresUp) {
 
 TEST(MotionDescriptors, SeatedAndLyingPostures) {
     // Seated: thighs horizontal (knees 0.45 m in front of the hips), shins vertical: thigh tilt pi/2, knee bent pi/2.
-    std::array<Vector3d, 22> seated = standing();
+    std::array<Vector3d, 22> seated = test::standing_pose();
     for (int side : {-1, 1}) {
         const bool left = side > 0;
         seated[left ? j::left_hip : j::right_hip] = {0.1 * side, 0.5, 0};
@@ -110,7 +89,8 @@ TEST(MotionDescriptors, SeatedAndLyingPostures) {
     // tilted pi/2, the head level with the pelvis.
     std::array<Vector3d, 22> lying;
     const Eigen::Matrix3d turn = Eigen::AngleAxisd(M_PI / 2, Vector3d::UnitX()).toRotationMatrix();
-    for (size_t k = 0; k < 22; ++k) lying[k] = turn * (standing()[k] - Vector3d(0, 0.9, 0)) + Vector3d(0, 0.15, 0);
+    for (size_t k = 0; k < 22; ++k)
+        lying[k] = turn * (test::standing_pose()[k] - Vector3d(0, 0.9, 0)) + Vector3d(0, 0.15, 0);
     const MotionDescriptors l =
         describe_motion(motion(10, lying, [](int, int) -> Vector3d { return Vector3d::Zero(); }));
     EXPECT_NEAR(l[kTrunk], M_PI / 2, 1e-12);
@@ -122,7 +102,7 @@ TEST(MotionDescriptors, SeatedAndLyingPostures) {
 TEST(MotionDescriptors, BounceAndWristSwing) {
     // Pelvis and body bounce 0.05 sin(2 pi 2 t) m over 4 whole cycles: population sd 0.05 / sqrt(2). Wrists
     // move forward at 0.5 m/s relative to the pelvis.
-    const MotionDescriptors d = describe_motion(motion(40, standing(), [](int f, int k) -> Vector3d {
+    const MotionDescriptors d = describe_motion(motion(40, test::standing_pose(), [](int f, int k) -> Vector3d {
         const double t = f / 20.0;
         const bool wrist = k == j::left_wrist || k == j::right_wrist;
         return Vector3d(0, 0.05 * std::sin(2 * M_PI * 2 * t), wrist ? 0.5 * t : 0.0);
@@ -136,7 +116,7 @@ TEST(MotionDescriptors, BounceAndWristSwing) {
 
 TEST(MotionDescriptors, MirroredMotionHasTheSameDescriptors) {
     // Mirror: x -> -x and left <-> right joints swapped (kMirror).
-    const JointSequence m = motion(30, standing(), [](int f, int k) -> Vector3d {
+    const JointSequence m = motion(30, test::standing_pose(), [](int f, int k) -> Vector3d {
         return Vector3d(0.3 * f / 20.0 + 0.01 * k * std::sin(f * 0.7), 0.02 * std::cos(f * 0.5 + k), 0.7 * f / 20.0);
     });
     JointSequence mirrored = m;
@@ -166,7 +146,9 @@ TEST(MotionDescriptors, MomentsOverASet) {
 }
 
 TEST(MotionDescriptors, RefusesTooFewFramesOrJoints) {
-    EXPECT_THROW(describe_motion(motion(2, standing(), [](int, int) -> Vector3d { return Vector3d::Zero(); })), Error);
+    EXPECT_THROW(
+        describe_motion(motion(2, test::standing_pose(), [](int, int) -> Vector3d { return Vector3d::Zero(); })),
+        Error);
     EXPECT_THROW(describe_motion(JointSequence(10, 21, 20.0)), Error);
 }
 
