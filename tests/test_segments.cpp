@@ -1,6 +1,6 @@
 // Segment orientations from joint positions: identity in the rest pose, a rigid turn of the whole body for every
 // segment, long axes carried onto the posed bones, a hip flexed 90 deg with the knee bent (thigh = Rx(-90),
-// shin unturned), orthonormal frames, cross-section axes, and twist smoothing leaving a still pose alone.
+// shin unturned), orthonormal frames and cross-section axes.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
