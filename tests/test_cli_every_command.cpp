@@ -1,10 +1,10 @@
 // Every subcommand, found from the program's own --help (so a new one is covered the day it is added), refuses
 // an unknown option and a call without its required arguments with exit code 2 and one line "t2imu: ...".
-// Each call is a process that spends most of its time starting (libtorch and its shared libraries), so the help
-// texts are read once per test process and the probes run several at a time.
+// The probes run through test::run_cli_each (one process per core, the help texts read once per test process).
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -14,51 +14,6 @@
 using namespace t2imu;
 
 namespace {
-
-// The names listed under "Subcommands:" in a --help text.
-std::vector<std::string> subcommands_in(const std::string& help) {
-    std::vector<std::string> names;
-    std::istringstream in(help);
-    bool listing = false;
-    for (std::string line; std::getline(in, line);) {
-        if (line.rfind("Subcommands:", 0) == 0) {
-            listing = true;
-            continue;
-        }
-        if (!listing) continue;
-        if (line.size() < 3 || line[0] != ' ' || line[2] == ' ') break;  // the list ends at a blank or unindented line
-        std::istringstream words(line);
-        std::string name;
-        words >> name;
-        names.push_back(name);
-    }
-    return names;
-}
-
-struct CliLeaf {
-    std::string path;  // "group sub"
-    std::string help;  // `t2imu group sub --help`
-};
-
-// Every leaf command with its help text, read level by level from the "Subcommands:" lists; once per process.
-const std::vector<CliLeaf>& every_leaf() {
-    static const std::vector<CliLeaf> all = [] {
-        std::vector<CliLeaf> found;
-        for (std::vector<std::string> level = {""}; !level.empty();) {
-            std::vector<std::string> calls, next;
-            for (const std::string& path : level) calls.push_back(path + " --help");
-            const std::vector<test::CliResult> helps = test::run_cli_each(calls);
-            for (size_t i = 0; i < level.size(); ++i) {
-                const std::vector<std::string> children = subcommands_in(helps[i].output);
-                if (children.empty() && !level[i].empty()) found.push_back({level[i], helps[i].output});
-                for (const std::string& c : children) next.push_back(level[i].empty() ? c : level[i] + " " + c);
-            }
-            level = next;
-        }
-        return found;
-    }();
-    return all;
-}
 
 // Exit 2 and one line "t2imu: ..." for `args`, or what was wrong.
 std::string not_one_line_usage_error(const std::string& args, const test::CliResult& r) {
@@ -70,10 +25,10 @@ std::string not_one_line_usage_error(const std::string& args, const test::CliRes
 }  // namespace
 
 TEST(CliEveryCommand, UnknownOptionsAndMissingRequiredArgumentsAreOneLineUsageErrors) {
-    ASSERT_GE(every_leaf().size(), 29u);  // 29 leaf commands on 2026-12-04
+    ASSERT_GE(test::cli_leaves().size(), 29u);  // 29 leaf commands on 2026-12-04
     std::vector<std::string> calls;
     int with_required = 0;
-    for (const CliLeaf& leaf : every_leaf()) {
+    for (const test::CliLeaf& leaf : test::cli_leaves()) {
         calls.push_back(leaf.path + " --no-such-option 1");
         if (leaf.help.find("REQUIRED") == std::string::npos) continue;
         ++with_required;
@@ -85,34 +40,6 @@ TEST(CliEveryCommand, UnknownOptionsAndMissingRequiredArgumentsAreOneLineUsageEr
 }
 
 namespace {
-
-struct OptionLine {
-    std::string name, type;  // "--window", "FLOAT=2" / "TEXT:DIR" / "TEXT:{a,b}"
-    bool required = false, positional = false;
-};
-
-// The options and positionals of a leaf's --help text, as CLI11 lists them.
-std::vector<OptionLine> options_of(const CliLeaf& leaf) {
-    std::vector<OptionLine> out;
-    std::istringstream in(leaf.help);
-    bool listing = false;
-    for (std::string line; std::getline(in, line);) {
-        if (line.rfind("Options:", 0) == 0 || line.rfind("Positionals:", 0) == 0) {
-            listing = true;
-            continue;
-        }
-        if (!listing || line.size() < 3 || line[0] != ' ' || line[2] == ' ') continue;
-        std::istringstream words(line);
-        OptionLine o;
-        words >> o.name >> o.type;
-        if (o.name.rfind("-h,", 0) == 0 || (o.name.rfind("--", 0) != 0 && o.name[0] == '-'))
-            continue;  // help, short-only flags
-        o.positional = o.name[0] != '-';
-        o.required = line.find("REQUIRED") != std::string::npos;
-        out.push_back(o);
-    }
-    return out;
-}
 
 // Arguments a stand-in cannot give: one of two options a command needs (--loso or --test...), an option required
 // in one mode (catch22's --out with --dataset), a required choice checked after parsing (--to). A minimal call
@@ -133,7 +60,7 @@ const std::vector<KnownArgument> kKnownArguments = {
 
 // A call that satisfies the parser: each required argument a stand-in of its type (an empty file, an empty
 // folder, the first choice, a word; --out inside `dir`), then `extra`.
-std::string minimal_call(const std::string& leaf, const std::vector<OptionLine>& options, const std::string& dir,
+std::string minimal_call(const std::string& leaf, const std::vector<test::CliOption>& options, const std::string& dir,
                          const std::string& extra) {
     const auto given_by_extra = [&](const std::string& option) { return extra.rfind(option + " ", 0) == 0; };
     const auto known = [&](const std::string& option) {
@@ -149,7 +76,7 @@ std::string minimal_call(const std::string& leaf, const std::vector<OptionLine>&
                                                 : k.value;
         call += " " + k.option + (value.empty() ? "" : " " + value);
     }
-    for (const OptionLine& o : options) {
+    for (const test::CliOption& o : options) {
         if (!o.required || given_by_extra(o.name) || known(o.name)) continue;
         std::string value = "x";
         if (o.name == "--out")
@@ -174,8 +101,8 @@ std::string minimal_call(const std::string& leaf, const std::vector<OptionLine>&
 TEST(CliEveryCommand, NanHugeNumbersAndAnUnwritableOutAreOneLineUsageErrors) {
     const std::string scratch = test::scratch_dir("cli_every_command");
     std::vector<std::string> calls, names, dirs;
-    const auto probe = [&](const std::string& leaf, const std::vector<OptionLine>& options, const std::string& extra,
-                           const std::string& name) {
+    const auto probe = [&](const std::string& leaf, const std::vector<test::CliOption>& options,
+                           const std::string& extra, const std::string& name) {
         const std::string dir = scratch + "/p" + std::to_string(calls.size());
         std::filesystem::create_directories(dir + "/d");
         std::ofstream(dir + "/f") << "";
@@ -183,9 +110,9 @@ TEST(CliEveryCommand, NanHugeNumbersAndAnUnwritableOutAreOneLineUsageErrors) {
         names.push_back(name);
         dirs.push_back(dir);
     };
-    for (const CliLeaf& leaf : every_leaf()) {
-        const std::vector<OptionLine> options = options_of(leaf);
-        for (const OptionLine& o : options) {
+    for (const test::CliLeaf& leaf : test::cli_leaves()) {
+        const std::vector<test::CliOption> options = test::cli_options_of(leaf.path);
+        for (const test::CliOption& o : options) {
             if (o.positional || o.name == "--threads") continue;
             if (o.type.rfind("FLOAT", 0) == 0) probe(leaf.path, options, o.name + " nan", o.name);
             if (o.type.rfind("FLOAT", 0) == 0 || o.type.rfind("INT", 0) == 0)
@@ -204,4 +131,26 @@ TEST(CliEveryCommand, NanHugeNumbersAndAnUnwritableOutAreOneLineUsageErrors) {
         if (std::filesystem::exists(dirs[i] + "/o"))
             ADD_FAILURE() << calls[i] << "\n    -> wrote its --out before refusing";
     }
+}
+
+// The probes' batch mode (test::run_cli_each) builds a command table per command line: an option set by one call
+// is back at its default for the next, and each call keeps its own exit code and output.
+TEST(CliEveryCommand, BatchModeStartsEachCommandLineFromTheDefaults) {
+    if (std::getenv("T2IMU_TEST_BINARY")) GTEST_SKIP() << "another build: its calls run one process each";
+    const std::string joints = test::source_dir() + "/README.md";
+    const std::vector<test::CliResult> r = test::run_cli_each(
+        {"imu synth --joints " + joints + " --fps 7 --rate 9 --out /proc/t2imu-no/o", "imu synth --help", "--version",
+         "imu synth --joints " + joints + " --fps 7 --rate 9 --out /proc/t2imu-no/o", "imu synth --help"});
+    ASSERT_EQ(r.size(), 5u);
+    for (size_t i : {0, 3}) {
+        EXPECT_EQ(r[i].exit_code, 2) << r[i].output;
+        EXPECT_TRUE(test::contains(r[i].output, "/proc/t2imu-no")) << r[i].output;
+    }
+    for (size_t i : {1, 4}) {
+        EXPECT_EQ(r[i].exit_code, 0);
+        EXPECT_TRUE(test::contains(r[i].output, "--fps FLOAT=20 ")) << r[i].output;
+        EXPECT_TRUE(test::contains(r[i].output, "--rate FLOAT=50 ")) << r[i].output;
+    }
+    EXPECT_EQ(r[2].exit_code, 0);
+    EXPECT_EQ(r[2].output, "t2imu 0.1.0\n");
 }

@@ -5,13 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
-#include <mutex>
-#include <thread>
 
 #include "core/output_path.hpp"
 #include "test_util.hpp"
@@ -167,36 +164,35 @@ TEST(CliOutputPaths, EveryWritingCommandRefusesEveryTrapBeforeAnyWork) {
     }
     EXPECT_GE(writers, 29);  // every leaf command but text similarity
 
-    // One scratch tree per probe (they run in parallel; each process start costs most of a probe).
-    std::vector<std::string> failures(probes.size());
-    std::atomic<size_t> next{0};
-    const auto work = [&] {
-        for (size_t i = next++; i < probes.size(); i = next++) {
-            const Probe& p = probes[i];
-            const std::string root = scratch + "/" + std::to_string(i);
-            make_tree(root);
-            std::string args =
-                replaced(replaced(replaced(p.args, "ROOT", root), "INPUT", root + "/f"), "DIR", root + "/d");
-            if (args.rfind("WRITE ", 0) == 0) {  // "WRITE PATH TEXT": the config, then `LEAF --config PATH`
-                const size_t end = args.find(' ', 6);
-                const std::string config = args.substr(6, end - 6);
-                std::ofstream(config) << args.substr(end + 1);
-                args = p.leaf + " --config " + config + (p.leaf == "finetune" ? " --from " + root + "/made" : "");
-            }
-            const std::string before = tree_listing(root);
-            const test::CliResult r = test::run_cli("--threads 1 " + args);
-            std::string why;
-            if (r.exit_code != 2) why += " exit " + std::to_string(r.exit_code) + ";";
-            if (std::count(r.output.begin(), r.output.end(), '\n') != 1 || r.output.rfind("t2imu: ", 0) != 0)
-                why += " not one line;";
-            if (!test::contains(r.output, p.reason)) why += " no '" + p.reason + "';";
-            if (tree_listing(root) != before) why += " the tree changed;";
-            if (!why.empty()) failures[i] = args + ":" + why + "\n  " + r.output.substr(0, 400);
+    // One scratch tree per probe; the probes run together through test::run_cli_each.
+    std::vector<std::string> calls, roots, before;
+    for (size_t i = 0; i < probes.size(); ++i) {
+        const Probe& p = probes[i];
+        const std::string root = scratch + "/" + std::to_string(i);
+        make_tree(root);
+        std::string args = replaced(replaced(replaced(p.args, "ROOT", root), "INPUT", root + "/f"), "DIR", root + "/d");
+        if (args.rfind("WRITE ", 0) == 0) {  // "WRITE PATH TEXT": the config, then `LEAF --config PATH`
+            const size_t end = args.find(' ', 6);
+            const std::string config = args.substr(6, end - 6);
+            std::ofstream(config) << args.substr(end + 1);
+            args = p.leaf + " --config " + config + (p.leaf == "finetune" ? " --from " + root + "/made" : "");
         }
-    };
-    std::vector<std::thread> threads;
-    for (int t = 0; t < 4; ++t) threads.emplace_back(work);
-    for (std::thread& t : threads) t.join();
+        calls.push_back("--threads 1 " + args);
+        roots.push_back(root);
+        before.push_back(tree_listing(root));
+    }
+    const std::vector<test::CliResult> results = test::run_cli_each(calls);
+    std::vector<std::string> failures(probes.size());
+    for (size_t i = 0; i < probes.size(); ++i) {
+        const test::CliResult& r = results[i];
+        std::string why;
+        if (r.exit_code != 2) why += " exit " + std::to_string(r.exit_code) + ";";
+        if (std::count(r.output.begin(), r.output.end(), '\n') != 1 || r.output.rfind("t2imu: ", 0) != 0)
+            why += " not one line;";
+        if (!test::contains(r.output, probes[i].reason)) why += " no '" + probes[i].reason + "';";
+        if (tree_listing(roots[i]) != before[i]) why += " the tree changed;";
+        if (!why.empty()) failures[i] = calls[i] + ":" + why + "\n  " + r.output.substr(0, 400);
+    }
     for (const std::string& f : failures) EXPECT_TRUE(f.empty()) << f;
     EXPECT_FALSE(fs::exists("/proc/t2imu-probe"));
     EXPECT_GE(probes.size(), 6u * 29);

@@ -658,16 +658,37 @@ std::string with_dir(std::string s, const std::string& dir) {
     return s;
 }
 
+// Every row's folder, files and outcome: the rows run together through test::run_cli_each, once per process.
+struct Outcome {
+    std::string dir;
+    test::CliResult result;
+};
+const std::map<std::string, Outcome>& outcomes() {
+    static const std::map<std::string, Outcome> all = [] {
+        std::vector<std::string> calls, dirs;
+        for (const Row& row : rows()) {
+            const std::string dir = test::scratch_dir("cli_robustness/" + row.name);
+            for (const auto& [path, content] : row.files) {
+                fs::create_directories((fs::path(dir) / path).parent_path());
+                std::ofstream(dir + "/" + path, std::ios::binary) << content;
+            }
+            calls.push_back("--threads 1 " + with_dir(row.args, dir));
+            dirs.push_back(dir);
+        }
+        const std::vector<test::CliResult> results = test::run_cli_each(calls);
+        std::map<std::string, Outcome> by_name;
+        for (size_t i = 0; i < results.size(); ++i) by_name.emplace(rows()[i].name, Outcome{dirs[i], results[i]});
+        return by_name;
+    }();
+    return all;
+}
+
 class CliRobustnessTable : public testing::TestWithParam<Row> {};
 
 TEST_P(CliRobustnessTable, Row) {
     const Row& row = GetParam();
-    const std::string dir = test::scratch_dir("cli_robustness/" + row.name);
-    for (const auto& [path, content] : row.files) {
-        fs::create_directories((fs::path(dir) / path).parent_path());
-        std::ofstream(dir + "/" + path, std::ios::binary) << content;
-    }
-    const test::CliResult r = test::run_cli("--threads 1 " + with_dir(row.args, dir));
+    const test::CliResult& r = outcomes().at(row.name).result;
+    const std::string& dir = outcomes().at(row.name).dir;
     EXPECT_EQ(r.exit_code, row.exit_code) << r.output;
     EXPECT_NE(r.output.find(row.fragment), std::string::npos) << "expected \"" << row.fragment << "\" in: " << r.output;
     if (row.exit_code != 0) {

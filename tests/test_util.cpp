@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <mutex>
 #include <sstream>
 #include <thread>
@@ -73,18 +74,58 @@ std::string scratch_dir(const std::string& name) {
     return p.string();
 }
 
-CliResult run_cli(const std::string& args) {
+namespace {
+
+std::string binary() {
     const char* other = std::getenv("T2IMU_TEST_BINARY");
-    return run_shell(std::string("'") + (other && *other ? other : T2IMU_BINARY) + "' " + args);
+    return other && *other ? other : T2IMU_BINARY;
 }
 
+// `calls` through one t2imu process in its batch mode (src/cli/main.cpp: T2IMU_CLI_BATCH): the shell splits each
+// call's words as it would for run_cli, and each call's record comes back as "EXIT\nLENGTH\n" and its output.
+std::vector<CliResult> run_cli_batch(const std::vector<std::string>& calls) {
+    static std::atomic<int> batches{0};
+    const std::string script =
+        scratch_dir("cli_batch/" + std::to_string(getpid()) + "-" + std::to_string(batches++)) + "/calls.sh";
+    {
+        std::ofstream out(script);
+        for (const std::string& c : calls) out << "set -- " << c << "\nprintf '%s\\0' \"$#\" \"$@\"\n";
+    }
+    const CliResult batch = run_shell("sh '" + script + "' | T2IMU_CLI_BATCH=1 '" + binary() + "'");
+    std::vector<CliResult> results(calls.size(), CliResult{-1, "batch mode failed: " + batch.output.substr(0, 2000)});
+    std::istringstream in(batch.output);
+    for (CliResult& r : results) {
+        int code = 0;
+        size_t length = 0;
+        if (!(in >> code >> length) || in.get() != '\n') break;
+        std::string output(length, '\0');
+        if (!in.read(output.data(), static_cast<std::streamsize>(length))) break;
+        r = {code, output};
+    }
+    return results;
+}
+
+}  // namespace
+
+CliResult run_cli(const std::string& args) { return run_shell("'" + binary() + "' " + args); }
+
 std::vector<CliResult> run_cli_each(const std::vector<std::string>& calls) {
+    // Each call in a process of its own is kept for another build (it may predate the batch mode).
+    const bool own_processes = std::getenv("T2IMU_TEST_BINARY") && *std::getenv("T2IMU_TEST_BINARY");
+    const size_t parts = std::max(2u, std::thread::hardware_concurrency());
     std::vector<CliResult> results(calls.size());
+    std::vector<std::thread> workers;
     std::atomic<size_t> next{0};
-    std::vector<std::thread> workers(std::max(2u, std::thread::hardware_concurrency()));
-    for (std::thread& w : workers)
-        w = std::thread([&] {
-            for (size_t i = next++; i < calls.size(); i = next++) results[i] = run_cli(calls[i]);
+    for (size_t w = 0; w < parts; ++w)
+        workers.emplace_back([&, w] {
+            if (own_processes) {
+                for (size_t i = next++; i < calls.size(); i = next++) results[i] = run_cli(calls[i]);
+                return;
+            }
+            std::vector<std::string> mine;  // every parts-th call, so slow probes spread over the batches
+            for (size_t i = w; i < calls.size(); i += parts) mine.push_back(calls[i]);
+            const std::vector<CliResult> done = run_cli_batch(mine);
+            for (size_t j = 0; j < done.size(); ++j) results[w + j * parts] = done[j];
         });
     for (std::thread& w : workers) w.join();
     return results;
@@ -105,8 +146,9 @@ CliResult run_shell(const std::string& command) {
 
 namespace {
 
-std::vector<std::string> subcommands_of(const std::string& path) {
-    std::istringstream in(run_cli(path + " --help").output);
+// The names listed under "Subcommands:" in a --help text.
+std::vector<std::string> subcommands_in(const std::string& help) {
+    std::istringstream in(help);
     std::vector<std::string> names;
     bool listing = false;
     for (std::string line; std::getline(in, line);) {
@@ -124,23 +166,39 @@ std::vector<std::string> subcommands_of(const std::string& path) {
     return names;
 }
 
-void collect_leaves(const std::string& path, std::vector<std::string>* leaves) {
-    const std::vector<std::string> children = subcommands_of(path);
-    if (children.empty() && !path.empty()) leaves->push_back(path);
-    for (const std::string& c : children) collect_leaves(path.empty() ? c : path + " " + c, leaves);
-}
-
 }  // namespace
 
+const std::vector<CliLeaf>& cli_leaves() {
+    static const std::vector<CliLeaf> all = [] {
+        std::vector<CliLeaf> found;
+        for (std::vector<std::string> level = {""}; !level.empty();) {
+            std::vector<std::string> calls, next;
+            for (const std::string& path : level) calls.push_back(path + " --help");
+            const std::vector<CliResult> helps = run_cli_each(calls);
+            for (size_t i = 0; i < level.size(); ++i) {
+                const std::vector<std::string> children = subcommands_in(helps[i].output);
+                if (children.empty() && !level[i].empty()) found.push_back({level[i], helps[i].output});
+                for (const std::string& c : children) next.push_back(level[i].empty() ? c : level[i] + " " + c);
+            }
+            level = next;
+        }
+        std::sort(found.begin(), found.end(), [](const CliLeaf& a, const CliLeaf& b) { return a.path < b.path; });
+        return found;
+    }();
+    return all;
+}
+
 std::vector<std::string> cli_leaf_commands() {
-    std::vector<std::string> leaves;
-    collect_leaves("", &leaves);
-    return leaves;
+    std::vector<std::string> paths;
+    for (const CliLeaf& leaf : cli_leaves()) paths.push_back(leaf.path);
+    return paths;
 }
 
 std::vector<CliOption> cli_options_of(const std::string& leaf) {
+    const std::vector<CliLeaf>& leaves = cli_leaves();
+    const auto it = std::find_if(leaves.begin(), leaves.end(), [&](const CliLeaf& l) { return l.path == leaf; });
     std::vector<CliOption> out;
-    std::istringstream in(run_cli(leaf + " --help").output);
+    std::istringstream in(it == leaves.end() ? run_cli(leaf + " --help").output : it->help);
     bool listing = false;
     for (std::string line; std::getline(in, line);) {
         if (line.rfind("Options:", 0) == 0 || line.rfind("Positionals:", 0) == 0) {

@@ -53,14 +53,20 @@ std::string error_message(F f) {
 CliResult run_cli(const std::string& args);
 // Runs a shell command line (its stderr joined to stdout), e.g. one of the project's scripts.
 CliResult run_shell(const std::string& command);
-// run_cli once per argument string, as many at a time as there are cores (a call's time is mostly its process
-// starting: libtorch and its shared libraries); the results in the order of `calls`.
+// run_cli once per argument string, the results in the order of `calls`: the calls run in one t2imu process per core
+// (its batch mode, src/cli/main.cpp; a process start costs most of a probe's time), or each in its own process for
+// the build T2IMU_TEST_BINARY names.
 std::vector<CliResult> run_cli_each(const std::vector<std::string>& calls);
 
 std::string source_dir();
 
-// Every leaf command of the binary as "group sub" paths, depth first, read from the "Subcommands:" lists of
-// `t2imu [PATH] --help` (so a new command is covered the day it is added).
+// Every leaf command of the binary as "group sub" paths, sorted, with its help text, read from the "Subcommands:" lists
+// of `t2imu [PATH] --help` (so a new command is covered the day it is added); once per process.
+struct CliLeaf {
+    std::string path;  // "group sub"
+    std::string help;  // `t2imu group sub --help`
+};
+const std::vector<CliLeaf>& cli_leaves();
 std::vector<std::string> cli_leaf_commands();
 // An option or positional as `t2imu LEAF --help` lists it: "--window FLOAT=2 ...", "--out TEXT:DIR REQUIRED".
 struct CliOption {

@@ -14,9 +14,11 @@ namespace t2imu::cli {
 static void add_domain_gap(CLI::App& analysis) {
     auto* cmd = analysis.add_subcommand(
         "domain-gap", "two catch22 tables (real, synthetic) -> two-sample test and per-feature distances (JSON)");
-    static std::string real, synthetic, out;
-    static std::vector<std::string> classes;
-    static uint64_t seed = 0;
+    auto& real = option_values<std::string>();
+    auto& synthetic = option_values<std::string>();
+    auto& out = option_values<std::string>();
+    auto& classes = option_values<std::vector<std::string>>();
+    auto& seed = option_values<uint64_t>(0);
     cmd->add_option("--real", real, "features of real windows (t2imu features catch22 --dataset)")
         ->required()
         ->check(CLI::ExistingFile);
@@ -27,8 +29,10 @@ static void add_domain_gap(CLI::App& analysis) {
         ->delimiter(',');
     cmd->add_option("--seed", seed, "fold assignment seed");
     cmd->add_option("--out", out, "RESULT.json")->required();
-    cmd->callback([] {
-        check_usage([] { check_output(out, "--out", OutputKind::file, {real, synthetic}); });
+    cmd->callback([&classes, &out, &real, &seed, &synthetic] {
+        check_usage([&classes, &out, &real, &seed, &synthetic] {
+            check_output(out, "--out", OutputKind::file, {real, synthetic});
+        });
         CsvTable r = read_csv(real), s = read_csv(synthetic);
         if (!classes.empty()) {
             r = rows_of_activities(r, classes, "--classes");

@@ -15,13 +15,14 @@ static CommandRegistrar registrar([](CLI::App& root) {
     auto* cmd = analysis.add_subcommand(
         "attributes",
         "attribute benchmark of a synth folder: speed ratio fast / slow, turns, backward, sequences (JSON)");
-    static std::string synth, out;
+    auto& synth = option_values<std::string>();
+    auto& out = option_values<std::string>();
     cmd->add_option("--synth", synth, "t2imu synth folder (e.g. of prompts/attributes.tsv, --no-filter)")
         ->required()
         ->check(CLI::ExistingDirectory);
     cmd->add_option("--out", out, "RESULT.json (default: print the table only)");
-    cmd->callback([] {
-        check_usage([] {
+    cmd->callback([&out, &synth] {
+        check_usage([&out, &synth] {
             if (!out.empty()) check_output(out, "--out", OutputKind::file, {synth});
         });
         const AttributeBenchmark b = attribute_benchmark(synth_folder_draws(synth));

@@ -52,7 +52,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     CLI::App& analysis = command_group(root, "analysis", "evaluation analyses");
     auto* cmd = analysis.add_subcommand(
         "lacc", "per-sample L_acc of two models (id,caption,l_acc) -> change per activity category");
-    static LaccArgs a;
+    auto& a = option_values<LaccArgs>();
     cmd->add_option("--before", a.before, "L_acc CSV of the base model")->required()->check(CLI::ExistingFile);
     cmd->add_option("--after", a.after, "L_acc CSV of the fine-tuned model")->required()->check(CLI::ExistingFile);
     cmd->add_option("--vocab", a.vocab, "GloVe vocabulary (cache/text/glove-100k.safetensors)")
@@ -61,7 +61,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--tau", a.tau, "similarity threshold for Other");
     cmd->add_option("--labels", a.labels, "caption,category CSV to calibrate tau on");
     cmd->add_option("--out", a.out, "output CSV: group,samples,l_acc_before,l_acc_after,change_percent")->required();
-    cmd->callback([] { run(a); });
+    cmd->callback([&a] { run(a); });
 });
 
 }  // namespace t2imu::cli

@@ -18,16 +18,18 @@ static void add_signal_stats(CLI::App& analysis) {
     auto* cmd = analysis.add_subcommand(
         "signal-stats",
         "per-activity accelerometer statistics of IMU data sets (level, spectrum, tilt), real beside synthetic (JSON)");
-    static std::string real, synthetic, out;
-    static SignalStatisticsOptions o;
+    auto& real = option_values<std::string>();
+    auto& synthetic = option_values<std::string>();
+    auto& out = option_values<std::string>();
+    auto& o = option_values<SignalStatisticsOptions>();
     cmd->add_option("--real", real, "an IMU data set folder (manifest.csv)")->required()->check(CLI::ExistingDirectory);
     cmd->add_option("--synthetic", synthetic, "a second data set to compare with --real (synthetic)")
         ->check(CLI::ExistingDirectory);
     cmd->add_option("--position", o.position, "only this position (waist); default: every position");
     cmd->add_option("--rate", o.rate_hz, "resample to this rate first, Hz (HAR's)");
     cmd->add_option("--out", out, "RESULT.json")->required();
-    cmd->callback([] {
-        check_usage([] {
+    cmd->callback([&o, &out, &real, &synthetic] {
+        check_usage([&o, &out, &real, &synthetic] {
             o.validate();
             check_output(out, "--out", OutputKind::file, {real, synthetic});
         });
@@ -45,8 +47,10 @@ static void add_static_noise(CLI::App& analysis) {
     auto* cmd = analysis.add_subcommand("static-noise",
                                         "device errors from the quietest window of each real recording (noise, gyro "
                                         "offset, |g| error), beside a device model's (JSON)");
-    static std::string real, noise = "none", out;
-    static StaticNoiseOptions o;
+    auto& real = option_values<std::string>();
+    auto& noise = option_values<std::string>("none");
+    auto& out = option_values<std::string>();
+    auto& o = option_values<StaticNoiseOptions>();
     cmd->add_option("--real", real, "an IMU data set folder (manifest.csv)")->required()->check(CLI::ExistingDirectory);
     cmd->add_option("--position", o.position, "only this position (waist); default: every position");
     cmd->add_option("--window", o.window_s, "window length, s");
@@ -54,7 +58,7 @@ static void add_static_noise(CLI::App& analysis) {
         "--noise", noise,
         "a device model to set beside the measurement (as synth --noise: " + dataset_profile_names() + ", smartphone)");
     cmd->add_option("--out", out, "RESULT.json")->required();
-    cmd->callback([] {
+    cmd->callback([&noise, &o, &out, &real] {
         SensorNoiseModel device;
         check_usage([&] {
             o.validate();

@@ -50,7 +50,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     auto* cmd = root.add_subcommand("compare-samplers",
                                     "quality against steps: the same prompts and seeds through several samplers, "
                                     "compared with the first (DDPM with every step)");
-    static CompareArgs a;
+    auto& a = option_values<CompareArgs>();
     SamplerComparisonOptions& o = a.options;
     cmd->add_option("--model", o.model, "model folder")->required()->check(CLI::ExistingDirectory);
     cmd->add_option("--prompts", a.prompts, "prompt set: activity<TAB>prompt per line")
@@ -70,7 +70,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
         ->check(CLI::ExistingDirectory);
     cmd->add_option("--captured-split", o.captured_split, "split of --captured");
     cmd->add_option("--out", a.out, "output CSV")->required();
-    cmd->callback([] { run(a); });
+    cmd->callback([&a] { run(a); });
 });
 
 }  // namespace t2imu::cli

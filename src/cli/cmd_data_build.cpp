@@ -13,8 +13,8 @@ static CommandRegistrar registrar([](CLI::App& root) {
     CLI::App& data = command_group(root, "data", "training and IMU datasets");
     auto* cmd = data.add_subcommand(
         "build", "motion capture + captions -> HumanML3D layout (new_joint_vecs, texts, Mean/Std, splits)");
-    static BuildOptions o;
-    static std::string licences;
+    auto& o = option_values<BuildOptions>();
+    auto& licences = option_values<std::string>();
     cmd->add_option("--mocap", o.mocap_dir, "folder of motion files (the paths in the captions CSV are relative to it)")
         ->required()
         ->check(CLI::ExistingDirectory);
@@ -49,9 +49,9 @@ static CommandRegistrar registrar([](CLI::App& root) {
            "add up to N captions per clip written from its measured motion (speed, turns, steps; docs/attributes.md)")
         ->capture_default_str();
     cmd->add_flag("--strict", o.strict, "stop at the first clip that fails to import (default: skip and report it)");
-    cmd->callback([] {
+    cmd->callback([&licences, &o] {
         for (const std::string& item : split_list(licences)) o.licences.insert(item);
-        check_usage([] {
+        check_usage([&o] {
             o.validate();
             check_output(o.out_dir, "--out", OutputKind::folder, {o.mocap_dir, o.captions_csv});
         });

@@ -16,7 +16,9 @@ static CommandRegistrar registrar([](CLI::App& root) {
     CLI::App& data = command_group(root, "data", "training and IMU datasets");
     auto* cmd = data.add_subcommand(
         "captions", "a training set's captions under their clips' activities (a model folder's captions.tsv)");
-    static std::string dataset, split = "train", out;
+    auto& dataset = option_values<std::string>();
+    auto& split = option_values<std::string>("train");
+    auto& out = option_values<std::string>();
     cmd->add_option("--dataset", dataset,
                     "training set (HumanML3D layout; clips.csv, when present, gives the activities)")
         ->required()
@@ -24,8 +26,8 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--split", split, "the split the model was trained on: train, val, test or all")
         ->capture_default_str();
     cmd->add_option("--out", out, "output file (activity<TAB>caption)")->required();
-    cmd->callback([] {
-        check_usage([] {
+    cmd->callback([&dataset, &out, &split] {
+        check_usage([&dataset, &out, &split] {
             if (split != "train" && split != "val" && split != "test" && split != "all")
                 throw Error("--split", "split", "train, val, test or all", split);
             check_output(out, "--out", OutputKind::file, {dataset});

@@ -15,11 +15,13 @@ static CommandRegistrar registrar([](CLI::App& root) {
     CLI::App& data = command_group(root, "data", "training and IMU datasets");
     auto* cmd =
         data.add_subcommand("import-imu", "real IMU dataset (release format) -> manifest.csv + one CSV per recording");
-    static std::string format, in, out;
+    auto& format = option_values<std::string>();
+    auto& in = option_values<std::string>();
+    auto& out = option_values<std::string>();
     cmd->add_option("--format", format, "release format: " + dataset_profile_names())->required();
     cmd->add_option("input", in, "folder of the release files")->required()->check(CLI::ExistingDirectory);
     cmd->add_option("--out", out, "output dataset folder")->required();
-    cmd->callback([] {
+    cmd->callback([&in, &out, &format] {
         const DatasetProfile* profile = nullptr;
         check_usage([&] {
             profile = find_dataset_profile(format);

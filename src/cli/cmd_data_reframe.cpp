@@ -53,7 +53,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     CLI::App& data = command_group(root, "data", "training and IMU datasets");
     auto* cmd = data.add_subcommand("reframe",
                                     "an IMU dataset's sensors in another data set's axes (to compare real data sets)");
-    static ReframeArgs a;
+    auto& a = option_values<ReframeArgs>();
     cmd->add_option("dataset", a.dataset, "IMU dataset folder (manifest.csv layout)")
         ->required()
         ->check(CLI::ExistingDirectory);
@@ -61,7 +61,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--from", a.from, "source axes (default: each recording's frame, else its dataset column)");
     cmd->add_option("--positions", a.positions, "positions to keep, comma-separated (default: all)");
     cmd->add_option("--out", a.out, "output dataset folder")->required();
-    cmd->callback([] { run(a); });
+    cmd->callback([&a] { run(a); });
 });
 
 }  // namespace t2imu::cli

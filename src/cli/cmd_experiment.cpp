@@ -13,15 +13,16 @@ static CommandRegistrar registrar([](CLI::App& root) {
         "experiment",
         "synthetic data per source and real set -> HAR synthetic-to-real (repeats), catch22 domain gap, "
         "t-SNE, real-to-real ceiling, L_acc per category -> summary.md and report; resumable");
-    static std::string config, out;
-    static int repeats = 0;
+    auto& config = option_values<std::string>();
+    auto& out = option_values<std::string>();
+    auto& repeats = option_values<int>(0);
     cmd->add_option("--config", config, "experiment TOML (experiments/paper.toml)")
         ->required()
         ->check(CLI::ExistingFile);
     cmd->add_option("--out", out, "results folder; rerun with the same folder to continue")->required();
     cmd->add_option("--repeats", repeats, "HAR trainings per row (default: the config's har.repeats)");
-    cmd->callback([] {
-        check_usage([] {
+    cmd->callback([&config, &out, &repeats] {
+        check_usage([&config, &out, &repeats] {
             if (repeats < 0 || repeats > 1000)
                 throw Error("--repeats", "trainings", "0 (the config's) to 1000", std::to_string(repeats));
             check_output(out, "--out", OutputKind::folder, {config});

@@ -16,9 +16,12 @@ namespace t2imu::cli {
 static void add_catch22_command(CLI::App& features) {
     auto* cmd = features.add_subcommand(
         "catch22", "catch22 of a series (--in), or of every window and channel of a dataset (--dataset)");
-    static std::string in, dataset, out, positions;
-    static bool catch24 = false;
-    static WindowOptions w;
+    auto& in = option_values<std::string>();
+    auto& dataset = option_values<std::string>();
+    auto& out = option_values<std::string>();
+    auto& positions = option_values<std::string>();
+    auto& catch24 = option_values<bool>(false);
+    auto& w = option_values<WindowOptions>();
     cmd->add_option("--in", in, "series file: whitespace-separated numbers")->check(CLI::ExistingFile);
     cmd->add_option("--dataset", dataset, "IMU dataset (manifest.csv layout): batch mode")
         ->check(CLI::ExistingDirectory);
@@ -29,7 +32,7 @@ static void add_catch22_command(CLI::App& features) {
     cmd->add_option("--overlap", w.overlap, "batch mode: overlap");
     cmd->add_flag("--gyro", w.gyro, "batch mode: gyroscope channels too");
     cmd->add_flag("--catch24", catch24, "add DN_Mean and DN_Spread_Std (catch24)");
-    cmd->callback([] {
+    cmd->callback([&catch24, &dataset, &in, &out, &w, &positions] {
         if (in.empty() == dataset.empty())
             throw Error("features catch22", "input", "either --in SERIES.txt or --dataset DIR");
         if (!in.empty()) {
@@ -41,7 +44,7 @@ static void add_catch22_command(CLI::App& features) {
         if (out.empty()) throw Error("features catch22", "--out", "an output CSV in batch mode");
         w.window_option = "--window-s";
         w.min_window_samples = static_cast<long>(kCatch22MinLength);  // shorter windows give every feature nan
-        check_usage([] {
+        check_usage([&catch24, &dataset, &in, &out, &positions, &w] {
             w.validate();
             check_output(out, "--out", OutputKind::file, {in, dataset});
         });

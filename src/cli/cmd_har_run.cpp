@@ -160,7 +160,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     CLI::App& har = command_group(root, "har", "human activity recognition on IMU datasets");
     auto* cmd =
         har.add_subcommand("run", "train DeepConvLSTM on --train, test on --test (or --loso); writes RESULT.json");
-    static HarArgs a;
+    auto& a = option_values<HarArgs>();
     cmd->add_option("--train", a.train,
                     "training dataset (manifest.csv layout); repeat it to train on several together")
         ->required()
@@ -193,7 +193,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--epochs", a.options.max_epochs, "most epochs per training (early stopping, patience 5)");
     cmd->add_option("--seed", a.options.seed, "first seed");
     cmd->add_option("--out", a.out, "RESULT.json")->required();
-    cmd->callback([] { run(a); });
+    cmd->callback([&a] { run(a); });
 });
 
 }  // namespace t2imu::cli

@@ -80,7 +80,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     CLI::App& imu = command_group(root, "imu", "virtual IMUs on bodies");
     auto* cmd =
         imu.add_subcommand("synth", "joints [F,22,3] -> accelerometer + gyroscope CSVs per body and sensor position");
-    static SynthArgs a;
+    auto& a = option_values<SynthArgs>();
     cmd->add_option("--joints", a.joints, "joints .npy [F,22,3], metres, Y up")->required()->check(CLI::ExistingFile);
     cmd->add_option("--fps", a.fps, "frame rate of the joints (HumanML3D: 20)");
     cmd->add_option("--body", a.body,
@@ -98,7 +98,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
         ->check(CLI::IsMember({"csv", "realworld"}));
     cmd->add_option("--activity", a.activity, "activity name in RealWorld file names");
     cmd->add_option("--out", a.out, "output folder")->required();
-    cmd->callback([] { run(a); });
+    cmd->callback([&a] { run(a); });
 });
 
 }  // namespace t2imu::cli

@@ -13,7 +13,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     CLI::App& model = command_group(root, "model", "denoiser checks");
     auto* cmd = model.add_subcommand(
         "forward", "MDM forward pass: x [B,263,1,F], timesteps [B], text embeddings [B,D] -> [B,263,1,F]");
-    static MdmForwardFiles f;
+    auto& f = option_values<MdmForwardFiles>();
     cmd->add_option("--weights", f.weights, "safetensors with the official state-dict names")
         ->required()
         ->check(CLI::ExistingFile);
@@ -29,8 +29,8 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--guidance", f.guidance, "classifier-free guidance scale (uncond + s (cond - uncond))")
         ->excludes(uncond);
     cmd->add_option("--out", f.out, "output .npy [B,263,1,F] float32")->required();
-    cmd->callback([] {
-        check_usage([] {
+    cmd->callback([&f] {
+        check_usage([&f] {
             check_guidance_scale(f.guidance, "--guidance");
             check_output(f.out, "--out", OutputKind::file, {f.weights, f.config, f.x, f.timesteps, f.text, f.lengths});
         });

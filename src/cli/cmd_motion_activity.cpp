@@ -82,7 +82,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     auto* cmd = motion.add_subcommand(
         "activity",
         "motion activity classifier: build its reference, validate it, or classify a synth folder's motions");
-    static ActivityArgs a;
+    auto& a = option_values<ActivityArgs>();
     cmd->add_option("--dataset", a.dataset, "dataset built by t2imu data build: its captured clips are the reference")
         ->check(CLI::ExistingDirectory);
     cmd->add_option("--reference", a.reference, "reference CSV (models/motion-activity.csv)")->check(CLI::ExistingFile);
@@ -92,7 +92,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
                     "the reference)")
         ->check(CLI::ExistingDirectory);
     cmd->add_option("--out", a.out, "confusion CSV");
-    cmd->callback([] { run(a); });
+    cmd->callback([&a] { run(a); });
 });
 
 }  // namespace t2imu::cli

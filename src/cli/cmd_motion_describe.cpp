@@ -41,15 +41,15 @@ static CommandRegistrar registrar([](CLI::App& root) {
     CLI::App& motion = command_group(root, "motion", "motion files: import, export, HumanML3D features");
     auto* cmd = motion.add_subcommand(
         "describe", "measure what a caption could say of motions (speed, turns, steps, jumps, posture) -> CSV");
-    static DescribeArgs a;
+    auto& a = option_values<DescribeArgs>();
     cmd->add_option("inputs", a.inputs, "motion files: SMPL-22 joints .npy [F,22,3] (metres, Y up), .bvh or .amc")
         ->required()
         ->check(CLI::ExistingFile);
     cmd->add_option("--fps", a.fps, "frame rate of .npy joints (BVH and AMC are resampled to it)")
         ->capture_default_str();
     cmd->add_option("--out", a.out, "write the CSV here (default: print it)");
-    cmd->callback([] {
-        check_usage([] {
+    cmd->callback([&a] {
+        check_usage([&a] {
             check_motion_fps(a.fps, "--fps");
             if (!a.out.empty()) check_output(a.out, "--out", OutputKind::file, a.inputs);
         });

@@ -11,8 +11,9 @@ namespace t2imu::cli {
 static void add_import_command(CLI::App& motion) {
     auto* cmd =
         motion.add_subcommand("import", "BVH or ASF/AMC motion capture -> SMPL-22 joints [F,22,3] (metres, Y up)");
-    static std::string in, out;
-    static ImportOptions options;
+    auto& in = option_values<std::string>();
+    auto& out = option_values<std::string>();
+    auto& options = option_values<ImportOptions>();
     cmd->add_option("input", in, "motion file (.bvh, .amc, .npy)")->required()->check(CLI::ExistingFile);
     cmd->add_option("--out", out, "output joints .npy (float32)")->required();
     cmd->add_option("--fps", options.fps,
@@ -26,8 +27,8 @@ static void add_import_command(CLI::App& motion) {
         ->check(CLI::IsMember({'y', 'z'}));
     cmd->add_option("--source-fps", options.source_fps, "frame rate of an AMC clip (AMC does not record it)")
         ->capture_default_str();
-    cmd->callback([] {
-        check_usage([] {
+    cmd->callback([&in, &options, &out] {
+        check_usage([&in, &options, &out] {
             if (!(options.fps >= 0 && options.fps <= 1000))
                 throw Error("--fps", "rate", "0 (the capture rate) to 1000 fps", std::to_string(options.fps));
             if (!(options.source_fps > 0 && options.source_fps <= 1000))
@@ -40,13 +41,14 @@ static void add_import_command(CLI::App& motion) {
 
 static void add_export_command(CLI::App& motion) {
     auto* cmd = motion.add_subcommand("export", "SMPL-22 joints [F,22,3] -> BVH (centimetres, Y up; opens in Blender)");
-    static std::string in, out;
-    static double fps = 20.0;
+    auto& in = option_values<std::string>();
+    auto& out = option_values<std::string>();
+    auto& fps = option_values<double>(20.0);
     cmd->add_option("input", in, "joints .npy [F,22,3]")->required()->check(CLI::ExistingFile);
     cmd->add_option("--out", out, "output .bvh")->required();
     cmd->add_option("--fps", fps, "frame rate of the joints")->capture_default_str();
-    cmd->callback([] {
-        check_usage([] {
+    cmd->callback([&fps, &in, &out] {
+        check_usage([&fps, &in, &out] {
             check_motion_fps(fps, "--fps");
             check_output(out, "--out", OutputKind::file, {in});
         });

@@ -74,16 +74,17 @@ static CommandRegistrar registrar([](CLI::App& root) {
     CLI::App& motion = command_group(root, "motion", "motion files: import, export, HumanML3D features");
     auto* cmd = motion.add_subcommand(
         "quality", "plausibility scores (foot skating, floor, speed, acceleration) of joints .npy files");
-    static std::vector<std::string> inputs;
-    static double fps = 20, p = 99.5;
-    static std::string out;
+    auto& inputs = option_values<std::vector<std::string>>();
+    auto& fps = option_values<double>(20);
+    auto& p = option_values<double>(99.5);
+    auto& out = option_values<std::string>();
     cmd->add_option("inputs", inputs, "joints .npy [F,22,3] files, or folders of them (*_joints.npy where present)")
         ->required();
     cmd->add_option("--fps", fps, "frame rate of the joints")->capture_default_str();
     cmd->add_option("--percentile", p, "percentile to print over the inputs")->capture_default_str();
     cmd->add_option("--out", out, "per-file scores CSV");
-    cmd->callback([] {
-        check_usage([] {
+    cmd->callback([&fps, &inputs, &out, &p] {
+        check_usage([&fps, &inputs, &out, &p] {
             check_motion_fps(fps, "--fps");
             if (!(p >= 0 && p <= 100)) throw Error("--percentile", "percentile", "0 to 100", std::to_string(p));
             if (!out.empty()) check_output(out, "--out", OutputKind::file, inputs);

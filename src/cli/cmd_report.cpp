@@ -11,7 +11,9 @@ namespace t2imu::cli {
 static CommandRegistrar registrar([](CLI::App& root) {
     auto* cmd =
         root.add_subcommand("report", "results folder -> figures (gnuplot PNG) and index.html with them embedded");
-    static std::string in, out, real;
+    auto& in = option_values<std::string>();
+    auto& out = option_values<std::string>();
+    auto& real = option_values<std::string>();
     cmd->add_option(
            "--in", in,
            "results folder (synth_report.json, HAR RESULT.json, L_acc CSV, t-SNE CSV, domain-gap JSON, IMU CSVs)")
@@ -22,8 +24,8 @@ static CommandRegistrar registrar([](CLI::App& root) {
            "--real", real,
            "a real IMU data set (manifest.csv + CSVs) whose signal statistics to show beside the synthetic ones")
         ->check(CLI::ExistingDirectory);
-    cmd->callback([] {
-        check_usage([] { check_output(out, "--out", OutputKind::folder, {in, real}); });
+    cmd->callback([&in, &out, &real] {
+        check_usage([&in, &out, &real] { check_output(out, "--out", OutputKind::folder, {in, real}); });
         const ReportSummary s = write_report(in, out, real);
         std::printf(
             "%s/index.html: %d figures (%d synthesis reports, %d HAR results, %d L_acc tables, %d t-SNE tables, %d "

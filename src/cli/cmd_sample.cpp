@@ -99,15 +99,20 @@ void run(SampleArgs a) {
 static void add_eval_lacc(CLI::App& root) {
     auto* cmd = root.add_subcommand(
         "eval-lacc", "per-sample L_acc of a model over a dataset split (id,caption,t,l_acc,l_simple CSV)");
-    static std::string model, dataset, split = "test", out;
-    static uint64_t seed = 0;
+    auto& model = option_values<std::string>();
+    auto& dataset = option_values<std::string>();
+    auto& split = option_values<std::string>("test");
+    auto& out = option_values<std::string>();
+    auto& seed = option_values<uint64_t>(0);
     cmd->add_option("--model", model, "model folder")->required()->check(CLI::ExistingDirectory);
     cmd->add_option("--dataset", dataset, "HumanML3D-layout dataset")->required()->check(CLI::ExistingDirectory);
     cmd->add_option("--split", split, "train, val, test or all");
     cmd->add_option("--seed", seed, "seed of the draws (use the same for the models you compare)");
     cmd->add_option("--out", out, "output CSV")->required();
-    cmd->callback([] {
-        check_usage([] { check_output(out, "--out", OutputKind::file, {model, dataset}); });
+    cmd->callback([&dataset, &model, &out, &seed, &split] {
+        check_usage([&dataset, &model, &out, &seed, &split] {
+            check_output(out, "--out", OutputKind::file, {model, dataset});
+        });
         std::unique_ptr<MotionModel> m = load_motion_model(model, global_options().device);
         const CsvTable table = evaluate_lacc(*m, dataset, split, seed);
         write_csv(out, table);
@@ -122,7 +127,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     add_eval_lacc(root);
     auto* cmd = root.add_subcommand("sample",
                                     "prompts -> motions (features and joints .npy + samples.json) from a model folder");
-    static SampleArgs a;
+    auto& a = option_values<SampleArgs>();
     cmd->add_option("--model", a.model,
                     "model folder (t2imu train, or an official MDM checkpoint with CLIP: docs/mdm-checkpoint.md)")
         ->required()
@@ -135,7 +140,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--steps", a.options.steps, "denoiser evaluations for ddim/dpmpp");
     cmd->add_option("--guidance", a.options.guidance, "classifier-free guidance scale");
     cmd->add_option_function<double>(
-        "--caption-anchor", [](double w) { a.options.caption_anchor = w; },
+        "--caption-anchor", [&a](double w) { a.options.caption_anchor = w; },
         "weight 0..1 of the training captions nearest the prompt in its text feature (default: the model folder's; 0 = "
         "the prompt alone)");
     cmd->add_option("--eta", a.options.eta, "ddim noise (0 = deterministic)");
@@ -144,7 +149,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
                   "refuse a prompt the model's training captions do not cover (default: warn)");
     cmd->add_option("--batch", a.options.batch, "prompts per batch (does not change the samples)");
     cmd->add_option("--out", a.out, "output folder")->required();
-    cmd->callback([] { run(a); });
+    cmd->callback([&a] { run(a); });
 });
 
 }  // namespace t2imu::cli

@@ -65,7 +65,7 @@ void run(SynthArgs a) {
 static CommandRegistrar registrar([](CLI::App& root) {
     auto* cmd =
         root.add_subcommand("synth", "the main job: prompts -> motions -> bodies -> virtual sensors -> an IMU dataset");
-    static SynthArgs a;
+    auto& a = option_values<SynthArgs>();
     SynthOptions& o = a.options;
     cmd->add_option("--prompts", o.prompts, "prompt set: activity<TAB>prompt per line (prompts/*.tsv)")
         ->required()
@@ -80,7 +80,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--steps", o.sampling.steps, "denoiser evaluations for ddim/dpmpp");
     cmd->add_option("--guidance", o.sampling.guidance, "classifier-free guidance scale");
     cmd->add_option_function<double>(
-        "--caption-anchor", [](double w) { a.options.sampling.caption_anchor = w; },
+        "--caption-anchor", [&a](double w) { a.options.sampling.caption_anchor = w; },
         "weight 0..1 of the training captions nearest the prompt in its text feature (default: the model folder's; 0 = "
         "the prompt alone)");
     cmd->add_option("--seconds", o.seconds, "motion length, s (at most 9.8)");
@@ -112,7 +112,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--retries", o.max_retries, "draws after the first for a motion the filter rejects");
     cmd->add_option("--shard", a.shard, "I/N: run the I-th of N contiguous blocks of jobs (default 1/1)");
     cmd->add_option("--out", o.out, "output folder (resumed when it holds the same synthesis)")->required();
-    cmd->callback([] { run(a); });
+    cmd->callback([&a] { run(a); });
 });
 
 }  // namespace t2imu::cli

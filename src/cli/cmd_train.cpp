@@ -85,8 +85,8 @@ const char* const kProcessesHelp =
 
 static CommandRegistrar registrar([](CLI::App& root) {
     auto* train = root.add_subcommand("train", "train MDM + the GloVe text encoder (TOML config) into a model folder");
-    static RunOptions o;
-    const auto common = [](CLI::App* cmd) {
+    auto& o = option_values<RunOptions>();
+    const auto common = [&o](CLI::App* cmd) {
         cmd->add_option("--steps", o.steps, "override train.steps");
         cmd->add_option("--max-minutes", o.max_minutes,
                         "stop after the step that reaches this wall time, saving model and checkpoint (0: no budget)");
@@ -95,7 +95,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
         cmd->add_flag("--profile", o.profile,
                       "print seconds per step of each part (data, text, forward, backward, optimiser, ema, log)");
         cmd->footer(kProcessesHelp);
-        cmd->callback([] { run(o); });
+        cmd->callback([&o] { run(o); });
     };
     train->add_option("--config", o.config, "training configuration (TOML)")->required()->check(CLI::ExistingFile);
     train->add_flag("--resume", o.resume, "continue from the model folder's checkpoint.pt");

@@ -40,13 +40,13 @@ void run(const TsneArgs& a) {
 static CommandRegistrar registrar([](CLI::App& root) {
     auto* cmd = root.add_subcommand(
         "tsne", "feature table (CSV) -> 2-D t-SNE embedding (CSV); non-numeric columns are carried over");
-    static TsneArgs a;
+    auto& a = option_values<TsneArgs>();
     cmd->add_option("--in", a.in, "input CSV with a header")->required()->check(CLI::ExistingFile);
     cmd->add_option("--out", a.out, "output CSV")->required();
     cmd->add_option("--perplexity", a.options.perplexity, "default 30");
     cmd->add_option("--iterations", a.options.iterations, "default 1000");
     cmd->add_flag("--exact", a.options.exact, "exact gradients (O(N^2); small N)");
-    cmd->callback([] { run(a); });
+    cmd->callback([&a] { run(a); });
 });
 
 }  // namespace t2imu::cli

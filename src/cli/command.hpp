@@ -4,6 +4,7 @@
 #pragma once
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <memory>
 #include <string>
 
 namespace t2imu::cli {
@@ -17,6 +18,16 @@ struct CommandRegistrar {
 // The subcommand `name` of `parent`, created with `description` the first time it is asked for, so that
 // several files can add commands under one group ("motion features", "motion import", ...).
 CLI::App& command_group(CLI::App& parent, const std::string& name, const std::string& description);
+
+// Storage for a command's option values, made each time the command table is built (not a static), so that one
+// process can parse several command lines, each from the defaults (main.cpp's batch mode for the test suite).
+void keep_until_next_command_line(std::shared_ptr<void> values);
+template <class T>
+T& option_values(T initial = T{}) {
+    auto values = std::make_shared<T>(std::move(initial));
+    keep_until_next_command_line(values);
+    return *values;
+}
 
 // Options every command shares, set before the command's callback runs.
 struct GlobalOptions {
