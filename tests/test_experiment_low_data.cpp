@@ -77,5 +77,5 @@ TEST(ExperimentLowData, TableHasEveryArmAndTheGain) {
         << md;
     EXPECT_TRUE(test::contains(md, "| 1 | 65.0 ± 7.1 (2) | 82.0 ± 2.8 (2) | 71.0 ± 1.4 (2) | +17.0 |")) << md;
     EXPECT_TRUE(test::contains(md, "| 0 |  | 75.0 ± 0.0 (1) | 75.0 ± 0.0 (1) |  |")) << md;
-    EXPECT_TRUE(test::contains(md, "- mdm mix, K = 1 (1 subjects): 80.0 84.0")) << md;
+    EXPECT_TRUE(test::contains(md, "- mdm mix, K = 1 (1 subject): 80.0 84.0")) << md;
 }

@@ -207,7 +207,8 @@ std::string low_data_markdown(const std::vector<LowDataCurve>& curves) {
         md += "\nEach draw (balanced accuracy, %):\n\n";
         for (const LowDataArm& a : c.arms)
             for (const LowDataPoint& p : a.points) {
-                md += "- " + a.name + ", K = " + p.label + " (" + std::to_string(p.train_subjects) + " subjects):";
+                md += "- " + a.name + ", K = " + p.label + " (" + std::to_string(p.train_subjects) +
+                      (p.train_subjects == 1 ? " subject):" : " subjects):");
                 for (double d : p.draws) {
                     char buf[16];
                     std::snprintf(buf, sizeof buf, " %.1f", 100 * d);
