@@ -77,14 +77,36 @@ void check_manifest_subjects(const HarArgs& a) {
     check_subject_split(train, a.train, subjects_of(a.test), a.sets.test_set, a.sets.train_subjects);
 }
 
-void run(HarArgs a) {
-    WindowOptions w = a.windows;
-    w.gyro = a.channels == "acc,gyr";
-    w.positions = split_list(a.positions);
-    WindowOptions wt = w;
-    if (!a.test_positions.empty())
-        wt.positions = split_list(a.test_positions), wt.positions_option = "--test-positions";
-    a.options.verbose = global_options().verbose;
+// The training classes kept (each mapped to itself; empty: all), checked on the training manifests.
+std::map<std::string, std::string> kept_classes(const HarArgs& a) {
+    std::map<std::string, std::string> keep;
+    if (a.classes.empty()) return keep;
+    std::set<std::string> held;
+    for (const std::string& set : a.train)
+        for (const ImuRecording& r : read_imu_dataset(set, false)) held.insert(map_activity(r.dataset, r.activity));
+    for (const std::string& c : split_list(a.classes)) {
+        if (!held.count(c)) throw Error("--classes", c, "a class of the training set");
+        keep[c] = c;
+    }
+    return keep;
+}
+
+enum class HarMode { loso, one_set, several_sets };
+
+// What `har run` does, every option parsed and checked at the door (manifests read, no samples).
+struct HarRunPlan {
+    HarMode mode = HarMode::one_set;
+    std::vector<std::string> train;  // dataset folders
+    std::string test, out;
+    int folds = 0;                              // loso: 0 = one fold per subject
+    WindowOptions train_windows, test_windows;  // positions and channels included
+    std::map<std::string, std::string> keep;    // classes kept (empty: all)
+    SeveralSetsOptions sets;                    // several_sets only
+    HarOptions options;
+};
+
+HarRunPlan plan_har_run(HarArgs a) {
+    HarRunPlan p;
     check_usage([&] {
         if (a.loso == !a.test.empty()) throw Error("har run", "--test", "either --test DATASET or --loso");
         if (a.loso && (a.train.size() > 1 || several(a)))
@@ -92,65 +114,73 @@ void run(HarArgs a) {
         bind_sets(a);
         if (a.channels != "acc" && a.channels != "acc,gyr")
             throw Error("--channels", "channels", "acc or acc,gyr", a.channels);
-        if (wt.positions.size() != w.positions.size())
+        p.train_windows = a.windows;
+        p.train_windows.gyro = a.channels == "acc,gyr";
+        p.train_windows.positions = split_list(a.positions);
+        p.test_windows = p.train_windows;
+        if (!a.test_positions.empty())
+            p.test_windows.positions = split_list(a.test_positions),
+            p.test_windows.positions_option = "--test-positions";
+        if (p.test_windows.positions.size() != p.train_windows.positions.size())
             throw Error("--test-positions", "positions",
-                        std::to_string(w.positions.size()) + " positions, one per training position");
+                        std::to_string(p.train_windows.positions.size()) + " positions, one per training position");
         if (a.folds < 0) throw Error("har run", "--folds", "0 (one per subject) or more", std::to_string(a.folds));
-        w.validate();
-        if (std::lround(w.window_s * w.rate_hz) < kDeepConvLstmMinWindow)
-            throw Error("--window", std::to_string(w.window_s) + " s",
+        p.train_windows.validate();
+        if (std::lround(p.train_windows.window_s * p.train_windows.rate_hz) < kDeepConvLstmMinWindow)
+            throw Error("--window", std::to_string(p.train_windows.window_s) + " s",
                         "at least " + std::to_string(kDeepConvLstmMinWindow) +
                             " samples at --rate (DeepConvLSTM's four convolutions of kernel 5)");
+        a.options.verbose = global_options().verbose;
         a.options.validate();
         a.sets.validate_values();
         std::vector<std::string> inputs = a.train;
         inputs.push_back(a.test);
         check_output(a.out, "--out", OutputKind::file, inputs);
+        p.keep = kept_classes(a);
+        if (!a.loso) check_manifest_subjects(a);
     });
-    if (!a.classes.empty()) {  // checked on the manifest, before any samples are read
-        std::set<std::string> held;
-        for (const std::string& set : a.train)
-            for (const ImuRecording& r : read_imu_dataset(set, false)) held.insert(map_activity(r.dataset, r.activity));
-        for (const std::string& c : split_list(a.classes))
-            if (!held.count(c)) throw UsageError("--classes: " + c + ": expected a class of the training set");
-    }
-    if (!a.loso) check_usage([&] { check_manifest_subjects(a); });  // on the manifests, before any samples are read
-    std::map<std::string, std::string> keep;
-    for (const std::string& c : split_list(a.classes)) keep[c] = c;
+    p.mode = a.loso ? HarMode::loso : several(a) ? HarMode::several_sets : HarMode::one_set;
+    p.train = a.train, p.test = a.test, p.out = a.out;
+    p.folds = a.folds, p.sets = a.sets, p.options = a.options;
+    return p;
+}
+
+void run(const HarRunPlan& p) {
     const auto windows_of = [&](const std::string& set, const WindowOptions& options) {
         WindowSet ws = make_windows(read_imu_dataset(set), options);
-        return keep.empty() ? ws : relabel(ws, keep);
+        return p.keep.empty() ? ws : relabel(ws, p.keep);
     };
     HarResult result;
     std::string description;
-    if (a.loso) {
-        result = leave_one_subject_out(windows_of(a.train[0], w), a.options, a.folds);
+    if (p.mode == HarMode::loso) {
+        result = leave_one_subject_out(windows_of(p.train[0], p.train_windows), p.options, p.folds);
         description =
-            (a.folds > 0 ? std::to_string(a.folds) + "-fold leave-subjects-out on " : "leave-one-subject-out on ") +
-            a.train[0];
-    } else if (!several(a)) {
-        result = train_and_test(windows_of(a.train[0], w), make_windows(read_imu_dataset(a.test), wt), a.options);
-        description = "trained on " + a.train[0] + ", tested on " + a.test;
+            (p.folds > 0 ? std::to_string(p.folds) + "-fold leave-subjects-out on " : "leave-one-subject-out on ") +
+            p.train[0];
+    } else if (p.mode == HarMode::one_set) {
+        result = train_and_test(windows_of(p.train[0], p.train_windows),
+                                make_windows(read_imu_dataset(p.test), p.test_windows), p.options);
+        description = "trained on " + p.train[0] + ", tested on " + p.test;
     } else {
-        const WindowSet test = windows_of(a.test, wt);
+        const WindowSet test = windows_of(p.test, p.test_windows);
         std::vector<WindowSet> sets;
-        sets.reserve(a.train.size());
+        sets.reserve(p.train.size());
         std::vector<TrainingSet> train;
-        for (size_t i = 0; i < a.train.size(); ++i) {
-            if (static_cast<int>(i) != a.sets.test_set) sets.push_back(windows_of(a.train[i], w));
-            train.push_back({static_cast<int>(i) == a.sets.test_set ? &test : &sets.back(), a.train[i]});
+        for (size_t i = 0; i < p.train.size(); ++i) {
+            if (static_cast<int>(i) != p.sets.test_set) sets.push_back(windows_of(p.train[i], p.train_windows));
+            train.push_back({static_cast<int>(i) == p.sets.test_set ? &test : &sets.back(), p.train[i]});
         }
-        result = train_on_sets(train, test, a.options, a.sets);
-        description = std::string(har_protocol_name(a.sets.protocol)) + ": trained on " + join(a.train, " + ") +
-                      ", tested on " + a.test +
-                      (a.sets.test_set >= 0
-                           ? " less the " + std::to_string(a.sets.train_subjects) + " subjects drawn for each training"
+        result = train_on_sets(train, test, p.options, p.sets);
+        description = std::string(har_protocol_name(p.sets.protocol)) + ": trained on " + join(p.train, " + ") +
+                      ", tested on " + p.test +
+                      (p.sets.test_set >= 0
+                           ? " less the " + std::to_string(p.sets.train_subjects) + " subjects drawn for each training"
                            : "");
     }
-    write_file_atomic(a.out, har_result_json(result, description));
+    write_file_atomic(p.out, har_result_json(result, description));
     double mean = 0;
     for (const HarRun& r : result.runs) mean += r.balanced_accuracy / static_cast<double>(result.runs.size());
-    std::printf("%s: balanced accuracy %.4f over %zu runs, %zu classes, %zu train / %zu test windows\n", a.out.c_str(),
+    std::printf("%s: balanced accuracy %.4f over %zu runs, %zu classes, %zu train / %zu test windows\n", p.out.c_str(),
                 mean, result.runs.size(), result.classes.size(), result.train_windows, result.test_windows);
 }
 
@@ -193,7 +223,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--epochs", a.options.max_epochs, "most epochs per training (early stopping, patience 5)");
     cmd->add_option("--seed", a.options.seed, "first seed");
     cmd->add_option("--out", a.out, "RESULT.json")->required();
-    cmd->callback([&a] { run(a); });
+    cmd->callback([&a] { run(plan_har_run(a)); });
 });
 
 }  // namespace t2imu::cli
