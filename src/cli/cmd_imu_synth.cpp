@@ -26,7 +26,7 @@ struct SynthArgs {
                         format = "csv";
     std::string activity = "synthetic";
     double fps = 20;            // HumanML3D's frame rate
-    VirtualImuOptions options;  // rate and seed (their defaults); the realism model is set once parsed
+    VirtualImuOptions options;  // rate and seed (their defaults); the realism model is set by the plan
 };
 
 std::string without_side(const std::string& position) {
@@ -35,43 +35,54 @@ std::string without_side(const std::string& position) {
     return position;
 }
 
-// Everything is computed before anything is written, and the folder appears complete or not at all.
-void write_outputs(const SynthArgs& a, const std::vector<BodyImu>& bodies, const nlohmann::json& meta) {
-    remove_stale_partials(a.out);
-    const fs::path tmp = partial_path_for(a.out);
-    fs::remove_all(tmp);
-    for (const BodyImu& b : bodies) {
-        write_body_imu(tmp.string(), b);
-        if (a.format != "realworld") continue;
-        for (size_t i = 0; i < b.mounts.size(); ++i)
-            write_realworld_csv((tmp / b.body.name).string(), a.activity, without_side(b.mounts[i].placement.position),
-                                b.signals[i]);
-    }
-    write_file_atomic((tmp / "meta.json").string(), meta.dump(2) + "\n");
-    publish_partial(tmp.string(), a.out);
-}
-
-void run(const SynthArgs& a) {
-    VirtualImuOptions options = a.options;
+// What `imu synth` does, every spelling parsed and checked at the door.
+struct ImuSynthPlan {
+    std::string joints, out, format, activity;
+    double fps = 20;
     std::vector<BodySpec> bodies;
     std::vector<SensorPlacement> sensors;
-    check_usage([&] {  // every spelling parsed here, once, before any work
-        bodies = parse_body_specs(a.body);
-        sensors = parse_sensor_sets(a.sensors);
+    VirtualImuOptions options;  // rate, seed and the parsed realism model
+};
+
+ImuSynthPlan plan_imu_synth(const SynthArgs& a) {
+    ImuSynthPlan p{a.joints, a.out, a.format, a.activity, a.fps, {}, {}, a.options};
+    check_usage([&] {
+        p.bodies = parse_body_specs(a.body);
+        p.sensors = parse_sensor_sets(a.sensors);
         check_motion_fps(a.fps, "--fps");
         RealismModel realism = parse_realism(a.realism);
         fold_noise_option(a.noise, &realism);
-        options.set_realism(realism);
-        options.validate();
+        p.options.set_realism(realism);
+        p.options.validate();
         check_output(a.out, "--out", OutputKind::folder, {a.joints});
     });
-    const JointSequence motion = joint_sequence_from_array(read_npy(a.joints), a.joints, 22, 4, a.fps);
-    check_motion_for_imu(motion, a.joints);
+    return p;
+}
+
+// Everything is computed before anything is written, and the folder appears complete or not at all.
+void write_outputs(const ImuSynthPlan& p, const std::vector<BodyImu>& bodies, const nlohmann::json& meta) {
+    remove_stale_partials(p.out);
+    const fs::path tmp = partial_path_for(p.out);
+    fs::remove_all(tmp);
+    for (const BodyImu& b : bodies) {
+        write_body_imu(tmp.string(), b);
+        if (p.format != "realworld") continue;
+        for (size_t i = 0; i < b.mounts.size(); ++i)
+            write_realworld_csv((tmp / b.body.name).string(), p.activity, without_side(b.mounts[i].placement.position),
+                                b.signals[i]);
+    }
+    write_file_atomic((tmp / "meta.json").string(), meta.dump(2) + "\n");
+    publish_partial(tmp.string(), p.out);
+}
+
+void run(const ImuSynthPlan& p) {
+    const JointSequence motion = joint_sequence_from_array(read_npy(p.joints), p.joints, 22, 4, p.fps);
+    check_motion_for_imu(motion, p.joints);
     std::vector<BodyImu> results;
-    for (const BodySpec& b : bodies) results.push_back(synthesize_body_imu(motion, b, sensors, options));
-    write_outputs(a, results, virtual_imu_meta(results, motion, options, a.joints));
-    std::printf("%s: %zu bodies x %zu sensors, %zu samples at %g Hz\n", a.out.c_str(), results.size(), sensors.size(),
-                results[0].signals.empty() ? size_t{0} : results[0].signals[0].t.size(), options.rate_hz);
+    for (const BodySpec& b : p.bodies) results.push_back(synthesize_body_imu(motion, b, p.sensors, p.options));
+    write_outputs(p, results, virtual_imu_meta(results, motion, p.options, p.joints));
+    std::printf("%s: %zu bodies x %zu sensors, %zu samples at %g Hz\n", p.out.c_str(), results.size(), p.sensors.size(),
+                results[0].signals.empty() ? size_t{0} : results[0].signals[0].t.size(), p.options.rate_hz);
 }
 
 }  // namespace
@@ -98,7 +109,7 @@ static CommandRegistrar registrar([](CLI::App& root) {
         ->check(CLI::IsMember({"csv", "realworld"}));
     cmd->add_option("--activity", a.activity, "activity name in RealWorld file names");
     cmd->add_option("--out", a.out, "output folder")->required();
-    cmd->callback([&a] { run(a); });
+    cmd->callback([&a] { run(plan_imu_synth(a)); });
 });
 
 }  // namespace t2imu::cli
