@@ -198,7 +198,7 @@ std::vector<CliOption> cli_options_of(const std::string& leaf) {
     const std::vector<CliLeaf>& leaves = cli_leaves();
     const auto it = std::find_if(leaves.begin(), leaves.end(), [&](const CliLeaf& l) { return l.path == leaf; });
     std::vector<CliOption> out;
-    std::istringstream in(it == leaves.end() ? run_cli(leaf + " --help").output : it->help);
+    std::istringstream in(it == leaves.end() ? std::string() : it->help);
     bool listing = false;
     for (std::string line; std::getline(in, line);) {
         if (line.rfind("Options:", 0) == 0 || line.rfind("Positionals:", 0) == 0) {

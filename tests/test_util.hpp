@@ -73,6 +73,7 @@ struct CliOption {
     std::string name, type, help;  // "--out", "TEXT", the rest of its line
     bool required = false, positional = false;
 };
+// The options of one of cli_leaves() (none for a path that is not a leaf).
 std::vector<CliOption> cli_options_of(const std::string& leaf);
 
 // Whether gnuplot cannot be run (figure tests skip then; scripts/setup.sh installs gnuplot-nox).
