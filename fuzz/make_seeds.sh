@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Writes small valid seed inputs for the fuzzers into fuzz/corpus-<target>/ (git-ignored), using the test
-# binary's scratch outputs and the example BVH. Run after a normal build (build/t2imu_tests has run).
+# binary's scratch outputs and the example BVH. Run after the test suite has run (scripts/test.sh).
 set -eu  # no pipefail: `find | head` ends find with SIGPIPE once head has its files
 cd "$(dirname "$0")/.."
 scratch=build/test-tmp/scratch

@@ -24,7 +24,7 @@ if [ "$tests" = 1 ]; then
     cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DT2IMU_BENCH=OFF \
       -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined"
   fi
-  cmake --build build-sanitize --target t2imu t2imu_tests
+  cmake --build build-sanitize --target t2imu t2imu_tests t2imu_torch_tests
   ctest --test-dir build-sanitize --output-on-failure -j "$(nproc 2>/dev/null || echo 2)" "$@"
 fi
 if [ "$fuzz" = 1 ]; then

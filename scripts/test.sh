@@ -5,6 +5,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 if [ ! -f build/build.ninja ]; then cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release; fi
 # The program and the test suite; the benchmarks (bench/README.md) build with `cmake --build build`.
-cmake --build build --target t2imu t2imu_tests
+cmake --build build --target t2imu t2imu_tests t2imu_torch_tests
 jobs=$(nproc 2>/dev/null || echo 2)
 ctest --test-dir build --output-on-failure -j "$jobs" "$@"
