@@ -81,7 +81,7 @@ TEST(Experiment, RunsEveryStepAndResumesWithMoreRepeats) {
     const Fixture f = make_fixture(dir);
     ExperimentConfig c = tiny_config(f);
     const std::string out = dir + "/results";
-    const nlohmann::json s = experiment_summary_json(run_experiment(c, out));
+    const nlohmann::json s = experiment_summary_json(run_experiment(plan_experiment(c, out)));
     EXPECT_EQ(read_json_file(out + "/summary.json"), s);  // the table on disk is the one returned
 
     ASSERT_EQ(s["rows"].size(), 3u);
@@ -134,7 +134,7 @@ TEST(Experiment, RunsEveryStepAndResumesWithMoreRepeats) {
     const auto seed0 = modified(out + "/runs/tiny-fake/seed-0.jsonl"),
                features = modified(out + "/features/real-fake.csv"), ceiling = modified(out + "/har/ceiling-fake.json");
     c.har.repeats = 3;
-    const nlohmann::json again = experiment_summary_json(run_experiment(c, out));
+    const nlohmann::json again = experiment_summary_json(run_experiment(plan_experiment(c, out)));
     EXPECT_EQ(modified(out + "/runs/tiny-fake/seed-0.jsonl"), seed0);
     EXPECT_EQ(modified(out + "/features/real-fake.csv"), features);
     EXPECT_EQ(modified(out + "/har/ceiling-fake.json"), ceiling);
@@ -144,5 +144,5 @@ TEST(Experiment, RunsEveryStepAndResumesWithMoreRepeats) {
 
     // Other synthesis settings into the same folder are refused by the synthetic sets' settings check.
     c.synth.seconds = 3;
-    EXPECT_THROW(run_experiment(c, out), Error);
+    EXPECT_THROW(run_experiment(plan_experiment(c, out)), Error);
 }

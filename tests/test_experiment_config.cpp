@@ -1,9 +1,9 @@
 // experiment_config.cpp: read_experiment_config on hand-written TOML files: every key lands in its field, absent
 // keys keep the option objects' defaults, and each rule is refused naming the file and the field: required keys,
 // unknown keys (top level and every table), negative seeds, names with '/', ' ' or '-', duplicates and "real",
-// no [[source]] or [[real]], L_acc sources that do not exist or only one of before/after, an unknown sampler or
-// realism model, HAR settings out of range; the shipped experiments/paper.toml and coverage.toml, and edits of
-// them refused.
+// no [[source]] or [[real]], L_acc sources that do not exist or only one of before/after, an unknown sampler,
+// HAR settings out of range; the shipped experiments/paper.toml and coverage.toml, and edits of
+// them refused; plan_experiment on a config: every row planned, a bad row refused before any output.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -11,6 +11,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "imu/placement.hpp"
 #include "pipeline/experiment.hpp"
 #include "test_util.hpp"
 
@@ -148,7 +149,6 @@ TEST(ExperimentConfig, RefusesEachRuleNamingTheField) {
         {base + "[features]\nseed = -1\n", "features.seed"},
         {base + "[lacc]\nseed = -2\n", "lacc.seed"},
         {base + "[synth]\nsampler = \"euler\"\n", "synth.sampler"},  // closed choices
-        {base + "[synth]\nrealism = \"sisfal\"\n", "synth.realism"},
         {base + "[synth]\nsteps = 2.5\n", "synth.steps"},
         {base + "[synth]\ncaption_anchor = 1.5\n", "synth.caption_anchor"},  // types
         {base + "[har]\nrepeats = 0\n", "har"},                              // validated ranges
@@ -171,6 +171,42 @@ TEST(ExperimentConfig, RefusesEachRuleNamingTheField) {
     // A file that is not TOML, and no file at all.
     EXPECT_TRUE(test::contains(refusal("broken", "[[source]\nname ="), "toml"));
     EXPECT_THROW(read_experiment_config(test::scratch_dir("experiment_config_absent") + "/none.toml"), Error);
+}
+
+// plan_experiment: every row's synthesis planned at the door, in order, its realism model parsed; a row t2imu synth
+// would refuse is refused before anything is written, naming the file, the row and the spelling.
+TEST(ExperimentConfig, PlanMakesEveryRowsSynthesisAndRefusesABadRowBeforeAnyOutput) {
+    const std::string dir = test::scratch_dir("experiment_plan");
+    const std::string prompts = std::string(T2IMU_SOURCE_DIR) + "/prompts/sisfall.tsv";
+    const auto config = [&](const std::string& synth_realism, const std::string& second_realism) {
+        return "[synth]\nrealism = \"" + synth_realism + "\"\n[[source]]\nname = \"a\"\nmodel = \"models/x\"\n" +
+               "[[source]]\nname = \"b\"\nmodel = \"retrieval:d\"\n" +
+               "[[real]]\nname = \"one\"\ndataset = \"d1\"\nprompts = \"" + prompts + "\"\nsensors = \"sisfall\"\n" +
+               "[[real]]\nname = \"two\"\ndataset = \"d2\"\nprompts = \"" + prompts + "\"\nsensors = \"umafall\"\n" +
+               "realism = \"" + second_realism + "\"\n";
+    };
+    const ExperimentPlan plan =
+        plan_experiment(read_experiment_config(write_config("plan", config("none", "sisfall"))), dir + "/out");
+    ASSERT_EQ(plan.rows.size(), 4u);
+    const std::vector<std::string> names = {"a-one", "b-one", "a-two", "b-two"};
+    for (size_t i = 0; i < names.size(); ++i) {
+        const ExperimentRowPlan& r = plan.rows[i];
+        EXPECT_EQ(experiment_row_name(plan.config.sources[r.source], plan.config.real_sets[r.set]), names[i]);
+        EXPECT_EQ(r.synth.options.out, dir + "/out/synth/" + names[i]);
+        EXPECT_EQ(r.synth.imu.realism().name, i < 2 ? "none" : "sisfall");
+        EXPECT_EQ(r.synth.prompts.size(), plan.rows[0].synth.prompts.size());
+    }
+    EXPECT_TRUE(std::holds_alternative<RetrievalSpec>(plan.rows[1].synth.source));
+    EXPECT_EQ(plan.rows[3].synth.sensors.size(), parse_sensor_sets("umafall").size());
+    for (const auto& [synth_realism, second_realism] :
+         std::vector<std::pair<std::string, std::string>>{{"sisfal", "sisfall"}, {"none", "sisfal"}}) {
+        const std::string path = write_config("plan_bad", config(synth_realism, second_realism));
+        const std::string m =
+            test::error_message([&] { plan_experiment(read_experiment_config(path), dir + "/refused"); });
+        EXPECT_TRUE(test::contains(m, path) && test::contains(m, "sisfal")) << m;
+        EXPECT_TRUE(test::contains(m, synth_realism == "sisfal" ? "real set one" : "real set two")) << m;
+        EXPECT_FALSE(fs::exists(dir + "/refused"));
+    }
 }
 
 // The shipped configurations (this test was in test_experiment.cpp).
@@ -223,7 +259,26 @@ TEST(ExperimentConfig, ShippedConfigsReadAndEditsAreRefused) {
     std::string unknown = base;
     unknown.replace(unknown.find("after = \"mdm_lacc\""), 18, "after = \"nothing\"");
     EXPECT_TRUE(refused(unknown, "lacc"));
-    std::string realism = base;
-    realism.replace(realism.find("sensors = \"sisfall\""), 19, "sensors = \"sisfall\"\nrealism = \"sisfal\"");
-    EXPECT_TRUE(refused(realism, "real.realism"));
+}
+
+// Every shipped experiment plans: its prompt sets, sensors, bodies and realism spellings (presets or files under
+// experiments/) are what t2imu synth accepts. Paths in them are relative to the checkout, as the CLI runs them.
+TEST(ExperimentConfig, ShippedConfigsPlanEveryRow) {
+    const fs::path was = fs::current_path();
+    fs::current_path(T2IMU_SOURCE_DIR);
+    int configs = 0, planned = 0;
+    for (const auto& e : fs::directory_iterator("experiments")) {
+        if (e.path().extension() != ".toml" || read_file_text(e.path().string()).find("[[real]]") == std::string::npos)
+            continue;
+        ++configs;
+        try {
+            planned += !plan_experiment(read_experiment_config(e.path().string()), test::scratch_dir("shipped_plan"))
+                            .rows.empty();
+        } catch (const Error& error) {
+            ADD_FAILURE() << error.what();
+        }
+    }
+    fs::current_path(was);
+    EXPECT_GT(configs, 0);
+    EXPECT_EQ(planned, configs);
 }

@@ -31,8 +31,8 @@ static CommandRegistrar registrar([](CLI::App& root) {
         if (repeats > 0) c.har.repeats = repeats;
         c.synth.device = global_options().device;
         c.synth.threads = worker_threads();
-        const ExperimentSummary summary =
-            run_experiment(c, out, [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
+        const ExperimentSummary summary = run_experiment(
+            plan_experiment(c, out), [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
         std::printf("%s", experiment_summary_markdown(summary).c_str());
     });
 });

@@ -32,19 +32,20 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// One synthetic-to-real comparison: a source's synthetic version of a real data set.
+// One row of the plan, its source and set looked up.
 struct Row {
     const ExperimentSource* source;
     const ExperimentRealSet* set;
-    std::string id() const { return source->name + "-" + set->name; }
+    const SynthPlan* synth;
+    std::string id() const { return experiment_row_name(*source, *set); }
 };
 
 class Experiment {
 public:
-    Experiment(const ExperimentConfig& c, std::string out, const std::function<void(const std::string&)>& log)
-        : c_(c), out_(std::move(out)), log_(log) {
-        for (const ExperimentRealSet& set : c_.real_sets)
-            for (const ExperimentSource& source : c_.sources) rows_.push_back({&source, &set});
+    Experiment(const ExperimentPlan& plan, const std::function<void(const std::string&)>& log)
+        : c_(plan.config), out_(plan.out), log_(log) {
+        for (const ExperimentRowPlan& r : plan.rows)
+            rows_.push_back({&c_.sources[r.source], &c_.real_sets[r.set], &r.synth});
     }
 
     ExperimentSummary run() {
@@ -106,13 +107,7 @@ private:
     }
 
     void synthesise(const Row& r) {
-        SynthOptions o = c_.synth;
-        o.prompts = r.set->prompts;
-        o.model = r.source->model;
-        o.sensors = r.set->sensors;
-        if (!r.set->realism.empty()) o.realism = r.set->realism;
-        o.out = path("synth/" + r.id());
-        const SynthReport report = run_synth(plan_synth(o));
+        const SynthReport report = run_synth(*r.synth);
         say("synth " + r.id() + ": " + std::to_string(report.motions_kept) + " motions kept, " +
             std::to_string(report.recordings) + " recordings");
     }
@@ -307,10 +302,35 @@ private:
 
 }  // namespace
 
-ExperimentSummary run_experiment(const ExperimentConfig& config, const std::string& out,
-                                 const std::function<void(const std::string&)>& log) {
-    claim_output_folder(out);  // marked as t2imu's: a rerun continues in it (core/output_path.hpp)
-    return Experiment(config, out, log).run();
+std::string experiment_row_name(const ExperimentSource& source, const ExperimentRealSet& set) {
+    return source.name + "-" + set.name;
+}
+
+ExperimentPlan plan_experiment(const ExperimentConfig& config, const std::string& out) {
+    ExperimentPlan plan{config, out, {}};
+    for (size_t set = 0; set < config.real_sets.size(); ++set)
+        for (size_t source = 0; source < config.sources.size(); ++source) {
+            const ExperimentRealSet& r = config.real_sets[set];
+            SynthOptions o = config.synth;
+            o.prompts = r.prompts;
+            o.model = config.sources[source].model;
+            o.sensors = r.sensors;
+            if (!r.realism.empty()) o.realism = r.realism;
+            o.out = (fs::path(out) / "synth" / experiment_row_name(config.sources[source], r)).string();
+            try {
+                plan.rows.push_back({source, set, plan_synth(o)});
+            } catch (const Error& e) {
+                throw Error(config.path.empty() ? "experiment" : config.path,
+                            "the synthesis of source " + config.sources[source].name + " for real set " + r.name,
+                            "settings t2imu synth accepts", e.what());
+            }
+        }
+    return plan;
+}
+
+ExperimentSummary run_experiment(const ExperimentPlan& plan, const std::function<void(const std::string&)>& log) {
+    claim_output_folder(plan.out);  // marked as t2imu's: a rerun continues in it (core/output_path.hpp)
+    return Experiment(plan, log).run();
 }
 
 }  // namespace t2imu

@@ -76,6 +76,7 @@ struct ExperimentLowData {
 };
 
 struct ExperimentConfig {
+    std::string path;    // the TOML it was read from (errors name it); "" for one made in code
     SynthOptions synth;  // shared synthesis settings; prompts, model, sensors and out are set per row
     std::vector<ExperimentSource> sources;
     std::vector<ExperimentRealSet> real_sets;
@@ -136,9 +137,29 @@ struct ExperimentSummary {
 
 nlohmann::json experiment_summary_json(const ExperimentSummary& s);
 
-// Runs or resumes the experiment into `out`; `log` receives one line per step done. Returns summary.json's table.
-ExperimentSummary run_experiment(const ExperimentConfig& config, const std::string& out,
-                                 const std::function<void(const std::string&)>& log = {});
+// A row's name in tables and file names: "<source>-<set>".
+std::string experiment_row_name(const ExperimentSource& source, const ExperimentRealSet& set);
+
+// One synthetic-to-real comparison: a source's synthetic version of a real data set.
+struct ExperimentRowPlan {
+    size_t source = 0, set = 0;  // into the config's sources and real_sets
+    SynthPlan synth;             // [synth] with the set's prompts, sensors and realism; out: <out>/synth/<source>-<set>
+};
+
+// The experiment as typed values, made at the door by plan_experiment: every row's synthesis planned (plan_synth:
+// its prompts read, its realism and sensor models parsed once, every value checked), so a bad row is refused before
+// the first synthesis starts rather than after the rows before it.
+struct ExperimentPlan {
+    ExperimentConfig config;
+    std::string out;
+    std::vector<ExperimentRowPlan> rows;  // real sets in config order, the sources within each
+};
+
+// Throws Error naming the config file, the row and what t2imu synth refuses in it.
+ExperimentPlan plan_experiment(const ExperimentConfig& config, const std::string& out);
+
+// Runs or resumes the experiment into plan.out; `log` receives one line per step done. Returns summary.json's table.
+ExperimentSummary run_experiment(const ExperimentPlan& plan, const std::function<void(const std::string&)>& log = {});
 
 // summary.md: balanced accuracy per source and real set (mean ± sd over the runs, with the paper's figures
 // beside them), the real-to-real ceilings, chance, the two-sample test and the L_acc change.

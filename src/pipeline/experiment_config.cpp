@@ -4,7 +4,6 @@
 
 #include "core/error.hpp"
 #include "core/toml_section.hpp"
-#include "imu/realism.hpp"
 #include "pipeline/experiment.hpp"
 
 namespace t2imu {
@@ -101,12 +100,8 @@ ExperimentConfig read_experiment_config(const std::string& path) {
     const toml::table doc = parse_toml_file(path);
     TomlSection top(doc, path, "");
     ExperimentConfig c;
+    c.path = path;
     read_synth(top.table("synth"), c.synth, path);
-    try {
-        parse_realism(c.synth.realism);
-    } catch (const Error& e) {
-        throw Error(path, "synth.realism", "a realism preset or TOML file", e.what());
-    }
     for (TomlSection s : top.array_of_tables("source")) {
         ExperimentSource src;
         s.require("name", src.name);
@@ -120,12 +115,7 @@ ExperimentConfig read_experiment_config(const std::string& path) {
         s.require("dataset", r.dataset);
         s.require("prompts", r.prompts);
         s.require("sensors", r.sensors);
-        s.read("realism", r.realism);
-        try {
-            if (!r.realism.empty()) parse_realism(r.realism);  // refused now, not after the syntheses before it
-        } catch (const Error& e) {
-            throw Error(path, "real.realism", "a realism preset or TOML file", e.what());
-        }
+        s.read("realism", r.realism);  // parsed with the row's synthesis plan (plan_experiment)
         s.read("positions", r.positions);
         s.read("ceiling_folds", r.ceiling_folds);
         s.refuse_unknown_keys();

@@ -63,7 +63,7 @@ public:
         : c_(c), out_(std::move(out)), windows_(windows), log_(log) {}
 
     LowDataCurve curve(const ExperimentRealSet& set) {
-        const std::string first_row = c_.sources.front().name + "-" + set.name;
+        const std::string first_row = experiment_row_name(c_.sources.front(), set);
         LowDataCurve curve{set.name, read_har_result(path("har/" + first_row + ".json")).classes, {}, {}};
         // Real only and every synthetic arm score the classes of the first source's synthetic-only row.
         std::map<std::string, std::string> keep;
@@ -85,7 +85,7 @@ public:
         }
         curve.arms.push_back(real_only);
         for (const ExperimentSource& source : c_.sources) {
-            const std::string row = source.name + "-" + set.name;
+            const std::string row = experiment_row_name(source, set);
             const WindowSet& synthetic = windows_(path("synth/" + row), set);
             for (HarProtocol protocol : c_.low_data.protocols) {
                 HarPretrained pretrained;  // one pretraining for every K of this arm
