@@ -67,10 +67,11 @@ TEST(CliImuSynth, WritesOneCsvPerBodyAndPositionWithMeta) {
 // imu/realworld_export.cpp (what --format realworld writes), read back by har/datasets/realworld.cpp.
 TEST(CliImuSynth, RealWorldFilesReadBackThroughTheRealWorldLoader) {
     const std::string dir = test::scratch_dir("cli_imu_synth_rw");
-    const auto r = test::run_cli("imu synth --joints " + write_standing(dir) +
-                                 " --body preset:male_tall --sensors realworld"
-                                 " --format realworld --activity standing --noise smartphone --seed 3 --out " +
-                                 dir + "/out");
+    const auto r =
+        test::run_cli("imu synth --joints " + write_standing(dir) +
+                      " --body preset:male_tall --sensors realworld"
+                      " --format realworld --activity standing --realism none+sensor=smartphone --seed 3 --out " +
+                      dir + "/out");
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const std::string body_dir = dir + "/out/male_tall";
     // Pack the files as RealWorld ships them: proband<N>/data/{acc,gyr}_<activity>_csv.zip.

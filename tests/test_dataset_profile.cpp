@@ -28,7 +28,7 @@ TEST(DatasetProfile, EveryProfileHasEachPartAndEveryTableDrawsFromIt) {
         EXPECT_TRUE(has_importer(p)) << p.name;
         EXPECT_EQ(builtin_placement_set(p.name).sensors.size(), p.placements.size())
             << p.name;                                              // --sensors, data reframe
-        const SensorNoiseModel sensor = parse_noise_model(p.name);  // --noise, the device key
+        const SensorNoiseModel sensor = parse_noise_model(p.name);  // the realism model's sensor key
         EXPECT_EQ(sensor.name, p.name);
         EXPECT_EQ(sensor.acc_range, p.sensor.acc_range) << p.name;
         EXPECT_EQ(sensor.acc_noise_density, p.sensor.acc_noise_density) << p.name;

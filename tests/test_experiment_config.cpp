@@ -25,7 +25,7 @@ const char* kMinimal =
     "\"sisfall\"\n";
 
 const char* kFull =
-    "[synth]\nsamples_per_prompt = 3\nbodies = \"preset:male_tall\"\nnoise = \"smartphone\"\nrealism = \"sisfall\"\n"
+    "[synth]\nsamples_per_prompt = 3\nbodies = \"preset:male_tall\"\nrealism = \"sisfall\"\n"
     "vocab = \"v.txt\"\nsampler = \"ddim\"\nsteps = 25\nguidance = 2.5\ncaption_anchor = 0.5\nbatch = 8\nseed = "
     "42\nseconds = 4.5\nrate_hz = 64\n"
     "filter = false\nmax_retries = 4\nactivity_reference = \"ref.csv\"\nmin_activity_agreement = "
@@ -65,7 +65,6 @@ TEST(ExperimentConfig, EveryKeyLandsInItsField) {
     const ExperimentConfig c = read_experiment_config(write_config("full", kFull));
     EXPECT_EQ(c.synth.samples_per_prompt, 3);
     EXPECT_EQ(c.synth.bodies, "preset:male_tall");
-    EXPECT_EQ(c.synth.noise, "smartphone");
     EXPECT_EQ(c.synth.realism, "sisfall");
     EXPECT_EQ(c.synth.vocab, "v.txt");
     EXPECT_EQ(c.synth.sampling.sampler, Sampler::ddim);

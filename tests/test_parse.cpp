@@ -50,15 +50,15 @@ TEST(Parse, ListsDropEmptyItemsAndSuffixesAreChecked) {
 }
 
 TEST(Parse, NamedOverridesSplitOnceForEveryPresetOption) {
-    const NamedOverrides o = parse_named_overrides("sisfall,bits=12,acc_range_g=8,", "--noise");
+    const NamedOverrides o = parse_named_overrides("sisfall,bits=12,acc_range_g=8,", "--sensor");
     EXPECT_EQ(o.name, "sisfall");
     ASSERT_EQ(o.overrides.size(), 2u);  // the trailing comma adds nothing
     EXPECT_EQ(o.overrides[1], (std::pair<std::string, std::string>{"acc_range_g", "8"}));
-    EXPECT_EQ(parse_named_overrides("none", "--noise").overrides.size(), 0u);
+    EXPECT_EQ(parse_named_overrides("none", "--sensor").overrides.size(), 0u);
     EXPECT_EQ(parse_named_overrides("8,seed=", "--body").overrides[0].second, "");  // the value's parser refuses it
-    EXPECT_EQ(test::error_message([] { parse_named_overrides("smartphone,bits", "--noise"); }),
-              "--noise: bits: expected key=value");
-    EXPECT_THROW(parse_named_overrides("smartphone,,bits=3", "--noise"), Error);
+    EXPECT_EQ(test::error_message([] { parse_named_overrides("smartphone,bits", "--sensor"); }),
+              "--sensor: bits: expected key=value");
+    EXPECT_THROW(parse_named_overrides("smartphone,,bits=3", "--sensor"), Error);
 }
 
 TEST(Parse, ShardsAreTwoWholeNumbersWithOneToN) {

@@ -219,12 +219,15 @@ TEST(Realism, PresetsAndTomlFilesAreReadStrictly) {
     EXPECT_THROW(parse_realism_toml("tilt_dg = 3\n", "mine.toml"), Error);
     EXPECT_THROW(parse_realism_toml("tempo_sd = 2\n", "mine.toml"), Error);
     EXPECT_THROW(parse_realism_toml("sensor = \"phone\"\n", "mine.toml"), Error);
-    RealismModel two = realism_preset("sisfall");
-    const std::string e = test::error_message([&] { fold_noise_option("smartphone", &two); });  // two device models
-    EXPECT_TRUE(test::contains(e, "--noise") && test::contains(e, "sisfall")) << e;
-    RealismModel one = realism_preset("none");
-    fold_noise_option("smartphone", &one);  // --noise alone is the realism model's device
-    EXPECT_EQ(one.sensor, "smartphone");
+    // +sensor=MODEL sets the sensor key, last, its overrides' signs kept; the levers before it as without it.
+    EXPECT_EQ(parse_realism("none+sensor=smartphone").sensor, "smartphone");
+    const RealismModel with_sensor = parse_realism("sisfall-tilt+sensor=umafall,acc_noise_density=1e-3,scale_sd=0");
+    EXPECT_EQ(with_sensor.sensor, "umafall,acc_noise_density=1e-3,scale_sd=0");
+    EXPECT_EQ(with_sensor.tilt.sd_deg, parse_realism("sisfall-tilt").tilt.sd_deg);
+    EXPECT_EQ(with_sensor.name, "sisfall-tilt+sensor=umafall,acc_noise_density=1e-3,scale_sd=0");
+    const std::string e = test::error_message([] { parse_realism("sisfall+sensor=phone"); });
+    EXPECT_TRUE(test::contains(e, "sensor") && test::contains(e, "phone")) << e;
+    EXPECT_THROW(parse_realism("none+sensor="), Error);
 }
 
 namespace {

@@ -333,11 +333,7 @@ TEST(Synth, ThePlanHoldsEverySpellingParsedAndRefusesBadOnesBeforeAnyFolder) {
         {[](SynthOptions& x) { x.bodies = "preset:nobody"; }, "preset"},
         {[](SynthOptions& x) { x.sensors = "nowhere"; }, "nowhere"},
         {[](SynthOptions& x) { x.realism = "sisfal"; }, "sisfal"},
-        {[](SynthOptions& x) {
-             x.noise = "smartphone";
-             x.realism = "sisfall";
-         },
-         "--noise"},
+        {[](SynthOptions& x) { x.realism = "sisfall+sensor=smartphone,bitz=3"; }, "bitz"},
         {[](SynthOptions& x) { x.prompts = "no-such-prompts.tsv"; }, "no-such-prompts.tsv"},
         {[](SynthOptions& x) { x.seconds = 0; }, "--seconds"},
         {[](SynthOptions& x) { x.rate_hz = -1; }, "--rate"},

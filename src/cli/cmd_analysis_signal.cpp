@@ -48,21 +48,21 @@ static void add_static_noise(CLI::App& analysis) {
                                         "device errors from the quietest window of each real recording (noise, gyro "
                                         "offset, |g| error), beside a device model's (JSON)");
     auto& real = option_values<std::string>();
-    auto& noise = option_values<std::string>("none");
+    auto& sensor = option_values<std::string>("none");
     auto& out = option_values<std::string>();
     auto& o = option_values<StaticNoiseOptions>();
     cmd->add_option("--real", real, "an IMU data set folder (manifest.csv)")->required()->check(CLI::ExistingDirectory);
     cmd->add_option("--position", o.position, "only this position (waist); default: every position");
     cmd->add_option("--window", o.window_s, "window length, s");
-    cmd->add_option(
-        "--noise", noise,
-        "a device model to set beside the measurement (as synth --noise: " + dataset_profile_names() + ", smartphone)");
+    cmd->add_option("--sensor", sensor,
+                    "a sensor model to set beside the measurement (the realism model's sensor key: " +
+                        dataset_profile_names() + ", smartphone)");
     cmd->add_option("--out", out, "RESULT.json")->required();
-    cmd->callback([&noise, &o, &out, &real] {
+    cmd->callback([&sensor, &o, &out, &real] {
         SensorNoiseModel device;
         check_usage([&] {
             o.validate();
-            device = parse_noise_model(noise);
+            device = parse_noise_model(sensor, "--sensor");
             check_output(out, "--out", OutputKind::file, {real});
         });
         const nlohmann::json r = static_segment_noise(read_imu_dataset(real), o, device);
@@ -80,7 +80,7 @@ static void add_static_noise(CLI::App& analysis) {
             std::printf(
                 "  %s predicts: acc sd %.4f m/s^2, gyr sd %.4f rad/s, gyr offset sd %.4f rad/s, acc offset sd %.3f "
                 "m/s^2\n",
-                noise.c_str(), r["device"]["acc_sd"].get<double>(), r["device"]["gyr_sd"].get<double>(),
+                sensor.c_str(), r["device"]["acc_sd"].get<double>(), r["device"]["gyr_sd"].get<double>(),
                 r["device"]["gyr_offset_sd"].get<double>(), r["device"]["acc_offset_sd"].get<double>());
     });
 }

@@ -22,8 +22,7 @@ namespace fs = std::filesystem;
 namespace {
 
 struct SynthArgs {
-    std::string joints, body = "preset:male_average", sensors = "realworld", noise = "none", realism = "none", out,
-                        format = "csv";
+    std::string joints, body = "preset:male_average", sensors = "realworld", realism = "none", out, format = "csv";
     std::string activity = "synthetic";
     double fps = 20;            // HumanML3D's frame rate
     VirtualImuOptions options;  // rate and seed (their defaults); the realism model is set by the plan
@@ -50,9 +49,7 @@ ImuSynthPlan plan_imu_synth(const SynthArgs& a) {
         p.bodies = parse_body_specs(a.body);
         p.sensors = parse_sensor_sets(a.sensors);
         check_motion_fps(a.fps, "--fps");
-        RealismModel realism = parse_realism(a.realism);
-        fold_noise_option(a.noise, &realism);
-        p.options.set_realism(realism);
+        p.options.set_realism(parse_realism(a.realism));
         p.options.validate();
         check_output(a.out, "--out", OutputKind::folder, {a.joints});
     });
@@ -100,9 +97,6 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--sensors", a.sensors,
                     "placement sets: " + dataset_profile_names() + ", FILE.toml (comma-separated)");
     cmd->add_option("--rate", a.options.rate_hz, "output sample rate, Hz");
-    cmd->add_option("--noise", a.noise,
-                    "the sensor's errors alone (the realism model's sensor key): none | smartphone | hugadb | sisfall "
-                    "| umafall [,key=value...]");
     cmd->add_option("--realism", a.realism, realism_help());
     cmd->add_option("--seed", a.options.seed, "seed of mounting errors, realism draws and noise");
     cmd->add_option("--format", a.format, "csv, or realworld to add RealWorld's release files")

@@ -91,9 +91,6 @@ static CommandRegistrar registrar([](CLI::App& root) {
     cmd->add_option("--bodies", o.bodies, "body shapes (as imu synth --body)");
     cmd->add_option("--sensors", o.sensors, "placement sets (as imu synth --sensors)");
     cmd->add_option("--rate", o.rate_hz, "sensor sample rate, Hz");
-    cmd->add_option("--noise", o.noise,
-                    "the sensor's errors alone (the realism model's sensor key): none (default), smartphone, " +
-                        dataset_profile_names() + " [,key=value...]");
     cmd->add_option("--realism", o.realism, realism_help());
     cmd->add_flag(
         "--no-capture-rate{false}", o.capture_rate,

@@ -25,7 +25,7 @@ long long integer_in(const std::string& text, long long low, long long high, con
 // Whether `path` ends with `suffix` (".toml", "_joints.npy"): how options tell a file from a preset name.
 bool ends_with(const std::string& path, const std::string& suffix);
 
-// "NAME,key=value,key=value" (a preset and its overrides: --noise, --body population:N,...): the name and the
+// "NAME,key=value,key=value" (a preset and its overrides: a sensor model, --body population:N,...): the name and the
 // key=value items in order, their values left as text for the caller's own parser. Error(source, item, "key=value")
 // for an item without '=' (an empty one included; a trailing comma is ignored).
 struct NamedOverrides {

@@ -1,5 +1,5 @@
 // The real HAR data sets, one profile each, and the one table every other table draws from: the placement sets
-// (--sensors, data reframe --to/--from), the sensor models (--noise, the realism table's sensor key), the realism
+// (--sensors, data reframe --to/--from), the sensor models (the realism table's sensor key), the realism
 // presets (--realism), the class maps (har/class_map.hpp), data import-imu's --format and the help texts that list
 // them. Adding a data set is one entry in dataset_profile.cpp plus its importer (docs/overview.md, "Adding a data
 // set"); a program or a test may add its own profile at run time (add_dataset_profile).

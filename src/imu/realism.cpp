@@ -181,6 +181,8 @@ void set_lever(const RealismLever& lever, bool on, RealismModel* m) {
     }
 }
 
+constexpr const char* kSensorAssignment = "+sensor=";
+
 // PRESET+LEVER-LEVER...: the preset with each +LEVER at its calibrated values and each -LEVER off.
 RealismModel parse_variant(const std::string& text) {
     const size_t first = text.find_first_of("+-");
@@ -243,8 +245,8 @@ nlohmann::json realism_record_as_today(const nlohmann::json& recorded) {
 
 std::string realism_help() {
     std::string h =
-        "realism model: PRESET, PRESET+LEVER-LEVER (levers at their calibrated values / off) or FILE.toml\n"
-        "(base = \"PRESET\" and keys). Presets: " +
+        "realism model: PRESET, PRESET+LEVER-LEVER (levers at their calibrated values / off), either followed by\n"
+        "+sensor=MODEL[,key=value...] (the sensor model, last), or FILE.toml (base = \"PRESET\" and keys). Presets: " +
         preset_names_text() +
         " (none is the default).\n"
         "Levers, in the order their stages run, and their keys:";
@@ -337,7 +339,12 @@ RealismModel parse_realism_toml(const std::string& text, const std::string& sour
 
 RealismModel parse_realism(const std::string& text) {
     if (text.size() > 5 && ends_with(text, ".toml")) return parse_realism_toml(read_file_text(text), text);
-    RealismModel m = text.find_first_of("+-") == std::string::npos ? realism_preset(text) : parse_variant(text);
+    // +sensor=MODEL comes last: a sensor model's overrides may hold signs ("bias_g=-0.01").
+    const size_t sensor_at = text.find(kSensorAssignment);
+    const std::string levers = text.substr(0, sensor_at);
+    RealismModel m = levers.find_first_of("+-") == std::string::npos ? realism_preset(levers) : parse_variant(levers);
+    m.name = text;
+    if (sensor_at != std::string::npos) m.sensor = text.substr(sensor_at + std::string(kSensorAssignment).size());
     m.validate("--realism " + text);
     return m;
 }

@@ -99,7 +99,8 @@ std::string realism_help();
 std::vector<std::string> realism_preset_names();
 RealismModel realism_preset(const std::string& name);  // errors name --realism
 RealismModel parse_realism_toml(const std::string& text, const std::string& source);
-// PRESET, PRESET+LEVER-LEVER or a .toml file's path (errors name --realism or the file).
+// PRESET, PRESET+LEVER-LEVER, either followed by +sensor=MODEL (sensor_noise.hpp's spelling: the sensor key set to
+// it; last, as its overrides may hold signs), or a .toml file's path (errors name --realism or the file).
 RealismModel parse_realism(const std::string& text);
 // A model's JSON record (to_json) with the keys a record made before a lever was added, renamed or retired would
 // lack or hold: added keys read as their lever off, renamed keys read under today's name (device -> sensor,

@@ -13,7 +13,8 @@
 //               bias sd 1 deg/s, scale sd 0.01, misalignment sd 0.5 deg, +-8 g, +-2000 deg/s, 16 bit.
 //   DATASET     each data set's device, in its profile (dataset_profile.cpp): realworld the smartphone,
 //               sisfall's ADXL345/ITG-3200 board, umafall's SensorTag, hugadb's chip at +-2 g.
-// `--noise smartphone,acc_range_g=16,seed=3` overrides single fields.
+// `smartphone,acc_range_g=16,seed=3` overrides single fields (the realism model's sensor key, --realism
+// none+sensor=MODEL).
 #pragma once
 #include <cstdint>
 #include <string>
@@ -38,9 +39,9 @@ struct SensorNoiseModel {
 SensorNoiseModel smartphone_sensor();
 
 // "none", "smartphone", a data set's device (dataset_profile.hpp), or one of these followed by ,key=value overrides
-// (keys as the fields, with acc_range_g and gyr_range_dps in g and deg/s). Errors name "--noise".
-// `option` names the text's origin in errors: "--noise", or a realism file's key ("r.toml: sensor").
-SensorNoiseModel parse_noise_model(const std::string& text, const std::string& option = "--noise");
+// (keys as the fields, with acc_range_g and gyr_range_dps in g and deg/s). `option` names the text's origin in
+// errors: "--sensor", or a realism model's key ("r.toml: sensor").
+SensorNoiseModel parse_noise_model(const std::string& text, const std::string& option = "sensor");
 
 // Applies the model in place. Deterministic in `seed`.
 void apply_sensor_noise(const SensorNoiseModel& model, uint64_t seed, ImuSignals* signals);

@@ -67,16 +67,6 @@ void VirtualImuOptions::validate() const {
                     std::to_string(rate_hz));
 }
 
-void fold_noise_option(const std::string& noise, RealismModel* realism) {
-    const SensorNoiseModel model = parse_noise_model(noise);  // errors name --noise
-    if (!model.enabled()) return;
-    if (realism->sensor != "none")
-        throw Error("--noise", "model",
-                    "--noise none with --realism " + realism->name + " (its sensor model is " + realism->sensor + ")",
-                    noise);
-    realism->sensor = noise;
-}
-
 namespace {
 
 // The stages of the realism chain (realism.hpp's RealismStage), each a function, in the order they run.

@@ -40,10 +40,6 @@ private:
     SensorNoiseModel sensor_;
 };
 
-// `--noise MODEL`: the realism model's sensor, given on its own (sensor_noise.hpp). "none" leaves `realism` as it
-// is; a model where the realism model already names a sensor is refused (errors name --noise).
-void fold_noise_option(const std::string& noise, RealismModel* realism);
-
 struct BodyImu {
     BodySpec body;  // as used: --body none is given the height and mass it was sized to
     double leg_scale = 1;

@@ -21,7 +21,6 @@ uint64_t read_seed(TomlSection& s, const char* key, uint64_t value, const std::s
 void read_synth(TomlSection s, SynthOptions& o, const std::string& path) {
     s.read("samples_per_prompt", o.samples_per_prompt);
     s.read("bodies", o.bodies);
-    s.read("noise", o.noise);
     s.read("realism", o.realism);
     s.read("vocab", o.vocab);
     std::string sampler = sampler_name(o.sampling.sampler);

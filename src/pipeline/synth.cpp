@@ -240,7 +240,6 @@ json settings_json(const SynthPlan& plan, const json& source) {
               {"seconds", o.seconds},
               {"bodies", o.bodies},
               {"sensors", o.sensors},
-              {"noise", o.noise},
               {"rate_hz", o.rate_hz},
               {"placed_on_floor", true},
               {"filter", o.filter},
@@ -276,8 +275,10 @@ void check_or_write_settings(const std::string& out, const json& settings) {
                             value.dump() + " as this run asks (a folder holds one synthesis; use another --out)",
                             recorded.dump());
         }
-        for (const auto& [key, value] : before.items())  // a switch on then, off now (realism, capture_rate)
-            if (!settings.contains(key))
+        // A switch on then, off now (realism, capture_rate). The sensor model had an option of its own once, recorded
+        // as "noise": none is what a folder without it means today.
+        for (const auto& [key, value] : before.items())
+            if (!settings.contains(key) && !(key == "noise" && value == "none"))
                 throw Error(path, key,
                             "absent (off) as this run asks (a folder holds one synthesis; use another --out)",
                             value.dump());
@@ -310,9 +311,7 @@ SynthPlan plan_synth(const SynthOptions& o) {
     plan.source = parse_motion_source(o.model);
     plan.imu.rate_hz = o.rate_hz;
     plan.imu.seed = o.sampling.seed;
-    RealismModel realism = parse_realism(o.realism);
-    fold_noise_option(o.noise, &realism);
-    plan.imu.set_realism(realism);
+    plan.imu.set_realism(parse_realism(o.realism));
     plan.imu.validate();
     plan.bodies = parse_body_specs(o.bodies);
     plan.sensors = parse_sensor_sets(o.sensors);

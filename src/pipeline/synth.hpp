@@ -55,7 +55,7 @@ struct SynthOptions {
     std::string vocab;                                   // GloVe vocabulary for retrieval ("" = default)
     SampleOptions sampling = synth_sampling_defaults();  // sampler, steps, guidance, seed (of job 0), batch
     double seconds = 6;                                  // motion length (20 fps; at most 9.8 s)
-    std::string bodies = "paper8", sensors = "realworld", noise = "none";
+    std::string bodies = "paper8", sensors = "realworld";
     std::string realism = "none";  // imu/realism.hpp: a preset or a .toml file
     double rate_hz = 50;
     // The virtual sensors see a retrieved captured clip at its capture rate (MotionSource::capture_rate_motion)
@@ -86,7 +86,7 @@ struct SynthOptions {
 };
 
 // The job as typed values, made at the door by plan_synth: each spelling (the source, the prompt set, the bodies, the
-// sensors, the realism model with --noise folded in and its sensor model) parsed once, every value checked, before
+// sensors, the realism model and its sensor model) parsed once, every value checked, before
 // any work. What runs after reads these; the options' spellings stay for the record (synth.json, the manifest).
 struct SynthPlan {
     SynthOptions options;
