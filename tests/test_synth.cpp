@@ -255,6 +255,18 @@ TEST(Synth, RefusesAFolderMadeWithOtherSettings) {
     o.shards = 3;  // a shard of the same synthesis is welcome
     EXPECT_NO_THROW(run_synth(plan_synth(o)));
     o.shards = 1;
+    // A folder from when the sensor model had an option of its own ("noise" in synth.json) resumes when it said
+    // none, and is refused when it named a sensor model.
+    const std::string settings_path = out + "/synth.json";
+    nlohmann::json settings = nlohmann::json::parse(read_file_text(settings_path));
+    settings["noise"] = "none";
+    write_file_atomic(settings_path, settings.dump(1));
+    EXPECT_NO_THROW(run_synth(plan_synth(o)));
+    settings["noise"] = "smartphone";
+    write_file_atomic(settings_path, settings.dump(1));
+    EXPECT_TRUE(test::contains(test::error_message([&] { run_synth(plan_synth(o)); }), "noise"));
+    settings.erase("noise");
+    write_file_atomic(settings_path, settings.dump(1));
     o.realism = "sisfall";  // so is another sensor realism model: refused like any other setting
     EXPECT_THROW(run_synth(plan_synth(o)), Error);
 }
