@@ -404,6 +404,18 @@ TEST(RealismTable, TheHelpNamesEveryLeverAndKeyWithItsRange) {
     }
     EXPECT_TRUE(mentions(help, "tilt_deg: -90 to 90 deg; off 0, calibrated 7.5")) << help;
     EXPECT_TRUE(mentions(help, "sensor_rate_hz: 0 (off) or 5 to 2000 Hz, whole")) << help;
+    // The experimental tier: a lever no preset turns on is listed after its heading, the presets' levers before it.
+    const size_t tier = help.find("Experimental levers");
+    ASSERT_NE(tier, std::string::npos) << help;
+    for (const RealismLever& lever : realism_levers()) {
+        bool in_a_preset = false;
+        for (const std::string& preset : realism_preset_names())
+            in_a_preset = in_a_preset || lever.enabled(realism_preset(preset));
+        EXPECT_EQ(realism_lever_experimental(lever), !in_a_preset) << lever.name;
+        EXPECT_EQ(help.find(std::string("\n  ") + lever.name + " (") > tier, !in_a_preset) << lever.name;
+    }
+    EXPECT_TRUE(realism_lever_experimental(realism_lever("strap")));
+    EXPECT_FALSE(realism_lever_experimental(realism_lever("tilt")));
     // Both commands that take --realism show it.
     for (const char* command : {"synth --help", "imu synth --help"}) {
         const test::CliResult r = test::run_cli(command);

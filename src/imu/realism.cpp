@@ -247,19 +247,30 @@ std::string realism_help() {
     std::string h =
         "realism model: PRESET, PRESET+LEVER-LEVER (levers at their calibrated values / off), either followed by\n"
         "+sensor=MODEL[,key=value...] (the sensor model, last), or FILE.toml (base = \"PRESET\" and keys). Presets: " +
-        preset_names_text() +
-        " (none is the default).\n"
-        "Levers, in the order their stages run, and their keys:";
-    for (const RealismLever& lever : kLevers) {
-        h += std::string("\n  ") + lever.name + " (" + realism_stage_name(lever.stage) + "): " + lever.physics;
-        for (const RealismKey& k : lever.keys) {
-            h += std::string("\n      ") + k.key + ": ";
-            h += k.number ? range_text(k) + "; off " + format_number(k.off) + ", calibrated " + format_number(k.on)
-                          : std::string("none, a sensor model or model,key=value overrides; off none, calibrated ") +
-                                k.text_on;
+        preset_names_text() + " (none is the default).";
+    for (const bool experimental : {false, true}) {
+        h += experimental
+                 ? "\nExperimental levers, off in every preset (kept by the rule of docs/realism.md#the-levers):"
+                 : "\nLevers the presets turn on, and their keys:";
+        for (const RealismLever& lever : kLevers) {
+            if (realism_lever_experimental(lever) != experimental) continue;
+            h += std::string("\n  ") + lever.name + " (" + realism_stage_name(lever.stage) + "): " + lever.physics;
+            for (const RealismKey& k : lever.keys) {
+                h += std::string("\n      ") + k.key + ": ";
+                h += k.number
+                         ? range_text(k) + "; off " + format_number(k.off) + ", calibrated " + format_number(k.on)
+                         : std::string("none, a sensor model or model,key=value overrides; off none, calibrated ") +
+                               k.text_on;
+            }
         }
     }
     return h;
+}
+
+bool realism_lever_experimental(const RealismLever& lever) {
+    for (const std::string& name : realism_preset_names())
+        if (lever.enabled(realism_preset(name))) return false;
+    return true;
 }
 
 namespace {

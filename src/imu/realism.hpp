@@ -9,7 +9,8 @@
 //
 // Presets (realism.cpp gives the figures each value rests on). The ablations on the shared SisFall subjects
 // (docs/realism.md) chose the levers: mounting tilt and the device model raised synthetic-only HAR, the others
-// lowered it or left it within its spread, so they are off in every preset:
+// lowered it or left it within its spread, so they are off in every preset (the experimental tier,
+// realism_lever_experimental):
 //   none        everything off: the ideal sensor of the paper's pipeline
 //   DATASET     each data set's (dataset_profile.hpp): its mounting tilt and its own device; sisfall's tilt
 //               calibrated on the shared SisFall subjects, umafall's spread on the shared UMAFall subjects
@@ -19,6 +20,7 @@
 //   PRESET                       a preset above
 //   PRESET+LEVER-LEVER...        the preset with each +LEVER at its calibrated values and each -LEVER off
 //                                (e.g. sisfall+strap+vibration, sisfall-sensor: the tilt alone)
+//   ...+sensor=MODEL             either of the above with the sensor key set to MODEL (sensor_noise.hpp), last
 //   FILE.toml                    `base = "PRESET"` (default none) and any keys of the table; an unknown key is
 //                                refused
 #pragma once
@@ -93,7 +95,10 @@ struct RealismLever {
 const std::vector<RealismLever>& realism_levers();
 // The lever of that name (a name of the table; a programming error otherwise).
 const RealismLever& realism_lever(const std::string& name);
-// The --realism help: how to spell a model, the presets, and every lever with its stage, keys, units and ranges.
+// Whether no preset turns the lever on: the experimental tier, kept by docs/realism.md's rule but used by no preset.
+bool realism_lever_experimental(const RealismLever& lever);
+// The --realism help: how to spell a model, the presets, and every lever with its stage, keys, units and ranges,
+// the presets' levers first, then the experimental tier.
 std::string realism_help();
 
 std::vector<std::string> realism_preset_names();
