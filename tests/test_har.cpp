@@ -272,6 +272,47 @@ TEST(HarTraining, FinetuneWithZeroEpochsIsPlainTrainingOnTheSyntheticSet) {
     EXPECT_EQ(more.runs[0].train_subjects, drawn);
 }
 
+// A series stopped after its first run and resumed from what it saved (read back from disk) is the uninterrupted
+// series: the same draws, epochs and predictions, the windows summed over all runs; a checkpoint of other draws is
+// refused.
+TEST(HarTraining, ACheckpointedSeriesResumesToTheUninterruptedOne) {
+    torch::set_num_threads(1);
+    const TwoSets s = two_sets(4);
+    const WindowSet syn = make_windows(s.synthetic, {}), real = make_windows(s.real, {});
+    HarOptions o;
+    o.repeats = 3;
+    o.max_epochs = 3;
+    SeveralSetsOptions m;
+    m.protocol = HarProtocol::finetune;
+    m.test_set = 1;
+    m.train_subjects = 1;
+    m.finetune_epochs = 2;
+    std::vector<HarResult> saved;
+    HarCheckpoint record{{}, [&](const HarResult& r) { saved.push_back(r); }};
+    const HarResult whole = train_on_sets({{&syn, "syn"}, {&real, "real"}}, real, o, m, nullptr, &record);
+    ASSERT_EQ(saved.size(), 3u);
+    EXPECT_EQ(saved[0].runs.size(), 1u);
+    const std::string file = test::scratch_dir("har_checkpoint") + "/first.json";
+    write_file_atomic(file, har_result_json(saved[0], "the first run"));
+    HarCheckpoint resume{read_har_result(file), [&](const HarResult& r) { saved.push_back(r); }};
+    const HarResult resumed = train_on_sets({{&syn, "syn"}, {&real, "real"}}, real, o, m, nullptr, &resume);
+    EXPECT_EQ(saved.size(), 5u);  // two more runs saved
+    ASSERT_EQ(resumed.runs.size(), 3u);
+    for (size_t k = 0; k < 3; ++k) {
+        EXPECT_EQ(resumed.runs[k].train_subjects, whole.runs[k].train_subjects) << k;
+        EXPECT_EQ(resumed.runs[k].epochs, whole.runs[k].epochs) << k;
+        EXPECT_EQ(resumed.runs[k].confusion, whole.runs[k].confusion) << k;
+    }
+    EXPECT_EQ(resumed.run_names, whole.run_names);
+    EXPECT_EQ(resumed.train_windows, whole.train_windows);
+    EXPECT_EQ(resumed.test_windows, whole.test_windows);
+    m.train_subjects = 2;  // other draws
+    EXPECT_TRUE(test::contains(test::error_message([&] {
+                                   train_on_sets({{&syn, "syn"}, {&real, "real"}}, real, o, m, nullptr, &resume);
+                               }),
+                               "checkpoint"));
+}
+
 TEST(HarTraining, MixDrawsSubjectsPerRepeatAndTestsTheOthers) {
     torch::set_num_threads(1);
     const TwoSets s = two_sets(4);

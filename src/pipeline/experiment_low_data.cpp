@@ -77,11 +77,12 @@ public:
             if (k == 0) continue;
             const int n = count(k, subjects, set);
             real_only.points.push_back(
-                step(path("low-data/real-" + set.name + "/real-k" + label_of(k) + ".json"), label_of(k), [&] {
-                    return har_result_json(
-                        train_on_sets({{&real, set.dataset}}, real, draws(), sets(HarProtocol::mix, 0, n)),
-                        "real only: " + std::to_string(n) + " drawn subjects of " + set.dataset);
-                }));
+                step(path("low-data/real-" + set.name + "/real-k" + label_of(k) + ".json"), label_of(k),
+                     "real only: " + std::to_string(n) + " drawn subjects of " + set.dataset,
+                     [&](const HarCheckpoint& checkpoint) {
+                         return train_on_sets({{&real, set.dataset}}, real, draws(), sets(HarProtocol::mix, 0, n),
+                                              nullptr, &checkpoint);
+                     }));
         }
         curve.arms.push_back(real_only);
         for (const ExperimentSource& source : c_.sources) {
@@ -98,12 +99,12 @@ public:
                     const int n = count(k, subjects, set);
                     const std::string file =
                         path("low-data/" + row + "/" + har_protocol_name(protocol) + "-k" + label_of(k) + ".json");
-                    arm.points.push_back(step(file, label_of(k), [&] {
-                        return har_result_json(train_on_sets({{&synthetic, path("synth/" + row)}, {&real, set.dataset}},
-                                                             real, draws(), sets(protocol, 1, n), &pretrained),
-                                               std::string(har_protocol_name(protocol)) + ": " + source.name +
-                                                   "'s synthetic " + set.name + " and " + std::to_string(n) +
-                                                   " drawn subjects of " + set.dataset);
+                    const std::string description = std::string(har_protocol_name(protocol)) + ": " + source.name +
+                                                    "'s synthetic " + set.name + " and " + std::to_string(n) +
+                                                    " drawn subjects of " + set.dataset;
+                    arm.points.push_back(step(file, label_of(k), description, [&](const HarCheckpoint& checkpoint) {
+                        return train_on_sets({{&synthetic, path("synth/" + row)}, {&real, set.dataset}}, real, draws(),
+                                             sets(protocol, 1, n), &pretrained, &checkpoint);
                     }));
                 }
                 curve.arms.push_back(arm);
@@ -142,10 +143,19 @@ private:
         return m;
     }
 
+    // A point's draws, each kept in FILE.partial as it ends (a stop loses at most one training), then FILE.
     template <class Train>
-    LowDataPoint step(const std::string& file, const std::string& label, const Train& train) {
+    LowDataPoint step(const std::string& file, const std::string& label, const std::string& description,
+                      const Train& train) {
         if (!fs::exists(file)) {
-            write_file_atomic(file, train());
+            const std::string partial = file + ".partial";
+            HarCheckpoint checkpoint;
+            if (fs::exists(partial)) checkpoint.done = read_har_result(partial);
+            checkpoint.save = [&](const HarResult& so_far) {
+                write_file_atomic(partial, har_result_json(so_far, description + " (so far)"));
+            };
+            write_file_atomic(file, har_result_json(train(checkpoint), description));
+            fs::remove(partial);
             if (log_) log_("low-data " + file);
         }
         return low_data_point(read_har_result(file), label);

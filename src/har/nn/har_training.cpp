@@ -508,7 +508,7 @@ const TrainedNet& pretrained_net(const Labelled& others, const std::vector<std::
 }  // namespace
 
 HarResult train_on_sets(const std::vector<TrainingSet>& train, const WindowSet& test, const HarOptions& o,
-                        const SeveralSetsOptions& m, HarPretrained* keep) {
+                        const SeveralSetsOptions& m, HarPretrained* keep, const HarCheckpoint* checkpoint) {
     o.validate();
     m.validate(train.size(), o.batch);
     if (m.test_set >= 0 && train[static_cast<size_t>(m.test_set)].windows != &test)
@@ -532,12 +532,25 @@ HarResult train_on_sets(const std::vector<TrainingSet>& train, const WindowSet& 
         for (int k = 0; k < o.repeats; ++k)
             draws[static_cast<size_t>(k)] = draw_subjects(test.subjects, m.train_subjects, o.seed, k);
     const Labelled others = pick_windows(s, [&](int set, const std::string&) { return set != m.test_set; });
+    int first = 0;
+    if (checkpoint && !checkpoint->done.runs.empty()) {
+        const HarResult& done = checkpoint->done;
+        bool same = done.classes == r.classes && done.training_sets == r.training_sets && done.protocol == r.protocol &&
+                    done.runs.size() <= static_cast<size_t>(o.repeats);
+        for (size_t k = 0; same && k < done.runs.size(); ++k) same = done.runs[k].train_subjects == draws[k];
+        if (!same)
+            throw Error("har", "checkpoint",
+                        "runs of these sets, classes, protocol and draws of subjects, at most --repeats of them");
+        r.runs = done.runs, r.run_names = done.run_names;
+        r.train_windows = done.train_windows, r.test_windows = done.test_windows;
+        first = static_cast<int>(done.runs.size());
+    }
     TrainedNet local;
     const TrainedNet* pretrained = nullptr;
-    if (m.protocol == HarProtocol::finetune)
+    if (m.protocol == HarProtocol::finetune && first < o.repeats)
         pretrained = &pretrained_net(others, r.training_sets, s.classes, o, keep, &local);
-    Progress progress("HAR", static_cast<size_t>(o.repeats), "trainings");
-    for (int k = 0; k < o.repeats; ++k) {
+    Progress progress("HAR", static_cast<size_t>(o.repeats - first), "trainings");
+    for (int k = first; k < o.repeats; ++k) {
         const uint64_t seed = o.seed + static_cast<uint64_t>(k);
         HarRun run;
         std::set<std::string> drawn;
@@ -587,6 +600,7 @@ HarResult train_on_sets(const std::vector<TrainingSet>& train, const WindowSet& 
         r.runs.push_back(net.run);
         r.run_names.push_back((m.test_set >= 0 ? "draw " + std::to_string(k) + ", " : "") + "seed " +
                               std::to_string(seed));
+        if (checkpoint && checkpoint->save) checkpoint->save(r);
         progress.advance();
     }
     if (m.test_set < 0)

@@ -11,6 +11,7 @@
 // that is also the test set where there is one (the target domain), so the other sets train in full.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -76,10 +77,19 @@ public:
     std::unique_ptr<State> state;
 };
 
+// A long series of trainings that a stop should not lose: the result so far is handed to `save` after each run, and a
+// call given that result back (`done`) trains only the runs after it. Each run draws from its own seed, so the resumed
+// series is the uninterrupted one.
+struct HarCheckpoint {
+    HarResult done;  // no runs: from the first
+    std::function<void(const HarResult&)> save;
+};
+
 // `repeats` trainings (seeds seed, seed+1, ...), each with its own draw of subjects when test_set >= 0; the test is
 // `test` (with test_set: the same WindowSet as that training set) less the drawn subjects. Classes: those the test
 // set and every training set share. Refuses a subject that is both trained and tested on.
 HarResult train_on_sets(const std::vector<TrainingSet>& train, const WindowSet& test, const HarOptions& options,
-                        const SeveralSetsOptions& sets, HarPretrained* pretrained = nullptr);
+                        const SeveralSetsOptions& sets, HarPretrained* pretrained = nullptr,
+                        const HarCheckpoint* checkpoint = nullptr);
 
 }  // namespace t2imu
