@@ -13,6 +13,8 @@
 #include "core/error.hpp"
 #include "core/npy.hpp"
 #include "core/safetensors.hpp"
+#include "diffusion/losses.hpp"
+#include "diffusion/recover_from_ric_torch.hpp"
 #include "diffusion/trainer.hpp"
 #include "motion/humanml3d.hpp"
 #include "motion/mocap_import.hpp"
@@ -88,6 +90,15 @@ TEST(Trainer, ConfigIsStrict) {
     EXPECT_NE(replaced("seed = 3\n", "seed = -3\n").find("train.seed"), std::string::npos);
     EXPECT_NE(replaced("acc_space = \"joints\"", "acc_space = \"pose\"").find("loss.acc_space"), std::string::npos);
     EXPECT_NE(replaced("num_heads = 2\n", "num_heads = 3\n").find("model.num_heads"), std::string::npos);
+    EXPECT_EQ(replaced("acc_space = \"joints\"", "acc_space = \"joints\"\nacc_joints = [\"pelvis\", \"left_foot\"]"),
+              "accepted");
+    for (const char* joints : {"[\"pelvis\", \"pelvis\"]", "[\"left_toe\"]"})
+        EXPECT_NE(replaced("acc_space = \"joints\"", "acc_space = \"joints\"\nacc_joints = " + std::string(joints))
+                      .find("loss.acc_joints"),
+                  std::string::npos)
+            << joints;
+    EXPECT_NE(replaced("acc_space = \"joints\"", "acc_joints = [\"pelvis\"]").find("loss.acc_joints"),
+              std::string::npos);  // in feature space there are no joints to pick
     EXPECT_NE(replaced("[train]\n", "[train]\nprecision = \"fp16\"\n").find("train.precision"), std::string::npos);
 }
 
@@ -137,9 +148,21 @@ TEST(Trainer, LossTermsVanishForAPerfectPredictionAndMatchTheirDefinitions) {
     EXPECT_NEAR(shifted.acc.item<double>(), 0.0, 1e-9);
     EXPECT_GT(shifted.pos.item<double>(), 0.0);
     c.acc_space = "joints";
-    const LossTerms noisy = mdm_loss_terms(x, x + 0.05 * torch::randn_like(x), lengths, mean, std, c);
+    const torch::Tensor predicted = x + 0.05 * torch::randn_like(x);
+    const LossTerms noisy = mdm_loss_terms(x, predicted, lengths, mean, std, c);
     EXPECT_GT(noisy.acc.item<double>(), 0.0);
     EXPECT_GT(noisy.foot.item<double>(), 0.0);  // feet with contact move in the noisy prediction
+    // acc_joints: L_acc of those joints' channels alone (pelvis = joint 0, right foot = joint 11).
+    c.acc_joints = {"pelvis", "right_foot"};
+    const auto picked = [](const torch::Tensor& features) {
+        const torch::Tensor j = recover_from_ric_torch(features);  // [B, F, 22, 3]
+        return torch::cat({j.select(2, 0), j.select(2, 11)}, 2);
+    };
+    const double expected =
+        acceleration_loss(picked(x), picked(predicted), frame_mask(lengths, x.size(1))).mean().item<double>();
+    EXPECT_NEAR(mdm_loss_terms(x, predicted, lengths, mean, std, c).acc.item<double>(), expected,
+                1e-9 + 1e-6 * expected);
+    EXPECT_GT(expected, 0.0);
 }
 
 TEST(Trainer, LossFallsResumeContinuesExactlyAndFinetuneStartsFromTheWeights) {

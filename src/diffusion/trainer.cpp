@@ -1,5 +1,6 @@
 #include "diffusion/trainer.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -22,6 +23,7 @@
 #include "diffusion/losses.hpp"
 #include "diffusion/recover_from_ric_torch.hpp"
 #include "diffusion/text_to_motion.hpp"
+#include "motion/skeleton.hpp"
 #include "nn/autocast.hpp"
 #include "nn/state_dict.hpp"
 #include "nn/threads.hpp"
@@ -34,6 +36,13 @@ namespace fs = std::filesystem;
 // ---------------------------------------------------------------- configuration
 
 namespace {
+
+// The index of an SMPL-22 joint by name (motion/skeleton.hpp), -1 for another name.
+int64_t smpl22_joint(const std::string& name) {
+    const auto& names = smpl22::kJointNames;
+    const auto it = std::find(names.begin(), names.end(), name);
+    return it == names.end() ? -1 : it - names.begin();
+}
 
 // A value of `section` that must lie in [lo, hi] (or above lo when `open_low`); NaN fails every comparison.
 void check_range(const std::string& path, const std::string& field, double v, double lo, double hi,
@@ -81,6 +90,12 @@ void TrainConfig::validate(const std::string& path) const {
     check_range(path, "loss.lambda_acc", lambda_acc, 0, big);
     if (acc_space != "features" && acc_space != "joints")
         throw Error(path, "loss.acc_space", "features or joints", acc_space);
+    if (!acc_joints.empty() && acc_space != "joints")
+        throw Error(path, "loss.acc_joints", "acc_space = \"joints\" with it", acc_space);
+    std::set<std::string> named;
+    for (const std::string& joint : acc_joints)
+        if (smpl22_joint(joint) < 0 || !named.insert(joint).second)
+            throw Error(path, "loss.acc_joints", "SMPL-22 joint names (pelvis, left_foot, ...), each once", joint);
     parse_precision(precision, path, "train.precision");
     augment.validate(path);
 }
@@ -126,6 +141,7 @@ TrainConfig read_train_config(const std::string& path) {
     loss.read("lambda_foot", c.lambda_foot);
     loss.read("lambda_acc", c.lambda_acc);
     loss.read("acc_space", c.acc_space);
+    loss.read("acc_joints", c.acc_joints);
     augment.read("swap", c.augment.swap);
     augment.read("dropout", c.augment.dropout);
     augment.read("neighbours", c.augment.neighbours);
@@ -164,12 +180,21 @@ LossTerms mdm_loss_terms(const torch::Tensor& x0, const torch::Tensor& x0_hat, c
     } else {
         t.foot = zero;
     }
-    if (c.lambda_acc > 0)
+    if (c.lambda_acc > 0 && c.acc_space == "joints" && !c.acc_joints.empty()) {
+        std::vector<int64_t> picked;
+        for (const std::string& joint : c.acc_joints) picked.push_back(smpl22_joint(joint));
+        const torch::Tensor index = torch::tensor(picked, torch::kInt64).to(x0.device());
+        const auto some = [&](const torch::Tensor& j) {
+            return j.view({x0.size(0), x0.size(1), 22, 3}).index_select(2, index).flatten(2);
+        };
+        t.acc = acceleration_loss(some(joints), some(joints_hat), mask).mean();
+    } else if (c.lambda_acc > 0) {
         t.acc = (c.acc_space == "joints" ? acceleration_loss(joints, joints_hat, mask)
                                          : acceleration_loss(x0, x0_hat, mask))
                     .mean();
-    else
+    } else {
         t.acc = zero;
+    }
     t.total = t.simple + c.lambda_pos * t.pos + c.lambda_vel * t.vel + c.lambda_foot * t.foot + c.lambda_acc * t.acc;
     return t;
 }
@@ -361,6 +386,7 @@ void write_model(const Training& tr, const TrainConfig& c, const Hml3dDataset& d
           {"lambda_foot", c.lambda_foot},
           {"lambda_acc", c.lambda_acc},
           {"acc_space", c.acc_space},
+          {"acc_joints", c.acc_joints},
           {"augment",
            {{"swap", c.augment.swap},
             {"dropout", c.augment.dropout},

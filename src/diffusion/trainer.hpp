@@ -41,7 +41,9 @@ struct TrainConfig {
     double learning_rate = 1e-4, weight_decay = 0.0, cond_dropout = 0.1, ema_decay = 0.0;
     double lambda_pos = 0, lambda_vel = 0, lambda_foot = 0, lambda_acc = 0;
     std::string acc_space = "features";  // or "joints"
-    CaptionAugmentOptions augment;       // [augment]: the training captions reworded (text/caption_augment.hpp)
+    // With acc_space joints: the SMPL-22 joints L_acc compares (motion/skeleton.hpp names); empty: all of them.
+    std::vector<std::string> acc_joints;
+    CaptionAugmentOptions augment;  // [augment]: the training captions reworded (text/caption_augment.hpp)
     int64_t save_every = 1000, log_every = 50;
     std::string precision =
         "fp32";  // or "bf16": the forward's products in bfloat16, weights and losses fp32 (nn/autocast.hpp)
@@ -61,9 +63,9 @@ struct TrainConfig {
 // TOML: [data] dataset, vocab, split; [model] latent_dim, ff_size, num_layers, num_heads, dropout;
 // [text] model_dim, layers, heads, ff_size, dropout; [diffusion] steps; [train] batch, steps, learning_rate,
 // weight_decay, cond_dropout, ema_decay, seed, save_every, log_every, precision; [loss] lambda_pos, lambda_vel,
-// lambda_foot, lambda_acc, acc_space; [augment] swap, dropout, neighbours, min_similarity, search_words; `out` at the
-// top level (the model folder). Read strictly (core/toml_section.hpp): unknown keys and wrong types are refused by
-// name; then validate().
+// lambda_foot, lambda_acc, acc_space, acc_joints; [augment] swap, dropout, neighbours, min_similarity, search_words;
+// `out` at the top level (the model folder). Read strictly (core/toml_section.hpp): unknown keys and wrong types are
+// refused by name; then validate().
 TrainConfig read_train_config(const std::string& path);
 
 // The EMA decay after `step` updates of this run: min(max_decay, (1 + step) / (10 + step)). Without the
