@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "imu/placement.hpp"
 #include "pipeline/experiment.hpp"
+#include "pipeline/synth_keys.hpp"
 #include "test_util.hpp"
 
 using namespace t2imu;
@@ -28,7 +29,7 @@ const char* kFull =
     "[synth]\nsamples_per_prompt = 3\nbodies = \"preset:male_tall\"\nrealism = \"sisfall\"\n"
     "vocab = \"v.txt\"\nsampler = \"ddim\"\nsteps = 25\nguidance = 2.5\ncaption_anchor = 0.5\nbatch = 8\nseed = "
     "42\nseconds = 4.5\nrate_hz = 64\n"
-    "filter = false\nmax_retries = 4\nactivity_reference = \"ref.csv\"\nmin_activity_agreement = "
+    "filter = false\ncapture_rate = false\nmax_retries = 4\nactivity_reference = \"ref.csv\"\nmin_activity_agreement = "
     "0.6\ndrop_activity_failures = true\n"
     "[[source]]\nname = \"mdm\"\nmodel = \"models/default\"\n"
     "[[source]]\nname = \"mdm_lacc\"\nmodel = \"models/default-lacc\"\n"
@@ -76,6 +77,7 @@ TEST(ExperimentConfig, EveryKeyLandsInItsField) {
     EXPECT_DOUBLE_EQ(c.synth.seconds, 4.5);
     EXPECT_DOUBLE_EQ(c.synth.rate_hz, 64);
     EXPECT_FALSE(c.synth.filter);
+    EXPECT_FALSE(c.synth.capture_rate);
     EXPECT_EQ(c.synth.max_retries, 4);
     EXPECT_EQ(c.synth.activity_reference, "ref.csv");
     EXPECT_DOUBLE_EQ(c.synth.min_activity_agreement, 0.6);
@@ -114,6 +116,15 @@ TEST(ExperimentConfig, EveryKeyLandsInItsField) {
     EXPECT_DOUBLE_EQ(c.lacc.tau, 0.5);
 }
 
+// [synth] and synth's flags are one list (pipeline/synth_keys.hpp): the test above sets every key of it.
+TEST(ExperimentConfig, TheFullConfigSetsEverySharedSynthKey) {
+    SynthOptions o;
+    std::vector<std::string> keys;
+    visit_synth_keys(o, [&](auto k) { keys.push_back(k.key); });
+    EXPECT_GE(keys.size(), 18u);
+    for (const std::string& key : keys) EXPECT_TRUE(test::contains(kFull, "\n" + key + " = ")) << key;
+}
+
 TEST(ExperimentConfig, AbsentKeysKeepTheDefaults) {
     const ExperimentConfig c = read_experiment_config(write_config("minimal", kMinimal));
     const ExperimentConfig defaults;
@@ -149,8 +160,8 @@ TEST(ExperimentConfig, RefusesEachRuleNamingTheField) {
         {base + "[lacc]\nseed = -2\n", "lacc.seed"},
         {base + "[synth]\nsampler = \"euler\"\n", "synth.sampler"},  // closed choices
         {base + "[synth]\nsteps = 2.5\n", "synth.steps"},
-        {base + "[synth]\ncaption_anchor = 1.5\n", "synth.caption_anchor"},  // types
-        {base + "[har]\nrepeats = 0\n", "har"},                              // validated ranges
+        {base + "[synth]\ncaption_anchor = \"half\"\n", "synth.caption_anchor"},  // types
+        {base + "[har]\nrepeats = 0\n", "har"},                                   // validated ranges
         {base + "[har]\noverlap = 1.5\n", "har"},
         {base + "[[source]]\nname = \"mdm\"\nmodel = \"other\"\n", "source.name"},  // duplicate
         {"[[source]]\nname = \"my model\"\nmodel = \"m\"\n" + base.substr(base.find("[[real]]")), "source.name"},
@@ -206,6 +217,13 @@ TEST(ExperimentConfig, PlanMakesEveryRowsSynthesisAndRefusesABadRowBeforeAnyOutp
         EXPECT_TRUE(test::contains(m, synth_realism == "sisfal" ? "real set one" : "real set two")) << m;
         EXPECT_FALSE(fs::exists(dir + "/refused"));
     }
+    // A value out of range is checked where synth's flags are: by plan_synth.
+    const std::string anchor =
+        write_config("plan_anchor", "[synth]\ncaption_anchor = 1.5\n" + config("none", "none").substr(8));
+    const std::string m =
+        test::error_message([&] { plan_experiment(read_experiment_config(anchor), dir + "/refused"); });
+    EXPECT_TRUE(test::contains(m, anchor) && test::contains(m, "caption-anchor") && test::contains(m, "1.5")) << m;
+    EXPECT_FALSE(fs::exists(dir + "/refused"));
 }
 
 // The shipped configurations (this test was in test_experiment.cpp).

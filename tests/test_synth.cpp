@@ -446,6 +446,10 @@ TEST(Synth, CommandLineRunsAndRefusesABadShard) {
                       " --steps 3 --seconds 1 --bodies preset:male_tall --sensors umafall --no-filter --out " + out);
     ASSERT_EQ(ok.exit_code, 0) << ok.output;
     EXPECT_EQ(read_imu_dataset(out, true).size(), 8u);  // 2 jobs x 1 body x 4 UMAFall sensors
+    // The flags of pipeline/synth_keys.hpp reach the options: --no-filter turns the filter off.
+    const nlohmann::json settings = nlohmann::json::parse(read_file_text(out + "/synth.json"));
+    EXPECT_EQ(settings.at("filter"), false);
+    EXPECT_EQ(settings.at("source").at("steps"), 3) << settings.dump();
 }
 
 TEST(Synth, ActivityCheckKeepsTheBestDrawOrDropsMotionsThatShowAnotherActivity) {

@@ -5,6 +5,7 @@
 #include "core/error.hpp"
 #include "core/toml_section.hpp"
 #include "pipeline/experiment.hpp"
+#include "pipeline/synth_keys.hpp"
 
 namespace t2imu {
 
@@ -18,37 +19,32 @@ uint64_t read_seed(TomlSection& s, const char* key, uint64_t value, const std::s
     return static_cast<uint64_t>(v);
 }
 
+// Reads one shared setting (pipeline/synth_keys.hpp) of an experiment's [synth]; plan_synth checks the values.
+struct ReadSynthKey {
+    TomlSection& section;
+    const std::string& path;
+    template <class T>
+    void operator()(SynthKey<T> k) const {
+        section.read(k.key, k.field);
+    }
+    void operator()(SynthKey<uint64_t> k) const {
+        k.field = read_seed(section, k.key, k.field, path, std::string("synth.") + k.key);
+    }
+    void operator()(SynthKey<std::optional<double>> k) const {
+        if (!section.has(k.key)) return;  // absent: unset
+        double v = 0;
+        section.read(k.key, v);
+        k.field = v;
+    }
+    void operator()(SynthKey<Sampler> k) const {
+        std::string name = sampler_name(k.field);
+        section.read(k.key, name);
+        k.field = parse_sampler(name, path + ": synth." + k.key);
+    }
+};
+
 void read_synth(TomlSection s, SynthOptions& o, const std::string& path) {
-    s.read("samples_per_prompt", o.samples_per_prompt);
-    s.read("bodies", o.bodies);
-    s.read("realism", o.realism);
-    s.read("vocab", o.vocab);
-    std::string sampler = sampler_name(o.sampling.sampler);
-    s.read("sampler", sampler);
-    try {
-        o.sampling.sampler = parse_sampler(sampler, "synth.sampler");
-    } catch (const Error&) {
-        throw Error(path, "synth.sampler", "ddpm, ddim or dpmpp", sampler);
-    }
-    s.read("steps", o.sampling.steps);
-    s.read("guidance", o.sampling.guidance);
-    if (s.has("caption_anchor")) {  // absent: each model folder's own weight
-        double anchor = 0;
-        s.read("caption_anchor", anchor);
-        if (!(anchor >= 0 && anchor <= 1))
-            throw Error(path, "synth.caption_anchor", "a weight from 0 to 1", std::to_string(anchor));
-        o.sampling.caption_anchor = anchor;
-    }
-    s.read("batch", o.sampling.batch);
-    o.sampling.seed = read_seed(s, "seed", o.sampling.seed, path, "synth.seed");
-    s.read("seconds", o.seconds);
-    s.read("rate_hz", o.rate_hz);
-    s.read("capture_rate", o.capture_rate);
-    s.read("filter", o.filter);
-    s.read("max_retries", o.max_retries);
-    s.read("activity_reference", o.activity_reference);
-    s.read("min_activity_agreement", o.min_activity_agreement);
-    s.read("drop_activity_failures", o.drop_activity_failures);
+    visit_synth_keys(o, ReadSynthKey{s, path});
     s.refuse_unknown_keys();
 }
 
