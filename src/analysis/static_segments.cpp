@@ -62,7 +62,7 @@ void StaticNoiseOptions::validate() const {
 }
 
 nlohmann::json static_segment_noise(const std::vector<ImuRecording>& recordings, const StaticNoiseOptions& options,
-                                    const SensorNoiseModel& device) {
+                                    const SensorNoiseModel& sensor) {
     options.validate();
     const std::string& position = options.position;
     if (!position.empty()) check_position_held(recordings, position, "--position");
@@ -102,12 +102,12 @@ nlohmann::json static_segment_noise(const std::vector<ImuRecording>& recordings,
                           {"window_s", window_s},
                           {"measured", measured},
                           {"per_recording", per}};
-    if (device.enabled())
-        out["device"] = {{"model", device.name},
-                         {"acc_sd", device.acc_noise_density * std::sqrt(rate / 2)},
-                         {"gyr_sd", device.gyr_noise_density * std::sqrt(rate / 2)},
-                         {"gyr_offset_sd", device.gyr_bias_sd},
-                         {"acc_offset_sd", device.acc_bias_sd}};
+    if (sensor.enabled())
+        out["sensor_model"] = {{"model", sensor.name},
+                               {"acc_sd", sensor.acc_noise_density * std::sqrt(rate / 2)},
+                               {"gyr_sd", sensor.gyr_noise_density * std::sqrt(rate / 2)},
+                               {"gyr_offset_sd", sensor.gyr_bias_sd},
+                               {"acc_offset_sd", sensor.acc_bias_sd}};
     return out;
 }
 

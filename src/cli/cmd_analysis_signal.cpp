@@ -1,5 +1,5 @@
 // t2imu analysis signal-stats | static-noise: per-activity accelerometer statistics of IMU data sets, and the
-// device errors measured in the quietest window of each real recording.
+// sensor errors measured in the quietest window of each real recording.
 #include <cstdio>
 
 #include "analysis/signal_statistics.hpp"
@@ -45,8 +45,8 @@ static void add_signal_stats(CLI::App& analysis) {
 
 static void add_static_noise(CLI::App& analysis) {
     auto* cmd = analysis.add_subcommand("static-noise",
-                                        "device errors from the quietest window of each real recording (noise, gyro "
-                                        "offset, |g| error), beside a device model's (JSON)");
+                                        "sensor errors from the quietest window of each real recording (noise, gyro "
+                                        "offset, |g| error), beside a sensor model's (JSON)");
     auto& real = option_values<std::string>();
     auto& sensor = option_values<std::string>("none");
     auto& out = option_values<std::string>();
@@ -59,13 +59,13 @@ static void add_static_noise(CLI::App& analysis) {
                         dataset_profile_names() + ", smartphone)");
     cmd->add_option("--out", out, "RESULT.json")->required();
     cmd->callback([&sensor, &o, &out, &real] {
-        SensorNoiseModel device;
+        SensorNoiseModel model;
         check_usage([&] {
             o.validate();
-            device = parse_noise_model(sensor, "--sensor");
+            model = parse_noise_model(sensor, "--sensor");
             check_output(out, "--out", OutputKind::file, {real});
         });
-        const nlohmann::json r = static_segment_noise(read_imu_dataset(real), o, device);
+        const nlohmann::json r = static_segment_noise(read_imu_dataset(real), o, model);
         write_file_atomic(out, r.dump(2) + "\n");
         const nlohmann::json& m = r["measured"];
         std::printf(
@@ -76,12 +76,12 @@ static void add_static_noise(CLI::App& analysis) {
             m["gyr_sd_x"].get<double>(), m["gyr_sd_y"].get<double>(), m["gyr_sd_z"].get<double>(),
             m["gyr_offset_sd_x"].get<double>(), m["gyr_offset_sd_y"].get<double>(), m["gyr_offset_sd_z"].get<double>(),
             m["acc_norm_error_abs"].get<double>());
-        if (r.contains("device"))
+        if (r.contains("sensor_model"))
             std::printf(
                 "  %s predicts: acc sd %.4f m/s^2, gyr sd %.4f rad/s, gyr offset sd %.4f rad/s, acc offset sd %.3f "
                 "m/s^2\n",
-                sensor.c_str(), r["device"]["acc_sd"].get<double>(), r["device"]["gyr_sd"].get<double>(),
-                r["device"]["gyr_offset_sd"].get<double>(), r["device"]["acc_offset_sd"].get<double>());
+                sensor.c_str(), r["sensor_model"]["acc_sd"].get<double>(), r["sensor_model"]["gyr_sd"].get<double>(),
+                r["sensor_model"]["gyr_offset_sd"].get<double>(), r["sensor_model"]["acc_offset_sd"].get<double>());
     });
 }
 
