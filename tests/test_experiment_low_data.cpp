@@ -25,11 +25,12 @@ ExperimentConfig read_with(const std::string& low_data) {
 }  // namespace
 
 TEST(ExperimentLowData, EveryKeyLandsInItsField) {
-    const ExperimentLowData l = read_with(
-                                    "train_subjects = [\"0\", \"2\", \"all\"]\nall_test_subjects = 3\ndraws = "
-                                    "7\nprotocols = [\"finetune\"]\nsynthetic_share = 0.25\n"
-                                    "finetune_epochs = 0\nfinetune_learning_rate = 0.001\n")
-                                    .low_data;
+    const ExperimentLowData l =
+        read_with(
+            "train_subjects = [\"0\", \"2\", \"all\"]\nall_test_subjects = 3\ndraws = "
+            "7\nprotocols = [\"finetune\"]\nsynthetic_share = 0.25\n"
+            "finetune_epochs = 0\nfinetune_learning_rate = 0.001\nfinetune_synthetic_share = 0.3\n")
+            .low_data;
     EXPECT_EQ(l.train_subjects, (std::vector<int>{0, 2, ExperimentLowData::kAllSubjects}));
     EXPECT_EQ(l.all_test_subjects, 3);
     EXPECT_EQ(l.draws, 7);
@@ -37,6 +38,7 @@ TEST(ExperimentLowData, EveryKeyLandsInItsField) {
     EXPECT_EQ(l.synthetic_share, 0.25);
     EXPECT_EQ(l.finetune_epochs, 0);
     EXPECT_EQ(l.finetune_learning_rate, 0.001);
+    EXPECT_EQ(l.finetune_synthetic_share, 0.3);
     // Absent: no curve, and the defaults.
     const ExperimentLowData none = read_with("").low_data;
     EXPECT_TRUE(none.train_subjects.empty());
@@ -54,6 +56,7 @@ TEST(ExperimentLowData, RefusesEachRuleNamingTheField) {
              {"synthetic_share = 1\n", "low_data.synthetic_share"},
              {"finetune_epochs = -1\n", "low_data.finetune_epochs"},
              {"finetune_learning_rate = 0\n", "low_data.finetune_learning_rate"},
+             {"finetune_synthetic_share = -0.1\n", "low_data.finetune_synthetic_share"},
              {"shares = 0.5\n", "low_data.shares"}}) {
         const std::string e = test::error_message([&] { read_with(text); });
         EXPECT_TRUE(test::contains(e, field)) << text << ": " << e;

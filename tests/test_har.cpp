@@ -270,6 +270,18 @@ TEST(HarTraining, FinetuneWithZeroEpochsIsPlainTrainingOnTheSyntheticSet) {
     const HarResult more = train_on_sets({{&syn, "syn"}, {&real, "real"}}, real, o, m);
     EXPECT_GT(more.runs[0].epochs, 0);
     EXPECT_EQ(more.runs[0].train_subjects, drawn);
+    // With shares the fine-tuning goes on with the synthetic set beside the drawn subjects: the same draw, the shares
+    // recorded, and a checkpoint of fine-tuning on the drawn subjects alone is not resumed as one of it.
+    m.shares = {0.5, 0.5};
+    HarCheckpoint alone{more, nullptr};
+    EXPECT_TRUE(test::contains(test::error_message([&] {
+                                   train_on_sets({{&syn, "syn"}, {&real, "real"}}, real, o, m, nullptr, &alone);
+                               }),
+                               "checkpoint"));
+    const HarResult both = train_on_sets({{&syn, "syn"}, {&real, "real"}}, real, o, m);
+    EXPECT_EQ(both.shares, m.shares);
+    EXPECT_EQ(both.runs[0].train_subjects, drawn);
+    EXPECT_GT(both.runs[0].epochs, 0);
 }
 
 // A series stopped after its first run and resumed from what it saved (read back from disk) is the uninterrupted

@@ -211,7 +211,8 @@ static CommandRegistrar registrar([](CLI::App& root) {
                     "draw this many subjects of the --train set that is also --test (seeded by --seed and the repeat); "
                     "the others are tested");
     cmd->add_option("--train-share", a.train_share,
-                    "share of each batch per --train, comma-separated in --train order (default: by windows)");
+                    "share of each batch per --train, comma-separated in --train order (default: by windows); with "
+                    "finetune, of each fine-tuning batch (default: the drawn subjects alone)");
     cmd->add_option("--protocol", a.protocol,
                     "several sets: mix (one training on all) or finetune (train on the others, then fine-tune on the "
                     "drawn subjects)");

@@ -26,8 +26,8 @@ struct HarResult {
     std::vector<HarRun> runs;
     std::vector<std::string> run_names;          // "seed 3", "draw 2" or the held-out subject
     size_t train_windows = 0, test_windows = 0;  // per run; summed over runs where each run has its own split
-    // Several training sets: their names (dataset folders) in order, each one's share of a batch (empty: in
-    // proportion to their windows), and the protocol ("mix" or "finetune"; "" for one set).
+    // Several training sets: their names (dataset folders) in order, each one's share of a batch (SeveralSetsOptions),
+    // and the protocol ("mix" or "finetune"; "" for one set).
     std::vector<std::string> training_sets;
     std::vector<double> shares;
     std::string protocol;

@@ -73,6 +73,7 @@ struct ExperimentLowData {
     double synthetic_share = 0.5;  // mix: the synthetic set's share of each batch (0: in proportion to windows)
     int finetune_epochs = 20;
     double finetune_learning_rate = 3e-4;
+    double finetune_synthetic_share = 0;  // finetune: the synthetic set's share of each fine-tuning batch (0: none)
 };
 
 struct ExperimentConfig {

@@ -37,12 +37,16 @@ ExperimentLowData read_experiment_low_data(TomlSection s, const std::string& pat
     s.read("synthetic_share", l.synthetic_share);
     s.read("finetune_epochs", l.finetune_epochs);
     s.read("finetune_learning_rate", l.finetune_learning_rate);
+    s.read("finetune_synthetic_share", l.finetune_synthetic_share);
     s.refuse_unknown_keys();
     if (l.all_test_subjects < 1)
         throw Error(path, "low_data.all_test_subjects", "at least 1 subject", std::to_string(l.all_test_subjects));
     if (l.draws < 1) throw Error(path, "low_data.draws", "at least 1 draw", std::to_string(l.draws));
     if (!(l.synthetic_share >= 0 && l.synthetic_share < 1))
         throw Error(path, "low_data.synthetic_share", "0 (by windows) to below 1", std::to_string(l.synthetic_share));
+    if (!(l.finetune_synthetic_share >= 0 && l.finetune_synthetic_share < 1))
+        throw Error(path, "low_data.finetune_synthetic_share", "0 (the drawn subjects alone) to below 1",
+                    std::to_string(l.finetune_synthetic_share));
     if (l.finetune_epochs < 0)
         throw Error(path, "low_data.finetune_epochs", "0 or more epochs", std::to_string(l.finetune_epochs));
     if (!(l.finetune_learning_rate > 0 && l.finetune_learning_rate < 1))
@@ -136,8 +140,9 @@ private:
         m.protocol = protocol;
         m.test_set = test_set;
         m.train_subjects = n;
-        if (protocol == HarProtocol::mix && test_set == 1 && c_.low_data.synthetic_share > 0)
-            m.shares = {c_.low_data.synthetic_share, 1 - c_.low_data.synthetic_share};
+        const double share =
+            protocol == HarProtocol::mix ? c_.low_data.synthetic_share : c_.low_data.finetune_synthetic_share;
+        if (test_set == 1 && share > 0) m.shares = {share, 1 - share};
         m.finetune_epochs = c_.low_data.finetune_epochs;
         m.finetune_learning_rate = c_.low_data.finetune_learning_rate;
         return m;

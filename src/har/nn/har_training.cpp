@@ -388,7 +388,6 @@ void SeveralSetsOptions::validate(size_t sets, int batch) const {
             throw Error(
                 "--protocol", "finetune",
                 "a set to pretrain on and a --train that is also --test, with --train-subjects to fine-tune on");
-        if (!shares.empty()) throw Error("--train-share", "finetune", "--protocol mix (fine-tuning trains on one set)");
     }
     validate_values();
 }
@@ -536,11 +535,12 @@ HarResult train_on_sets(const std::vector<TrainingSet>& train, const WindowSet& 
     if (checkpoint && !checkpoint->done.runs.empty()) {
         const HarResult& done = checkpoint->done;
         bool same = done.classes == r.classes && done.training_sets == r.training_sets && done.protocol == r.protocol &&
-                    done.runs.size() <= static_cast<size_t>(o.repeats);
+                    done.shares == r.shares && done.runs.size() <= static_cast<size_t>(o.repeats);
         for (size_t k = 0; same && k < done.runs.size(); ++k) same = done.runs[k].train_subjects == draws[k];
         if (!same)
-            throw Error("har", "checkpoint",
-                        "runs of these sets, classes, protocol and draws of subjects, at most --repeats of them");
+            throw Error(
+                "har", "checkpoint",
+                "runs of these sets, classes, protocol, shares and draws of subjects, at most --repeats of them");
         r.runs = done.runs, r.run_names = done.run_names;
         r.train_windows = done.train_windows, r.test_windows = done.test_windows;
         first = static_cast<int>(done.runs.size());
@@ -578,9 +578,11 @@ HarResult train_on_sets(const std::vector<TrainingSet>& train, const WindowSet& 
                 const auto to = net.model->parameters(), from = pretrained->model->parameters();
                 for (size_t i = 0; i < to.size(); ++i) to[i].copy_(from[i]);
             }
+            // With shares the fine-tuning keeps training on the other sets too, each at its share of a batch.
             if (m.finetune_epochs > 0 && !real_fit.index.empty())
-                train_stage(net.model, net.norm, real_fit, real_val, classes, o,
-                            {m.finetune_learning_rate, m.finetune_epochs, {}, true}, seed, &net.run);
+                train_stage(net.model, net.norm, m.shares.empty() ? real_fit : joined_windows(others, real_fit),
+                            real_val, classes, o, {m.finetune_learning_rate, m.finetune_epochs, m.shares, true}, seed,
+                            &net.run);
         } else if (!real.index.empty()) {
             net = train_from_scratch(joined_windows(others, real_fit), &real_val, classes, o, m.shares, seed);
         } else {

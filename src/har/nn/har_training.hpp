@@ -55,9 +55,11 @@ struct TrainingSet {
 
 struct SeveralSetsOptions {
     HarProtocol protocol = HarProtocol::mix;
-    std::vector<double> shares;  // of each batch, one per training set (empty: in proportion to their windows)
-    int test_set = -1;           // the training set that is also the test set (its subjects are drawn); -1: none
-    int train_subjects = 0;      // with test_set: subjects drawn from it for each repeat (seed --seed, the repeat)
+    // Of each batch, one per training set. mix: empty = in proportion to their windows; finetune: of each fine-tuning
+    // batch (the other sets keep a share while the drawn subjects are learnt), empty = the drawn subjects alone.
+    std::vector<double> shares;
+    int test_set = -1;       // the training set that is also the test set (its subjects are drawn); -1: none
+    int train_subjects = 0;  // with test_set: subjects drawn from it for each repeat (seed --seed, the repeat)
     int finetune_epochs = 20;
     double finetune_learning_rate = 3e-4;
 
