@@ -58,7 +58,8 @@ TEST(StaticSegments, SummaryOverRecordingsAndTheDevicePrediction) {
     EXPECT_EQ(all["recordings"], 4);
     EXPECT_NEAR(all["measured"]["gyr_offset_sd_x"].get<double>(), std::sqrt(5.0) * 0.01, 0.002);
     EXPECT_NEAR(all["measured"]["acc_sd_y"].get<double>(), 0.02, 0.004);
-    EXPECT_NEAR(all["sensor_model"]["acc_sd"].get<double>(), sisfall.acc_noise_density * 5.0, 1e-12);  // sqrt(50 / 2) = 5
+    EXPECT_NEAR(all["sensor_model"]["acc_sd"].get<double>(), sisfall.acc_noise_density * 5.0,
+                1e-12);  // sqrt(50 / 2) = 5
     EXPECT_EQ(static_segment_noise(recordings, {"waist", 2.0}, parse_noise_model("none"))["recordings"], 3);
     EXPECT_FALSE(static_segment_noise(recordings, {"waist", 2.0}, parse_noise_model("none")).contains("sensor_model"));
     EXPECT_THROW(static_segment_noise(recordings, {"ankle", 2.0}, sisfall), Error);
