@@ -15,6 +15,8 @@
 #include "core/npy.hpp"
 #include "diffusion/trainer.hpp"
 #include "imu/imu_dataset.hpp"
+#include "imu/realism.hpp"
+#include "imu/sensor_noise.hpp"
 #include "motion/joint_sequence.hpp"
 #include "motion/motion_activity.hpp"
 #include "pipeline/synth.hpp"
@@ -277,7 +279,11 @@ TEST(Synth, RecordsTheRealismModelAndEachRecordingsDraws) {
     o.samples_per_prompt = 1;
     o.filter = false;  // every motion kept, so every job has recordings
     o.realism = "sisfall";
+    const int64_t realism_parses = realism_parse_count(), sensor_parses = noise_model_parse_count();
     const nlohmann::json report = synth_report_json(run_synth(plan_synth(o)));
+    // The realism spelling and its sensor model's are parsed once for the whole job (2 jobs x 2 bodies x 3 sensors).
+    EXPECT_EQ(realism_parse_count() - realism_parses, 1);
+    EXPECT_EQ(noise_model_parse_count() - sensor_parses, 1);
     EXPECT_EQ(report["realism"]["name"], "sisfall");
     EXPECT_EQ(report["realism"]["tilt_deg"], 7.5);
     size_t recordings = 0;

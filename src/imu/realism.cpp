@@ -1,5 +1,6 @@
 #include "imu/realism.hpp"
 
+#include <atomic>
 #include <cmath>
 #include <random>
 #include <sstream>
@@ -10,7 +11,6 @@
 #include "core/parse.hpp"
 #include "core/toml_section.hpp"
 #include "imu/dataset_profile.hpp"
-#include "imu/sensor_noise.hpp"
 
 namespace t2imu {
 
@@ -131,7 +131,7 @@ const std::vector<RealismLever> kLevers = {
      {{"sensor", "", 0, 0, false, false, 0, 0, nullptr, [](RealismModel& m) -> std::string& { return m.sensor; },
        "sisfall"}},
      [](const RealismModel& m) { return m.sensor != "none"; },
-     [](const RealismModel& m, const std::string& source) { parse_noise_model(m.sensor, source + ": sensor"); }},
+     nullptr},
     {"rate",
      RealismStage::sensor,
      "the sensor samples at its own rate (what lies above its Nyquist frequency folds in), then resampled",
@@ -348,7 +348,14 @@ RealismModel parse_realism_toml(const std::string& text, const std::string& sour
     return m;
 }
 
+namespace {
+std::atomic<int64_t> realism_parses{0};
+}  // namespace
+
+int64_t realism_parse_count() { return realism_parses.load(); }
+
 RealismModel parse_realism(const std::string& text) {
+    ++realism_parses;
     if (text.size() > 5 && ends_with(text, ".toml")) return parse_realism_toml(read_file_text(text), text);
     // +sensor=MODEL comes last: a sensor model's overrides may hold signs ("bias_g=-0.01").
     const size_t sensor_at = text.find(kSensorAssignment);

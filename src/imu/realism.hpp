@@ -61,7 +61,8 @@ struct RealismModel {
     std::string sensor = "none";       // the sensor model (sensor_noise.hpp): "none", a preset, overrides
     double sensor_sample_rate_hz = 0;  // the sensor's own sample rate; 0 = sampled at the output rate (device_rate.hpp)
 
-    // Throws Error naming `source` and the key for a value out of range.
+    // Throws Error naming `source` and the key for a value out of range. The sensor model's spelling is parsed, and
+    // checked, where the model is used (VirtualImuOptions::set_realism), once.
     void validate(const std::string& source) const;
     nlohmann::json to_json() const;
 };
@@ -107,6 +108,8 @@ RealismModel parse_realism_toml(const std::string& text, const std::string& sour
 // PRESET, PRESET+LEVER-LEVER, either followed by +sensor=MODEL (sensor_noise.hpp's spelling: the sensor key set to
 // it; last, as its overrides may hold signs), or a .toml file's path (errors name --realism or the file).
 RealismModel parse_realism(const std::string& text);
+// How many times parse_realism has run in this process: tests check that a job parses its spelling once.
+int64_t realism_parse_count();
 // A model's JSON record (to_json) with the keys a record made before a lever was added, renamed or retired would
 // lack or hold: added keys read as their lever off, renamed keys read under today's name (device -> sensor,
 // device_rate_hz -> sensor_rate_hz), a retired lever's keys are dropped when they record it off (a record of a

@@ -1,6 +1,7 @@
 #include "imu/sensor_noise.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -117,7 +118,14 @@ void corrupt(std::vector<Vector3d>& x, const AxisErrors& e, double density, doub
 
 }  // namespace
 
+namespace {
+std::atomic<int64_t> noise_model_parses{0};
+}  // namespace
+
+int64_t noise_model_parse_count() { return noise_model_parses.load(); }
+
 SensorNoiseModel parse_noise_model(const std::string& text, const std::string& option) {
+    ++noise_model_parses;
     const NamedOverrides spelled = parse_named_overrides(text, option);
     SensorNoiseModel m = preset(spelled.name, option);
     for (const auto& [key, value] : spelled.overrides) {

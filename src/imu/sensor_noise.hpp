@@ -42,6 +42,8 @@ SensorNoiseModel smartphone_sensor();
 // (keys as the fields, with acc_range_g and gyr_range_dps in g and deg/s). `option` names the text's origin in
 // errors: "--sensor", or a realism model's key ("r.toml: sensor").
 SensorNoiseModel parse_noise_model(const std::string& text, const std::string& option = "sensor");
+// How many times parse_noise_model has run in this process: tests check that a job parses its spelling once.
+int64_t noise_model_parse_count();
 
 // Applies the model in place. Deterministic in `seed`.
 void apply_sensor_noise(const SensorNoiseModel& model, uint64_t seed, ImuSignals* signals);
