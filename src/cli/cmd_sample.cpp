@@ -15,6 +15,7 @@
 #include "diffusion/text_to_motion.hpp"
 #include "motion/activity_names.hpp"
 #include "motion/humanml3d.hpp"
+#include "motion/velocity_fusion.hpp"
 #include "text/prompt_coverage.hpp"
 #include "text/prompt_set.hpp"
 
@@ -64,6 +65,7 @@ void run(SampleArgs a) {
                              {"guidance", a.options.guidance},
                              {"eta", a.options.eta},
                              {"caption_anchor", anchor_weight},
+                             {"height_crossover_hz", a.options.height_crossover_hz},
                              {"frames", a.options.frames},
                              {"fps", 20},
                              {"seed", a.options.seed},
@@ -86,7 +88,8 @@ void run(SampleArgs a) {
     for (size_t i = 0; i < motions.size(); ++i) {
         std::snprintf(name, sizeof name, "%04zu", i);
         write_npy(a.out + "/" + name + "_features.npy", feature_matrix_to_array(motions[i]));
-        write_npy(a.out + "/" + name + "_joints.npy", joint_sequence_to_array(recover_from_ric(motions[i])));
+        write_npy(a.out + "/" + name + "_joints.npy",
+                  joint_sequence_to_array(joints_from_features(motions[i], a.options.height_crossover_hz)));
     }
     write_file_atomic(a.out + "/samples.json", samples_json);
     std::printf("%s: %zu motions of %d frames (%s, guidance %g) in %.2f s on %s (%.2f motions/s)\n", a.out.c_str(),
@@ -143,6 +146,9 @@ static CommandRegistrar registrar([](CLI::App& root) {
         "--caption-anchor", [&a](double w) { a.options.caption_anchor = w; },
         "weight 0..1 of the training captions nearest the prompt in its text feature (default: the model folder's; 0 = "
         "the prompt alone)");
+    cmd->add_option("--height-crossover", a.options.height_crossover_hz,
+                    "the joints' heights from the features' positions below this frequency and their velocities above "
+                    "it, Hz (0 = the positions alone)");
     cmd->add_option("--eta", a.options.eta, "ddim noise (0 = deterministic)");
     cmd->add_option("--seed", a.options.seed, "seed of sample 0; sample i uses seed + i");
     cmd->add_flag("--require-coverage", a.require_coverage,

@@ -50,6 +50,9 @@ struct SampleOptions {
     // canonical activity per prompt ("" = unknown) that chooses the captions the prompt is anchored to.
     std::optional<double> caption_anchor;
     std::vector<std::string> activities;
+    // The joints' heights from the features' positions below this frequency and their velocities above it
+    // (motion/velocity_fusion.hpp), Hz; 0 = the positions alone (recover_from_ric).
+    double height_crossover_hz = 0;
 
     // Throws Error naming the option (--frames, --steps, --guidance, --strength...) for a value out of range or not
     // finite.

@@ -20,6 +20,7 @@
 #include "motion/humanml3d.hpp"
 #include "motion/motion_activity.hpp"
 #include "motion/resample.hpp"
+#include "motion/velocity_fusion.hpp"
 #include "text/sentence_similarity.hpp"
 
 namespace t2imu {
@@ -54,20 +55,25 @@ public:
         o.start_motions = std::move(starts);
         o.strength = strength;
         std::vector<JointSequence> out;
-        for (const FeatureMatrix& f : sample_motions(*model_, prompts, o)) out.push_back(recover_from_ric(f));
+        for (const FeatureMatrix& f : sample_motions(*model_, prompts, o))
+            out.push_back(joints_from_features(f, o.height_crossover_hz));
         return out;
     }
 
     nlohmann::json describe() const override {
-        return {{"kind", "diffusion"},
-                {"model", dir_},
-                {"training_step", model_->meta.value("training", nlohmann::json::object()).value("step", 0)},
-                {"sampler", sampler_name(sampling_.sampler)},
-                {"steps", denoiser_calls(sampling_.sampler, sampling_.steps, model_->schedule.steps)},
-                {"guidance", sampling_.guidance},
-                {"eta", sampling_.eta},
-                {"caption_anchor", model_->caption_anchor_weight(sampling_.caption_anchor)},
-                {"caption_anchor_neighbours", model_->anchor.neighbours}};
+        nlohmann::json d = {
+            {"kind", "diffusion"},
+            {"model", dir_},
+            {"training_step", model_->meta.value("training", nlohmann::json::object()).value("step", 0)},
+            {"sampler", sampler_name(sampling_.sampler)},
+            {"steps", denoiser_calls(sampling_.sampler, sampling_.steps, model_->schedule.steps)},
+            {"guidance", sampling_.guidance},
+            {"eta", sampling_.eta},
+            {"caption_anchor", model_->caption_anchor_weight(sampling_.caption_anchor)},
+            {"caption_anchor_neighbours", model_->anchor.neighbours}};
+        // Absent when off, so folders made before it resume.
+        if (sampling_.height_crossover_hz > 0) d["height_crossover_hz"] = sampling_.height_crossover_hz;
+        return d;
     }
 
     const CaptionIndex* caption_index() const override { return model_->anchor.index.get(); }

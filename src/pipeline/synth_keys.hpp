@@ -37,6 +37,10 @@ void visit_synth_keys(SynthOptions& o, Visit&& visit) {
                                           "weight 0..1 of the training captions nearest the prompt in its text "
                                           "feature (default: the model folder's; 0 = the prompt alone)",
                                           s.caption_anchor});
+    visit(SynthKey<double>{"height_crossover_hz", "--height-crossover",
+                           "a model's joint heights from its features' positions below this frequency and their "
+                           "velocities above it, Hz (0 = the positions alone)",
+                           s.height_crossover_hz});
     visit(SynthKey<double>{"seconds", "--seconds", "motion length, s (at most 9.8)", o.seconds});
     visit(SynthKey<uint64_t>{"seed", "--seed", "seed of job 0; job k draws from seed + k", s.seed});
     visit(SynthKey<int>{"batch", "--batch",
