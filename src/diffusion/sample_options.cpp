@@ -51,7 +51,9 @@ void SampleOptions::validate() const {
     if (caption_anchor && !(*caption_anchor >= 0 && *caption_anchor <= 1))
         throw Error("sampling", "--caption-anchor", "a weight from 0 to 1", std::to_string(*caption_anchor));
     if (!(height_crossover_hz == 0 || (height_crossover_hz > 0 && height_crossover_hz < kSampleFps / 2)))
-        throw Error("sampling", "--height-crossover", "0 (off) or above 0 and below 10 Hz",
+        throw Error("sampling", "--height-crossover",
+                    "0 (off) or above 0 and below " + std::to_string(static_cast<int>(kSampleFps / 2)) +
+                        " Hz (half the frame rate)",
                     std::to_string(height_crossover_hz));
     for (const FeatureMatrix& m : start_motions)
         if (m.rows() != frames || m.cols() != 263)

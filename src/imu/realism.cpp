@@ -306,6 +306,8 @@ std::string preset_names_text() {
     return names;
 }
 
+std::atomic<int64_t> realism_parses{0};  // realism_parse_count()
+
 }  // namespace
 
 std::vector<std::string> realism_preset_names() {
@@ -347,10 +349,6 @@ RealismModel parse_realism_toml(const std::string& text, const std::string& sour
     m.validate(source);
     return m;
 }
-
-namespace {
-std::atomic<int64_t> realism_parses{0};
-}  // namespace
 
 int64_t realism_parse_count() { return realism_parses.load(); }
 

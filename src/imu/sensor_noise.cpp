@@ -116,10 +116,8 @@ void corrupt(std::vector<Vector3d>& x, const AxisErrors& e, double density, doub
     }
 }
 
-}  // namespace
+std::atomic<int64_t> noise_model_parses{0};  // noise_model_parse_count()
 
-namespace {
-std::atomic<int64_t> noise_model_parses{0};
 }  // namespace
 
 int64_t noise_model_parse_count() { return noise_model_parses.load(); }
