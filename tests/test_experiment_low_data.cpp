@@ -68,6 +68,9 @@ TEST(ExperimentLowData, ShippedConfigReads) {
     EXPECT_EQ(c.low_data.train_subjects, (std::vector<int>{0, 1, 2, 4, 8, ExperimentLowData::kAllSubjects}));
     EXPECT_GE(c.low_data.draws, 5);  // the bar: at least 5 draws per K
     EXPECT_EQ(c.real_sets.size(), 2u);
+    ASSERT_EQ(c.sources.size(), 2u);  // the item 4: the curve for the learned model and for retrieval
+    EXPECT_EQ(c.sources[0].model, "models/default");
+    EXPECT_EQ(c.sources[1].model, "retrieval:cache/dataset");
 }
 
 TEST(ExperimentLowData, TableHasEveryArmAndTheGain) {
