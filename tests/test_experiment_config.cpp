@@ -29,7 +29,8 @@ const char* kFull =
     "[synth]\nsamples_per_prompt = 3\nbodies = \"preset:male_tall\"\nrealism = \"sisfall\"\n"
     "vocab = \"v.txt\"\nsampler = \"ddim\"\nsteps = 25\nguidance = 2.5\ncaption_anchor = 0.5\nbatch = 8\nseed = "
     "42\nseconds = 4.5\nrate_hz = 64\n"
-    "filter = false\ncapture_rate = false\nheight_crossover_hz = 1.5\nmax_retries = 4\nactivity_reference = "
+    "filter = false\ncapture_rate = false\nheight_crossover_hz = 1.5\nstairs_round_trips = true\nmax_retries = "
+    "4\nactivity_reference = "
     "\"ref.csv\"\nmin_activity_agreement = "
     "0.6\ndrop_activity_failures = true\n"
     "[[source]]\nname = \"mdm\"\nmodel = \"models/default\"\n"
@@ -80,6 +81,7 @@ TEST(ExperimentConfig, EveryKeyLandsInItsField) {
     EXPECT_FALSE(c.synth.filter);
     EXPECT_FALSE(c.synth.capture_rate);
     EXPECT_DOUBLE_EQ(c.synth.sampling.height_crossover_hz, 1.5);
+    EXPECT_TRUE(c.synth.sampling.stairs_round_trips);
     EXPECT_EQ(c.synth.max_retries, 4);
     EXPECT_EQ(c.synth.activity_reference, "ref.csv");
     EXPECT_DOUBLE_EQ(c.synth.min_activity_agreement, 0.6);

@@ -88,6 +88,62 @@ TEST(GaitSplice, UpAFlightAndDownTheNextRisesThenFallsByTheFlights) {
         1.1 * std::max(largest_step(a.motion, 0, a.motion.num_frames), largest_step(b.motion, 0, b.motion.num_frames)));
 }
 
+TEST(GaitSplice, ARoundTripCutToLengthKeepsTheJoinAtItsMiddle) {
+    const JointSequence walk = procedural_walk(8.0);
+    StairOptions up = default_stair_options(true), down = default_stair_options(false);
+    up.rise_m = down.rise_m = 0.17;
+    const StairMotion a = derive_stairs(walk, up), b = derive_stairs(walk, down);
+    const GaitSplice whole = splice_at_stance(a.motion, b.motion, GaitSpliceOptions{});
+    const int frames = 120;  // 6 s at 20 fps, well inside the join's length
+    ASSERT_GT(whole.splice_frame - frames / 2, 0);
+    ASSERT_GT(whole.motion.num_frames - whole.splice_frame, frames / 2);
+    const GaitSplice cut = splice_to_length(a.motion, b.motion, frames, GaitSpliceOptions{});
+    ASSERT_EQ(cut.motion.num_frames, frames);
+    EXPECT_EQ(cut.splice_frame, frames / 2);
+    // The window is the join's frames around the splice, untouched.
+    const int begin = whole.splice_frame - frames / 2;
+    for (int f = 0; f < frames; ++f)
+        EXPECT_LT((cut.motion.at(f, pelvis) - whole.motion.at(begin + f, pelvis)).norm(), 1e-12) << f;
+    // Asked for more than the join holds, it keeps as much of the shorter side as there is.
+    const int longer = whole.motion.num_frames - 2;
+    const GaitSplice most = splice_to_length(a.motion, b.motion, longer, GaitSpliceOptions{});
+    EXPECT_EQ(most.motion.num_frames, longer);
+    EXPECT_LT((most.motion.at(most.splice_frame, pelvis) - whole.motion.at(whole.splice_frame, pelvis)).norm(), 1e-12);
+    try {
+        splice_to_length(a.motion, b.motion, whole.motion.num_frames + 1, GaitSpliceOptions{});
+        FAIL() << "a window longer than the join was accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("frames"), std::string::npos) << e.what();
+    }
+}
+
+// A whole body flickering up and down at 5 Hz (2 cm for two frames, -2 cm for two: a sampled motion's flicker) moves
+// every planted foot at up to 0.57 m/s vertically: no stance to join at, unless the stances are looked for on the
+// smoothed joints (a Gaussian of one frame keeps 0.29 of a 5 Hz sine).
+TEST(GaitSplice, StancesUnderAFrameToFrameFlickerAreFoundOnTheSmoothedJoints) {
+    const JointSequence walk = procedural_walk(8.0);
+    StairOptions up = default_stair_options(true), down = default_stair_options(false);
+    up.rise_m = down.rise_m = 0.17;
+    JointSequence a = derive_stairs(walk, up).motion, b = derive_stairs(walk, down).motion;
+    for (JointSequence* m : {&a, &b})
+        for (int f = 0; f < m->num_frames; ++f)
+            for (int j = 0; j < m->num_joints; ++j) m->at(f, j).y() += (f / 2) % 2 ? 0.02 : -0.02;
+    EXPECT_THROW(splice_at_stance(a, b, GaitSpliceOptions{}), Error);
+    GaitSpliceOptions smoothed;
+    smoothed.contact_smoothing_s = 0.05;
+    const GaitSplice s = splice_at_stance(a, b, smoothed);
+    // Joined unsmoothed: the frames before the blend are `a`'s own, flicker and all.
+    for (int f = 0; f < s.splice_frame - frames_of(smoothed.blend_s / 2, a.fps); ++f)
+        EXPECT_LT((s.motion.at(f, pelvis) - a.at(f, pelvis)).norm(), 1e-6) << f;
+    smoothed.contact_smoothing_s = 0.2;
+    try {
+        splice_at_stance(a, b, smoothed);
+        FAIL() << "a smoothing of 0.2 s was accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("contact_smoothing_s"), std::string::npos) << e.what();
+    }
+}
+
 TEST(GaitSplice, RefusesBadOptionsAndMotionsWithoutAStanceNamingTheField) {
     const JointSequence walk = procedural_walk(4.0);
     try {

@@ -23,7 +23,8 @@ int denoiser_calls(Sampler sampler, int steps, int schedule_steps);
 constexpr double kMaxGuidance = 100;  // classifier-free guidance scales accepted: [0, kMaxGuidance]
 // Throws Error naming `option` unless 0 <= scale <= kMaxGuidance (NaN refused).
 void check_guidance_scale(double scale, const std::string& option);
-constexpr double kSampleFps = 20;  // HumanML3D's frame rate: every sampled motion is at 20 fps
+constexpr double kSampleFps = 20;      // HumanML3D's frame rate: every sampled motion is at 20 fps
+constexpr int kMaxSampleFrames = 196;  // HumanML3D's longest clip (9.8 s): the longest motion a model samples
 
 // A length in seconds as sampled frames (round(seconds * 20)); throws Error naming `option` unless the length is
 // finite and gives 4 to 196 frames (0.2 to 9.8 s), the lengths SampleOptions accepts.
@@ -53,6 +54,9 @@ struct SampleOptions {
     // The joints' heights from the features' positions below this frequency and their velocities above it
     // (motion/velocity_fusion.hpp), Hz; 0 = the positions alone (recover_from_ric).
     double height_crossover_hz = 0;
+    // A prompt asking for stairs both ways (activity "stairs") drawn as an ascent and a descent, each anchored to
+    // its own direction's captions, joined at a stance (pipeline/motion_source.hpp); off: one draw of both.
+    bool stairs_round_trips = false;
 
     // Throws Error naming the option (--frames, --steps, --guidance, --strength...) for a value out of range or not
     // finite.

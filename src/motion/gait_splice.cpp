@@ -1,9 +1,12 @@
 #include "motion/gait_splice.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
+#include <string>
 
 #include "core/error.hpp"
+#include "core/signal/gaussian_filter.hpp"
 #include "motion/foot_contacts.hpp"
 #include "motion/motion_edit.hpp"
 #include "motion/skeleton.hpp"
@@ -30,10 +33,24 @@ std::optional<int> mid_stance(const std::vector<StancePhase>& phases, int frames
     return found;
 }
 
+// The planted phases of `m`, found on its joints smoothed over time by a Gaussian of sd `smoothing_s` (0: as is).
+std::vector<StancePhase> planted_phases(const JointSequence& m, double smoothing_s) {
+    if (smoothing_s == 0) return detect_planted_phases(m);
+    TimeSeries x(m.num_frames, 3 * m.num_joints);
+    for (int f = 0; f < m.num_frames; ++f)
+        for (int j = 0; j < m.num_joints; ++j) x.block<1, 3>(f, 3 * j) = m.at(f, j).transpose();
+    const TimeSeries y = gaussian_filter1d_nearest(x, smoothing_s * m.fps);
+    JointSequence smooth = m;
+    for (int f = 0; f < m.num_frames; ++f)
+        for (int j = 0; j < m.num_joints; ++j) smooth.at(f, j) = y.block<1, 3>(f, 3 * j).transpose();
+    return detect_planted_phases(smooth);
+}
+
 }  // namespace
 
 void validate(const GaitSpliceOptions& o) {
     check_option_range(o.blend_s, 0.05, 0.4, "gait splice options", "blend_s");
+    check_option_range(o.contact_smoothing_s, 0.0, 0.1, "gait splice options", "contact_smoothing_s");
 }
 
 GaitSplice splice_at_stance(const JointSequence& first, const JointSequence& second, const GaitSpliceOptions& o) {
@@ -42,8 +59,8 @@ GaitSplice splice_at_stance(const JointSequence& first, const JointSequence& sec
         if (m->num_joints != kNumJoints || m->fps != first.fps || m->num_frames < 3)
             throw Error("splice_at_stance", "motions", "SMPL-22 joints at one frame rate");
     const int half = std::max(1, frames_of(o.blend_s / 2, first.fps));
-    const std::vector<StancePhase> first_phases = detect_planted_phases(first),
-                                   second_phases = detect_planted_phases(second);
+    const std::vector<StancePhase> first_phases = planted_phases(first, o.contact_smoothing_s),
+                                   second_phases = planted_phases(second, o.contact_smoothing_s);
     std::optional<int> a, b;
     Foot foot = Foot::left;
     for (Foot f : {Foot::left, Foot::right}) {  // the foot whose last stance in `first` comes later: less is cut
@@ -79,6 +96,18 @@ GaitSplice splice_at_stance(const JointSequence& first, const JointSequence& sec
     out.splice_frame = *a;
     restore_bone_lengths(out.motion, bone_lengths(first, 0));
     return out;
+}
+
+GaitSplice splice_to_length(const JointSequence& first, const JointSequence& second, int frames,
+                            const GaitSpliceOptions& o) {
+    GaitSplice joined = splice_at_stance(first, second, o);
+    const int n = joined.motion.num_frames;
+    if (frames < 1 || n < frames)
+        throw Error("splice_to_length", "frames", "1 to the join's " + std::to_string(n), std::to_string(frames));
+    const int begin = std::clamp(joined.splice_frame - frames / 2, 0, n - frames);
+    joined.motion = slice_frames(joined.motion, begin, begin + frames);
+    joined.splice_frame -= begin;
+    return joined;
 }
 
 }  // namespace t2imu

@@ -18,6 +18,10 @@ namespace t2imu {
 
 struct GaitSpliceOptions {
     double blend_s = 0.2;  // cross-fade centred on the splice, [0.05, 0.4] s
+    // The planted phases are found on the joints smoothed by a Gaussian of this sd, [0, 0.1] s (0: as they are): a
+    // model's joints flicker from frame to frame while a foot stands, which the plant test's speed limits read as a
+    // moving foot; the motions themselves are joined unsmoothed.
+    double contact_smoothing_s = 0;
 };
 
 // Throws Error naming the field when an option is outside its range.
@@ -32,5 +36,11 @@ struct GaitSplice {
 // and a pair with no planted phase of one foot, long enough to hold half the blend on each side of its middle,
 // at the end of `first` and the start of `second`.
 GaitSplice splice_at_stance(const JointSequence& first, const JointSequence& second, const GaitSpliceOptions& o);
+
+// splice_at_stance cut to `frames` frames: the window centred on the splice, moved inward where one side is
+// shorter than half of it (splice_frame counts in the window). Refuses (Error) what splice_at_stance refuses and a
+// join shorter than `frames`.
+GaitSplice splice_to_length(const JointSequence& first, const JointSequence& second, int frames,
+                            const GaitSpliceOptions& o);
 
 }  // namespace t2imu

@@ -10,6 +10,7 @@
 
 #include "core/csv.hpp"
 #include "core/error.hpp"
+#include "core/hash.hpp"
 #include "core/json_file.hpp"
 #include "core/npy.hpp"
 #include "core/parse.hpp"
@@ -17,6 +18,7 @@
 #include "data/hml3d_dataset.hpp"
 #include "data/measured_captions.hpp"
 #include "motion/activity_names.hpp"
+#include "motion/gait_splice.hpp"
 #include "motion/humanml3d.hpp"
 #include "motion/motion_activity.hpp"
 #include "motion/resample.hpp"
@@ -34,11 +36,62 @@ public:
         model_->caption_anchor_weight(sampling_.caption_anchor);  // refused here, before a synthesis writes anything
     }
 
+    // With stairs_round_trips, a prompt asking for stairs both ways draws an ascent and a descent of the asked length
+    // each (the model's shorter descents stand at the top of the flight: docs/results.md; the descent from its
+    // seed's splitmix), joined at a stance and cut to the length around the join (gait_splice.hpp); a pair with no
+    // stance to join at is drawn as without it.
     std::vector<JointSequence> generate(const std::vector<std::string>& prompts,
                                         const std::vector<std::string>& activities, const std::vector<uint64_t>& seeds,
                                         int frames) override {
-        return generate_from(prompts, activities, seeds, frames, {}, 1.0);
+        records_.assign(prompts.size(), nullptr);
+        std::vector<size_t> trips, whole;
+        for (size_t i = 0; i < prompts.size(); ++i) {
+            const bool trip = sampling_.stairs_round_trips &&
+                              activity_asked(activities.empty() ? "" : activities[i], prompts[i]) == "stairs";
+            (trip ? trips : whole).push_back(i);
+        }
+        std::vector<JointSequence> out(prompts.size());
+        std::vector<size_t> unjoined;
+        if (!trips.empty()) {
+            std::vector<std::string> halves_prompts, halves_activities;
+            std::vector<uint64_t> halves_seeds;
+            for (size_t i : trips) {
+                halves_prompts.insert(halves_prompts.end(), {prompts[i], prompts[i]});
+                halves_activities.insert(halves_activities.end(), {"stairs_up", "stairs_down"});
+                halves_seeds.insert(halves_seeds.end(), {seeds[i], splitmix64(seeds[i])});
+            }
+            const std::vector<JointSequence> halves =
+                generate_from(halves_prompts, halves_activities, halves_seeds, frames, {}, 1.0);
+            for (size_t k = 0; k < trips.size(); ++k) {
+                try {
+                    GaitSpliceOptions join;
+                    join.contact_smoothing_s = kRoundTripContactSmoothingS;
+                    GaitSplice trip = splice_to_length(halves[2 * k], halves[2 * k + 1], frames, join);
+                    out[trips[k]] = std::move(trip.motion);
+                    records_[trips[k]] = {{"round_trip", {{"joined", true}, {"splice_frame", trip.splice_frame}}}};
+                } catch (const Error& e) {
+                    unjoined.push_back(trips[k]);
+                    records_[trips[k]] = {{"round_trip", {{"joined", false}, {"why", e.what()}}}};
+                }
+            }
+        }
+        whole.insert(whole.end(), unjoined.begin(), unjoined.end());
+        std::vector<std::string> whole_prompts, whole_activities;
+        std::vector<uint64_t> whole_seeds;
+        for (size_t i : whole) {
+            whole_prompts.push_back(prompts[i]);
+            whole_activities.push_back(activities.empty() ? "" : activities[i]);
+            whole_seeds.push_back(seeds[i]);
+        }
+        if (!whole.empty()) {
+            std::vector<JointSequence> drawn =
+                generate_from(whole_prompts, whole_activities, whole_seeds, frames, {}, 1.0);
+            for (size_t k = 0; k < whole.size(); ++k) out[whole[k]] = std::move(drawn[k]);
+        }
+        return out;
     }
+
+    nlohmann::json draw_record(size_t i) const override { return i < records_.size() ? records_[i] : nlohmann::json(); }
 
     // From noised start motions (the hybrid), or from pure noise when `starts` is empty. The activity asked
     // (the label, else the prompt's words) chooses the captions of the model's caption anchor.
@@ -71,8 +124,9 @@ public:
             {"eta", sampling_.eta},
             {"caption_anchor", model_->caption_anchor_weight(sampling_.caption_anchor)},
             {"caption_anchor_neighbours", model_->anchor.neighbours}};
-        // Absent when off, so folders made before it resume.
+        // Absent when off, so folders made before them resume.
         if (sampling_.height_crossover_hz > 0) d["height_crossover_hz"] = sampling_.height_crossover_hz;
+        if (sampling_.stairs_round_trips) d["stairs_round_trips"] = true;
         return d;
     }
 
@@ -82,6 +136,7 @@ private:
     std::string dir_;
     SampleOptions sampling_;
     std::unique_ptr<MotionModel> model_;
+    std::vector<nlohmann::json> records_;  // per motion of the last generate(): a round trip's join
 };
 
 // Joint positions at time t * factor of the source for every output frame, linearly interpolated (20 fps).

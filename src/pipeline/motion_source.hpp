@@ -2,6 +2,12 @@
 // retrieval baseline `retrieval:DATASET` that answers a prompt with captured training clips, or the hybrid of
 // the two (a retrieved clip, partly noised, finished by the model).
 //
+// A model asked (SampleOptions::stairs_round_trips) for a prompt whose activity is stairs both ways ("up the
+// stairs and back down": SisFall's D05/D06) draws it in two halves, an ascent anchored to the stairs_up captions
+// and a descent to the stairs_down ones, joined at a stance of one foot (gait_splice.hpp): the model learned each
+// direction from clips of one (its anchor blends one direction) and never the pair. draw_record says whether the
+// halves joined and where.
+//
 // Retrieval (the row that shows what the learned models add; the paper compares with ReMoDiffuse, a
 // retrieval-augmented diffusion model) answers with clips of DATASET's train split (HumanML3D layout, t2imu data
 // build or the official release) that show the prompt's activity. The activity asked is the prompt set's label
@@ -35,6 +41,9 @@
 namespace t2imu {
 
 constexpr int kRetrievalTopK = 5;
+// Its halves' stances are found on joints smoothed over one frame at 20 fps (GaitSpliceOptions): a model's feet
+// flicker where they stand.
+constexpr double kRoundTripContactSmoothingS = 0.05;
 constexpr double kRetrievalWarp = 0.1;
 
 class MotionSource {

@@ -41,6 +41,10 @@ void visit_synth_keys(SynthOptions& o, Visit&& visit) {
                            "a model's joint heights from its features' positions below this frequency and their "
                            "velocities above it, Hz (0 = the positions alone)",
                            s.height_crossover_hz});
+    visit(SynthKey<bool>{"stairs_round_trips", "--stairs-round-trips",
+                         "a model draws a prompt asking for stairs up and down as an ascent and a descent joined at "
+                         "a stance",
+                         s.stairs_round_trips});
     visit(SynthKey<double>{"seconds", "--seconds", "motion length, s (at most 9.8)", o.seconds});
     visit(SynthKey<uint64_t>{"seed", "--seed", "seed of job 0; job k draws from seed + k", s.seed});
     visit(SynthKey<int>{"batch", "--batch",
