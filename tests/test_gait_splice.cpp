@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "core/error.hpp"
 #include "motion/foot_contacts.hpp"
@@ -32,6 +33,14 @@ double largest_step(const JointSequence& m, int begin, int end) {
     for (int f = std::max(1, begin); f < end; ++f)
         for (int j = 0; j < m.num_joints; ++j) most = std::max(most, (m.at(f, j) - m.at(f - 1, j)).norm());
     return most;
+}
+
+// The fixture walk's 8 s turned into a flight up and a flight down, 0.17 m rises.
+std::pair<JointSequence, JointSequence> flights_up_and_down() {
+    const JointSequence walk = procedural_walk(8.0);
+    StairOptions up = default_stair_options(true), down = default_stair_options(false);
+    up.rise_m = down.rise_m = 0.17;
+    return {derive_stairs(walk, up).motion, derive_stairs(walk, down).motion};
 }
 
 TEST(GaitSplice, AWalkJoinedToItselfTurnedAndMovedWalksOnWithoutAJump) {
@@ -65,11 +74,8 @@ TEST(GaitSplice, ThePlantedFootStaysWhereItStandsThroughTheBlend) {
 }
 
 TEST(GaitSplice, UpAFlightAndDownTheNextRisesThenFallsByTheFlights) {
-    const JointSequence walk = procedural_walk(8.0);
-    StairOptions up = default_stair_options(true), down = default_stair_options(false);
-    up.rise_m = down.rise_m = 0.17;
-    const StairMotion a = derive_stairs(walk, up), b = derive_stairs(walk, down);
-    const GaitSplice s = splice_at_stance(a.motion, b.motion, GaitSpliceOptions{});
+    const auto [a, b] = flights_up_and_down();
+    const GaitSplice s = splice_at_stance(a, b, GaitSpliceOptions{});
     const double start = s.motion.at(0, pelvis).y(), end = s.motion.at(s.motion.num_frames - 1, pelvis).y();
     double top = -1e9;
     for (int f = 0; f < s.motion.num_frames; ++f) top = std::max(top, s.motion.at(f, pelvis).y());
@@ -77,27 +83,23 @@ TEST(GaitSplice, UpAFlightAndDownTheNextRisesThenFallsByTheFlights) {
     // 2 m) and then falls what the down flight falls less its steps before the splice: the first stance of the
     // splicing foot that the flight holds whole, at most three rises in.
     const auto height = [](const JointSequence& m, int f) { return m.at(f, pelvis).y(); };
-    const double climb = height(a.motion, a.motion.num_frames - 1) - height(a.motion, 0);
+    const double climb = height(a, a.num_frames - 1) - height(a, 0);
     EXPECT_GT(climb, 2.0);
     EXPECT_NEAR(top - start, climb, 0.17);
-    const double fall = height(b.motion, 0) - height(b.motion, b.motion.num_frames - 1);
+    const double fall = height(b, 0) - height(b, b.num_frames - 1);
     EXPECT_GT(top - end, fall - 3 * 0.17);
     EXPECT_LT(top - end, fall + 0.17);
-    EXPECT_LT(
-        largest_step(s.motion, 0, s.motion.num_frames),
-        1.1 * std::max(largest_step(a.motion, 0, a.motion.num_frames), largest_step(b.motion, 0, b.motion.num_frames)));
+    EXPECT_LT(largest_step(s.motion, 0, s.motion.num_frames),
+              1.1 * std::max(largest_step(a, 0, a.num_frames), largest_step(b, 0, b.num_frames)));
 }
 
 TEST(GaitSplice, ARoundTripCutToLengthKeepsTheJoinAtItsMiddle) {
-    const JointSequence walk = procedural_walk(8.0);
-    StairOptions up = default_stair_options(true), down = default_stair_options(false);
-    up.rise_m = down.rise_m = 0.17;
-    const StairMotion a = derive_stairs(walk, up), b = derive_stairs(walk, down);
-    const GaitSplice whole = splice_at_stance(a.motion, b.motion, GaitSpliceOptions{});
+    const auto [a, b] = flights_up_and_down();
+    const GaitSplice whole = splice_at_stance(a, b, GaitSpliceOptions{});
     const int frames = 120;  // 6 s at 20 fps, well inside the join's length
     ASSERT_GT(whole.splice_frame - frames / 2, 0);
     ASSERT_GT(whole.motion.num_frames - whole.splice_frame, frames / 2);
-    const GaitSplice cut = splice_to_length(a.motion, b.motion, frames, GaitSpliceOptions{});
+    const GaitSplice cut = splice_to_length(a, b, frames, GaitSpliceOptions{});
     ASSERT_EQ(cut.motion.num_frames, frames);
     EXPECT_EQ(cut.splice_frame, frames / 2);
     // The window is the join's frames around the splice, untouched.
@@ -106,11 +108,11 @@ TEST(GaitSplice, ARoundTripCutToLengthKeepsTheJoinAtItsMiddle) {
         EXPECT_LT((cut.motion.at(f, pelvis) - whole.motion.at(begin + f, pelvis)).norm(), 1e-12) << f;
     // Asked for more than the join holds, it keeps as much of the shorter side as there is.
     const int longer = whole.motion.num_frames - 2;
-    const GaitSplice most = splice_to_length(a.motion, b.motion, longer, GaitSpliceOptions{});
+    const GaitSplice most = splice_to_length(a, b, longer, GaitSpliceOptions{});
     EXPECT_EQ(most.motion.num_frames, longer);
     EXPECT_LT((most.motion.at(most.splice_frame, pelvis) - whole.motion.at(whole.splice_frame, pelvis)).norm(), 1e-12);
     try {
-        splice_to_length(a.motion, b.motion, whole.motion.num_frames + 1, GaitSpliceOptions{});
+        splice_to_length(a, b, whole.motion.num_frames + 1, GaitSpliceOptions{});
         FAIL() << "a window longer than the join was accepted";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("frames"), std::string::npos) << e.what();
@@ -121,10 +123,7 @@ TEST(GaitSplice, ARoundTripCutToLengthKeepsTheJoinAtItsMiddle) {
 // every planted foot at up to 0.57 m/s vertically: no stance to join at, unless the stances are looked for on the
 // smoothed joints (a Gaussian of one frame keeps 0.29 of a 5 Hz sine).
 TEST(GaitSplice, StancesUnderAFrameToFrameFlickerAreFoundOnTheSmoothedJoints) {
-    const JointSequence walk = procedural_walk(8.0);
-    StairOptions up = default_stair_options(true), down = default_stair_options(false);
-    up.rise_m = down.rise_m = 0.17;
-    JointSequence a = derive_stairs(walk, up).motion, b = derive_stairs(walk, down).motion;
+    auto [a, b] = flights_up_and_down();
     for (JointSequence* m : {&a, &b})
         for (int f = 0; f < m->num_frames; ++f)
             for (int j = 0; j < m->num_joints; ++j) m->at(f, j).y() += (f / 2) % 2 ? 0.02 : -0.02;

@@ -194,14 +194,20 @@ TEST(MotionSource, RetrievalGivesTheSameSpanAtTheCaptureRate) {
     refused_naming("c1.npy");
 }
 
+// A tiny model folder trained 10 steps on `data` (in a scratch folder `name`): its motions are noise-like, its
+// sampling path the real one.
+std::string barely_trained_model(const std::string& name, const std::string& data) {
+    const std::string model = test::scratch_dir(name) + "/model";
+    train_mdm(read_train_config(test::write_tiny_train_config(test::scratch_dir(name), data, model)), false, "", 10);
+    return model;
+}
+
 // The hybrid: retrieval's clip for the prompt (tags as above), noised to the strength and finished by a (tiny,
 // barely trained) model: motions of the asked length, seeded, recorded as hybrid with retrieval's draw record.
 TEST(MotionSource, HybridFinishesTheRetrievedClipWithTheModel) {
     torch::set_num_threads(1);
     const std::string data = misleading_dataset("hybrid");
-    const std::string model = test::scratch_dir("hybrid_model") + "/model";
-    train_mdm(read_train_config(test::write_tiny_train_config(test::scratch_dir("hybrid_model"), data, model)), false,
-              "", 10);
+    const std::string model = barely_trained_model("hybrid_model", data);
     SampleOptions sampling;
     sampling.sampler = Sampler::dpmpp;
     sampling.steps = 4;
@@ -231,9 +237,7 @@ TEST(MotionSource, HybridFinishesTheRetrievedClipWithTheModel) {
 TEST(MotionSource, AStairsRoundTripJoinsItsHalvesOrIsDrawnWhole) {
     torch::set_num_threads(1);
     const std::string data = misleading_dataset("round_trip");
-    const std::string model = test::scratch_dir("round_trip_model") + "/model";
-    train_mdm(read_train_config(test::write_tiny_train_config(test::scratch_dir("round_trip_model"), data, model)),
-              false, "", 10);
+    const std::string model = barely_trained_model("round_trip_model", data);
     SampleOptions sampling;
     sampling.sampler = Sampler::dpmpp;
     sampling.steps = 4;
