@@ -202,15 +202,29 @@ std::string barely_trained_model(const std::string& name, const std::string& dat
     return model;
 }
 
+// DPM-Solver++ in 4 steps: enough to run the sampling path.
+SampleOptions four_step_sampling() {
+    SampleOptions sampling;
+    sampling.sampler = Sampler::dpmpp;
+    sampling.steps = 4;
+    return sampling;
+}
+
+// The largest coordinate difference between two motions of the same size, m.
+double largest_difference(const JointSequence& x, const JointSequence& y) {
+    double most = 0;
+    for (size_t k = 0; k < x.positions.size(); ++k)
+        most = std::max(most, (x.positions[k] - y.positions[k]).cwiseAbs().maxCoeff());
+    return most;
+}
+
 // The hybrid: retrieval's clip for the prompt (tags as above), noised to the strength and finished by a (tiny,
 // barely trained) model: motions of the asked length, seeded, recorded as hybrid with retrieval's draw record.
 TEST(MotionSource, HybridFinishesTheRetrievedClipWithTheModel) {
     torch::set_num_threads(1);
     const std::string data = misleading_dataset("hybrid");
     const std::string model = barely_trained_model("hybrid_model", data);
-    SampleOptions sampling;
-    sampling.sampler = Sampler::dpmpp;
-    sampling.steps = 4;
+    const SampleOptions sampling = four_step_sampling();
     auto source = open_motion_source(parse_motion_source("hybrid:" + model + "," + data + ",0.3"), sampling, "cpu",
                                      data + "/vocab.safetensors");
     const std::vector<JointSequence> a =
@@ -225,10 +239,7 @@ TEST(MotionSource, HybridFinishesTheRetrievedClipWithTheModel) {
     EXPECT_EQ(d["retrieval"]["kind"], "retrieval");
     EXPECT_EQ(d["sampler"], "dpmpp");
     const std::vector<JointSequence> b = source->generate({"a person jogs"}, {"running"}, {5}, 40);
-    double diff = 0;  // the same seed, the same motion (up to the batch's float rounding)
-    for (size_t k = 0; k < a[0].positions.size(); ++k)
-        diff = std::max(diff, (a[0].positions[k] - b[0].positions[k]).cwiseAbs().maxCoeff());
-    EXPECT_LT(diff, 1e-4);
+    EXPECT_LT(largest_difference(a[0], b[0]), 1e-4);  // the same seed, the same motion (up to float rounding)
 }
 
 // Stairs both ways with stairs_round_trips: the prompt is drawn as an ascent and a descent joined at a stance, at the
@@ -238,9 +249,7 @@ TEST(MotionSource, AStairsRoundTripJoinsItsHalvesOrIsDrawnWhole) {
     torch::set_num_threads(1);
     const std::string data = misleading_dataset("round_trip");
     const std::string model = barely_trained_model("round_trip_model", data);
-    SampleOptions sampling;
-    sampling.sampler = Sampler::dpmpp;
-    sampling.steps = 4;
+    SampleOptions sampling = four_step_sampling();
     const std::vector<std::string> prompts = {"a person walks up the stairs and back down", "a person walks"};
     const std::vector<std::string> activities = {"", "walking"};
     auto plain = open_motion_source(parse_motion_source(model), sampling, "cpu");
@@ -252,12 +261,6 @@ TEST(MotionSource, AStairsRoundTripJoinsItsHalvesOrIsDrawnWhole) {
     const std::vector<JointSequence> after = trips->generate(prompts, activities, {5, 6}, 40);
     EXPECT_EQ(trips->describe()["stairs_round_trips"], true);
     ASSERT_EQ(after.size(), 2u);
-    const auto largest_difference = [](const JointSequence& x, const JointSequence& y) {
-        double most = 0;
-        for (size_t k = 0; k < x.positions.size(); ++k)
-            most = std::max(most, (x.positions[k] - y.positions[k]).cwiseAbs().maxCoeff());
-        return most;
-    };
     EXPECT_TRUE(trips->draw_record(1).is_null());
     EXPECT_LT(largest_difference(after[1], before[1]), 1e-4);  // up to the batch's float rounding
     const nlohmann::json trip = trips->draw_record(0)["round_trip"];
