@@ -44,10 +44,10 @@ public:
                                         const std::vector<std::string>& activities, const std::vector<uint64_t>& seeds,
                                         int frames) override {
         records_.assign(prompts.size(), nullptr);
+        if (!sampling_.stairs_round_trips) return generate_from(prompts, activities, seeds, frames, {}, 1.0);
         std::vector<size_t> trips, whole;
         for (size_t i = 0; i < prompts.size(); ++i) {
-            const bool trip = sampling_.stairs_round_trips &&
-                              activity_asked(activities.empty() ? "" : activities[i], prompts[i]) == "stairs";
+            const bool trip = activity_asked(activities.empty() ? "" : activities[i], prompts[i]) == "stairs";
             (trip ? trips : whole).push_back(i);
         }
         std::vector<JointSequence> out(prompts.size());
@@ -62,10 +62,10 @@ public:
             }
             const std::vector<JointSequence> halves =
                 generate_from(halves_prompts, halves_activities, halves_seeds, frames, {}, 1.0);
+            GaitSpliceOptions join;
+            join.contact_smoothing_s = kRoundTripContactSmoothingS;
             for (size_t k = 0; k < trips.size(); ++k) {
                 try {
-                    GaitSpliceOptions join;
-                    join.contact_smoothing_s = kRoundTripContactSmoothingS;
                     GaitSplice trip = splice_to_length(halves[2 * k], halves[2 * k + 1], frames, join);
                     out[trips[k]] = std::move(trip.motion);
                     records_[trips[k]] = {{"round_trip", {{"joined", true}, {"splice_frame", trip.splice_frame}}}};
