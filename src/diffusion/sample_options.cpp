@@ -32,13 +32,15 @@ void check_guidance_scale(double scale, const std::string& option) {
 
 int frames_for_seconds(double seconds, const std::string& option) {
     if (!(seconds * kSampleFps >= 3.5 && seconds * kSampleFps < kMaxSampleFrames + 0.5))
-        throw Error(option, "seconds", "0.2 to 9.8 s (4 to 196 frames at 20 fps)", std::to_string(seconds));
+        throw Error(option, "seconds", "0.2 to 9.8 s (4 to " + std::to_string(kMaxSampleFrames) + " frames at 20 fps)",
+                    std::to_string(seconds));
     return static_cast<int>(std::lround(seconds * kSampleFps));
 }
 
 void SampleOptions::validate() const {
     if (frames < 4 || frames > kMaxSampleFrames)
-        throw Error("sampling", "--frames", "4 to 196 (20 fps)", std::to_string(frames));
+        throw Error("sampling", "--frames", "4 to " + std::to_string(kMaxSampleFrames) + " (20 fps)",
+                    std::to_string(frames));
     // ddpm takes every step of the model's schedule and ignores `steps`.
     if (sampler != Sampler::ddpm && (steps < 1 || steps > 10000))
         throw Error("sampling", "--steps", "1 to 10000 denoiser evaluations", std::to_string(steps));

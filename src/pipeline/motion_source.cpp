@@ -45,49 +45,36 @@ public:
                                         int frames) override {
         records_.assign(prompts.size(), nullptr);
         if (!sampling_.stairs_round_trips) return generate_from(prompts, activities, seeds, frames, {}, 1.0);
+        std::vector<Draw> halves;
         std::vector<size_t> trips, whole;
         for (size_t i = 0; i < prompts.size(); ++i) {
-            const bool trip = activity_asked(activities.empty() ? "" : activities[i], prompts[i]) == "stairs";
-            (trip ? trips : whole).push_back(i);
+            const std::string activity = activities.empty() ? "" : activities[i];
+            if (activity_asked(activity, prompts[i]) != "stairs") {
+                whole.push_back(i);
+                continue;
+            }
+            trips.push_back(i);
+            halves.push_back({prompts[i], "stairs_up", seeds[i]});
+            halves.push_back({prompts[i], "stairs_down", splitmix64(seeds[i])});
         }
         std::vector<JointSequence> out(prompts.size());
-        std::vector<size_t> unjoined;
-        if (!trips.empty()) {
-            std::vector<std::string> halves_prompts, halves_activities;
-            std::vector<uint64_t> halves_seeds;
-            for (size_t i : trips) {
-                halves_prompts.insert(halves_prompts.end(), {prompts[i], prompts[i]});
-                halves_activities.insert(halves_activities.end(), {"stairs_up", "stairs_down"});
-                halves_seeds.insert(halves_seeds.end(), {seeds[i], splitmix64(seeds[i])});
-            }
-            const std::vector<JointSequence> halves =
-                generate_from(halves_prompts, halves_activities, halves_seeds, frames, {}, 1.0);
-            GaitSpliceOptions join;
-            join.contact_smoothing_s = kRoundTripContactSmoothingS;
-            for (size_t k = 0; k < trips.size(); ++k) {
-                try {
-                    GaitSplice trip = splice_to_length(halves[2 * k], halves[2 * k + 1], frames, join);
-                    out[trips[k]] = std::move(trip.motion);
-                    records_[trips[k]] = {{"round_trip", {{"joined", true}, {"splice_frame", trip.splice_frame}}}};
-                } catch (const Error& e) {
-                    unjoined.push_back(trips[k]);
-                    records_[trips[k]] = {{"round_trip", {{"joined", false}, {"why", e.what()}}}};
-                }
+        const std::vector<JointSequence> drawn_halves = draw(halves, frames);
+        GaitSpliceOptions join;
+        join.contact_smoothing_s = kRoundTripContactSmoothingS;
+        for (size_t k = 0; k < trips.size(); ++k) {
+            try {
+                GaitSplice trip = splice_to_length(drawn_halves[2 * k], drawn_halves[2 * k + 1], frames, join);
+                out[trips[k]] = std::move(trip.motion);
+                records_[trips[k]] = {{"round_trip", {{"joined", true}, {"splice_frame", trip.splice_frame}}}};
+            } catch (const Error& e) {
+                whole.push_back(trips[k]);
+                records_[trips[k]] = {{"round_trip", {{"joined", false}, {"why", e.what()}}}};
             }
         }
-        whole.insert(whole.end(), unjoined.begin(), unjoined.end());
-        std::vector<std::string> whole_prompts, whole_activities;
-        std::vector<uint64_t> whole_seeds;
-        for (size_t i : whole) {
-            whole_prompts.push_back(prompts[i]);
-            whole_activities.push_back(activities.empty() ? "" : activities[i]);
-            whole_seeds.push_back(seeds[i]);
-        }
-        if (!whole.empty()) {
-            std::vector<JointSequence> drawn =
-                generate_from(whole_prompts, whole_activities, whole_seeds, frames, {}, 1.0);
-            for (size_t k = 0; k < whole.size(); ++k) out[whole[k]] = std::move(drawn[k]);
-        }
+        std::vector<Draw> whole_draws;
+        for (size_t i : whole) whole_draws.push_back({prompts[i], activities.empty() ? "" : activities[i], seeds[i]});
+        std::vector<JointSequence> drawn = draw(whole_draws, frames);
+        for (size_t k = 0; k < whole.size(); ++k) out[whole[k]] = std::move(drawn[k]);
         return out;
     }
 
@@ -133,6 +120,23 @@ public:
     const CaptionIndex* caption_index() const override { return model_->anchor.index.get(); }
 
 private:
+    struct Draw {  // one motion asked of generate_from
+        std::string prompt, activity;
+        uint64_t seed;
+    };
+
+    std::vector<JointSequence> draw(const std::vector<Draw>& draws, int frames) {
+        if (draws.empty()) return {};
+        std::vector<std::string> prompts, activities;
+        std::vector<uint64_t> seeds;
+        for (const Draw& d : draws) {
+            prompts.push_back(d.prompt);
+            activities.push_back(d.activity);
+            seeds.push_back(d.seed);
+        }
+        return generate_from(prompts, activities, seeds, frames, {}, 1.0);
+    }
+
     std::string dir_;
     SampleOptions sampling_;
     std::unique_ptr<MotionModel> model_;
