@@ -3,6 +3,7 @@
 // source.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <string>
 
 #include "core/error.hpp"
@@ -53,6 +54,21 @@ TEST(TomlSection, WrongTypesAreRefusedNamingTheField) {
     m = test::error_message([&] { synth.read("rate", rate); });
     EXPECT_TRUE(test::contains(m, "synth.rate") && test::contains(m, "a number")) << m;
     EXPECT_EQ(steps, 0);  // nothing assigned on failure
+}
+
+TEST(TomlSection, AnUnsignedFieldTakesOnlyAWholeNumberFromZero) {
+    const toml::table doc = parse_toml_text("[har]\nseed = 12\nneg = -3\n", "cfg.toml");
+    TomlSection top(doc, "cfg.toml", "");
+    TomlSection har = top.table("har");
+    uint64_t seed = 0, neg = 7, missing = 5;
+    har.read("seed", seed);
+    har.read("missing", missing);
+    EXPECT_EQ(seed, 12u);
+    EXPECT_EQ(missing, 5u);  // absent: unchanged
+    const std::string m = test::error_message([&] { har.read("neg", neg); });
+    EXPECT_EQ(m, "cfg.toml: har.neg: expected a whole number from 0 (got -3)");
+    EXPECT_EQ(neg, 7u);  // nothing assigned on failure
+    EXPECT_NO_THROW(har.refuse_unknown_keys());
 }
 
 TEST(TomlSection, RequiredKeysAndArraysOfStrings) {

@@ -2,6 +2,7 @@
 // is refused with its name instead of silently leaving a default in place.
 #pragma once
 #include <toml++/toml.h>
+#include <cstdint>
 #include <optional>
 #include <set>
 #include <string>
@@ -24,9 +25,16 @@ public:
 
     // Leaves `value` unchanged when the key is absent; throws when it holds another type. An integer field takes
     // only a TOML integer: toml++ would convert a float such as 4.9e47 to an integer out of range (undefined
-    // behaviour, found by fuzz/fuzz_sensor_toml).
+    // behaviour, found by fuzz/fuzz_sensor_toml). An unsigned field (a seed) takes only one from 0.
     template <class T>
     void read(const char* key, T& value) {
+        if constexpr (std::is_unsigned_v<T> && !std::is_same_v<T, bool>) {
+            int64_t v = static_cast<int64_t>(value);
+            read(key, v);
+            if (v < 0) throw Error(path_, field(key), "a whole number from 0", std::to_string(v));
+            value = static_cast<T>(v);
+            return;
+        }
         read_keys_.insert(key);
         const toml::node* n = table_.get(key);
         if (!n) return;

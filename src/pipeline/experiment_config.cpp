@@ -11,14 +11,6 @@ namespace t2imu {
 
 namespace {
 
-// `field`: the key's dotted name, for the message (which names the file, as every config error does).
-uint64_t read_seed(TomlSection& s, const char* key, uint64_t value, const std::string& path, const std::string& field) {
-    int64_t v = static_cast<int64_t>(value);
-    s.read(key, v);
-    if (v < 0) throw Error(path, field, "a seed >= 0", std::to_string(v));
-    return static_cast<uint64_t>(v);
-}
-
 // Reads one shared setting (pipeline/synth_keys.hpp) of an experiment's [synth]; plan_synth checks the values.
 struct ReadSynthKey {
     TomlSection& section;
@@ -26,9 +18,6 @@ struct ReadSynthKey {
     template <class T>
     void operator()(SynthKey<T> k) const {
         section.read(k.key, k.field);
-    }
-    void operator()(SynthKey<uint64_t> k) const {
-        k.field = read_seed(section, k.key, k.field, path, std::string("synth.") + k.key);
     }
     void operator()(SynthKey<std::optional<double>> k) const {
         if (!section.has(k.key)) return;  // absent: unset
@@ -48,9 +37,9 @@ void read_synth(TomlSection s, SynthOptions& o, const std::string& path) {
     s.refuse_unknown_keys();
 }
 
-void read_har(TomlSection s, HarOptions& h, WindowOptions& w, const std::string& path) {
+void read_har(TomlSection s, HarOptions& h, WindowOptions& w) {
     s.read("repeats", h.repeats);
-    h.seed = read_seed(s, "seed", h.seed, path, "har.seed");
+    s.read("seed", h.seed);
     s.read("max_epochs", h.max_epochs);
     s.read("patience", h.patience);
     s.read("batch", h.batch);
@@ -62,13 +51,13 @@ void read_har(TomlSection s, HarOptions& h, WindowOptions& w, const std::string&
     s.refuse_unknown_keys();
 }
 
-void read_lacc(TomlSection s, ExperimentLacc& l, const std::string& path) {
+void read_lacc(TomlSection s, ExperimentLacc& l) {
     s.read("before", l.before);
     s.read("after", l.after);
     s.read("dataset", l.dataset);
     s.read("split", l.split);
     s.read("vocab", l.vocab);
-    l.seed = read_seed(s, "seed", l.seed, path, "lacc.seed");
+    s.read("seed", l.seed);
     s.read("tau", l.tau);
     s.refuse_unknown_keys();
 }
@@ -116,7 +105,7 @@ ExperimentConfig read_experiment_config(const std::string& path) {
         s.refuse_unknown_keys();
         c.real_sets.push_back(r);
     }
-    read_har(top.table("har"), c.har, c.windows, path);
+    read_har(top.table("har"), c.har, c.windows);
     // Checked now, not when the first training starts after the syntheses (the messages name the options).
     try {
         c.har.validate();
@@ -127,9 +116,9 @@ ExperimentConfig read_experiment_config(const std::string& path) {
     TomlSection features = top.table("features");
     features.read("tsne_points", c.tsne_points);
     features.read("perplexity", c.tsne.perplexity);
-    c.feature_seed = read_seed(features, "seed", c.feature_seed, path, "features.seed");
+    features.read("seed", c.feature_seed);
     features.refuse_unknown_keys();
-    read_lacc(top.table("lacc"), c.lacc, path);
+    read_lacc(top.table("lacc"), c.lacc);
     c.low_data = read_experiment_low_data(top.table("low_data"), path);
     top.refuse_unknown_keys();
     check_names(c, path);
