@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/number_text.hpp"
 
 namespace t2imu {
 
@@ -32,7 +33,9 @@ void check_guidance_scale(double scale, const std::string& option) {
 
 int frames_for_seconds(double seconds, const std::string& option) {
     if (!(seconds * kSampleFps >= 3.5 && seconds * kSampleFps < kMaxSampleFrames + 0.5))
-        throw Error(option, "seconds", "0.2 to 9.8 s (4 to " + std::to_string(kMaxSampleFrames) + " frames at 20 fps)",
+        throw Error(option, "seconds",
+                    "0.2 to " + fixed_text(kMaxSampleFrames / kSampleFps, 1) + " s (4 to " +
+                        std::to_string(kMaxSampleFrames) + " frames at 20 fps)",
                     std::to_string(seconds));
     return static_cast<int>(std::lround(seconds * kSampleFps));
 }
