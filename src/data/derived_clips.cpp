@@ -126,6 +126,14 @@ JointSequence at_dataset_rate(const JointSequence& m) {
     return m.fps == smpl22::kFps ? m : resample_joints(m, smpl22::kFps);
 }
 
+// Fills the clip's 20 fps joints; false (counted as failed) when the filter refuses them there.
+bool passes_at_dataset_rate(DerivedClip& c, DeriveReport& report) {
+    c.joints_20fps = at_dataset_rate(c.joints);
+    if (passes(c.joints_20fps)) return true;
+    ++report.failed_quality;
+    return false;
+}
+
 void derive_stairs_clip(const JointSequence& walk, const std::string& file, DeriveReport& report,
                         std::vector<DerivedClip>& out) {
     const uint64_t seed = file_seed(file);
@@ -143,24 +151,18 @@ void derive_stairs_clip(const JointSequence& walk, const std::string& file, Deri
         ++report.refused;  // a short, turning, backward or sideways walk: no staircase fits it
         return;
     }
-    const int steps = m.stairs.steps;
-    JointSequence at_20 = at_dataset_rate(m.motion);
-    if (!passes(at_20)) {
-        ++report.failed_quality;
-        return;
-    }
     DerivedClip c;
+    c.joints = std::move(m.motion);
+    if (!passes_at_dataset_rate(c, report)) return;
     c.method = ascend ? "stairs_up" : "stairs_down";
     c.activity = c.method;
-    c.joints = std::move(m.motion);
-    c.joints_20fps = std::move(at_20);
     c.parameters = {{"rise_m", o.rise_m},
                     {"going_m", o.going_m},
                     {"ascend", o.ascend},
                     {"trunk_lean_rad", o.trunk_lean_rad},
                     {"cadence_factor", o.cadence_factor},
                     {"swing_clearance_m", o.swing_clearance_m},
-                    {"steps", steps}};
+                    {"steps", m.stairs.steps}};
     c.seed = seed;
     c.captions = pick_captions(captions_for(c.method), rng);
     out.push_back(std::move(c));
@@ -193,11 +195,7 @@ void derive_stairs_round_trip(const JointSequence& walk, const std::string& file
     DerivedClip c;
     c.joints = slice_frames(trip.motion, begin, std::min(trip.motion.num_frames, begin + keep));
     place_on_floor(c.joints);
-    c.joints_20fps = at_dataset_rate(c.joints);
-    if (!passes(c.joints_20fps)) {
-        ++report.failed_quality;
-        return;
-    }
+    if (!passes_at_dataset_rate(c, report)) return;
     c.method = "stairs_round_trip";
     // "stairs", either direction (activity_names.hpp), not both directions' tags: filed under stairs_down too, its
     // captions were 4 of the 12 a "down the stairs" prompt's caption anchor chose from, and such prompts drew climbs.
@@ -267,11 +265,7 @@ void derive_sit_clips(const JointSequence& standing, const std::string& file, De
             ++report.refused;
             continue;
         }
-        c.joints_20fps = at_dataset_rate(c.joints);
-        if (!passes(c.joints_20fps)) {
-            ++report.failed_quality;
-            continue;
-        }
+        if (!passes_at_dataset_rate(c, report)) continue;
         c.method = "sit_down_stand_up";
         c.activity = "sitting";
         c.parameters = {{"source_start_frame", begin},
@@ -306,11 +300,7 @@ void derive_lying_clips(const JointSequence& lie_down, const std::string& file, 
             ++report.refused;  // the clip does not end lying
             return;
         }
-        c.joints_20fps = at_dataset_rate(c.joints);
-        if (!passes(c.joints_20fps)) {
-            ++report.failed_quality;
-            continue;
-        }
+        if (!passes_at_dataset_rate(c, report)) continue;
         c.method = "lying_still";
         c.activity = "lying";
         c.parameters = {{"seconds", o.seconds}, {"breaths_per_min", o.breaths_per_min}, {"chest_rad", o.chest_rad}};
@@ -343,11 +333,7 @@ void derive_lie_down_rest_clip(const JointSequence& lie_down, const std::string&
         ++report.refused;  // the clip does not end lying
         return;
     }
-    c.joints_20fps = at_dataset_rate(c.joints);
-    if (!passes(c.joints_20fps)) {
-        ++report.failed_quality;
-        return;
-    }
+    if (!passes_at_dataset_rate(c, report)) return;
     c.method = "lie_down_rest";
     c.activity = "lying";
     c.parameters = {{"rest_seconds", o.seconds}, {"breaths_per_min", o.breaths_per_min}, {"chest_rad", o.chest_rad}};
@@ -378,11 +364,7 @@ void derive_lying_turn_clips(const JointSequence& lie_down, const std::string& f
             ++report.refused;  // the clip does not end lying
             return;
         }
-        c.joints_20fps = at_dataset_rate(c.joints);
-        if (!passes(c.joints_20fps)) {
-            ++report.failed_quality;
-            continue;
-        }
+        if (!passes_at_dataset_rate(c, report)) continue;
         c.method = "lying_turn";
         c.activity = "lying";
         c.parameters = {{"breaths_per_min", still.breaths_per_min},
@@ -412,11 +394,7 @@ void derive_jump_clip(const JointSequence& jump, const std::string& file, Derive
         ++report.refused;  // too short, or never on both feet
         return;
     }
-    c.joints_20fps = at_dataset_rate(c.joints);
-    if (!passes(c.joints_20fps)) {
-        ++report.failed_quality;
-        return;
-    }
+    if (!passes_at_dataset_rate(c, report)) return;
     c.method = "jump_rescaled";
     c.activity = "jumping";
     c.parameters = {{"time_scale", o.time_scale}, {"height_scale", o.time_scale * o.time_scale}};
@@ -448,11 +426,7 @@ void derive_jump_series(const JointSequence& jump, const std::string& file, Deri
         ++report.refused;  // too short, or never on both feet
         return;
     }
-    c.joints_20fps = at_dataset_rate(c.joints);
-    if (!passes(c.joints_20fps)) {
-        ++report.failed_quality;
-        return;
-    }
+    if (!passes_at_dataset_rate(c, report)) return;
     c.method = "jump_series";
     c.activity = "jumping";
     c.parameters = {{"jumps", count}, {"time_scales", scales}, {"blend_s", JumpSeriesOptions{}.blend_s}};
@@ -497,17 +471,11 @@ void derive_turning_walk(const JointSequence& walk, const std::string& file, Der
         return;
     }
     o.start_s = uniform(rng, margin, length - margin - o.duration_s);
-    JointSequence turned = turn_walk(walk, o);
-    JointSequence at_20 = at_dataset_rate(turned);
-    if (!passes(at_20)) {
-        ++report.failed_quality;
-        return;
-    }
     DerivedClip c;
+    c.joints = turn_walk(walk, o);
+    if (!passes_at_dataset_rate(c, report)) return;
     c.method = "walk_turn";
     c.activity = "walking";
-    c.joints = std::move(turned);
-    c.joints_20fps = std::move(at_20);
     c.parameters = {{"turn_rad", o.turn_rad}, {"start_s", o.start_s}, {"duration_s", o.duration_s}};
     c.seed = seed;
     c.captions = pick_captions(walk_turn_captions(o.turn_rad * 180 / M_PI), rng);
