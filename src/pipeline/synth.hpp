@@ -64,7 +64,9 @@ struct SynthOptions {
     // nothing (docs/realism.md on the capture rate at the sensors).
     bool capture_rate = true;
     bool filter = true;
-    int max_retries = 2;
+    // Learned descents pass the support ground in a minority of draws (their feet do not always plant), so a prompt
+    // gets several; docs/results.md ("The main job's retries") measured the count.
+    int max_retries = 9;
     MotionQualityThresholds thresholds = default_quality_thresholds();
     // Activity check (motion/motion_activity.hpp): with a reference CSV, a motion whose agreement with its
     // prompt's activity is below min_activity_agreement fails like a quality score ("activity"). 0.55 is the
