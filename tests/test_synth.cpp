@@ -355,6 +355,7 @@ TEST(Synth, ThePlanHoldsEverySpellingParsedAndRefusesBadOnesBeforeAnyFolder) {
         {[](SynthOptions& x) { x.prompts = "no-such-prompts.tsv"; }, "no-such-prompts.tsv"},
         {[](SynthOptions& x) { x.seconds = 0; }, "--seconds"},
         {[](SynthOptions& x) { x.rate_hz = -1; }, "--rate"},
+        {[](SynthOptions& x) { x.max_retries = -1; }, "--retries"},
     };
     for (const auto& [spoil, named] : bad) {
         SynthOptions x = tiny_options(dir + "/never");
