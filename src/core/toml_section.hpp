@@ -29,9 +29,9 @@ public:
     template <class T>
     void read(const char* key, T& value) {
         if constexpr (std::is_unsigned_v<T> && !std::is_same_v<T, bool>) {
-            int64_t v = 0;  // not the default: one above INT64_MAX would read as negative
+            if (!has(key)) return;  // the default is never read through int64 (one above INT64_MAX would be negative)
+            int64_t v = 0;
             read(key, v);
-            if (!has(key)) return;
             if (v < 0) throw Error(path_, field(key), "a whole number from 0", std::to_string(v));
             value = static_cast<T>(v);
             return;
